@@ -1,0 +1,29 @@
+#pragma once
+// Errors for bad input. Contract violations (our own bugs) are asserts; anything a user
+// can get wrong (files, configs, settings, plugins) throws InputError with one sentence
+// naming the file, the object and the reason. The CLIs catch it and print it on one line.
+#include <stdexcept>
+#include <string>
+
+namespace engine {
+
+class InputError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+// "file: object: reason" — the one format every bad-input message follows.
+inline std::string describeError(const std::string& file, const std::string& object,
+                                 const std::string& reason) {
+    std::string message = file;
+    if (!object.empty()) message += (message.empty() ? "" : ": ") + object;
+    message += (message.empty() ? "" : ": ") + reason;
+    return message;
+}
+
+[[noreturn]] inline void throwInputError(const std::string& file, const std::string& object,
+                                         const std::string& reason) {
+    throw InputError(describeError(file, object, reason));
+}
+
+} // namespace engine
