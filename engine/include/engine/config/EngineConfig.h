@@ -1,0 +1,40 @@
+#pragma once
+// The engine config (JSON, default content/engine.json):
+// {
+//   "plugin_dirs": ["relative/or/absolute/dir", ...],     optional; relative to the config
+//   "plugins": [ {"library": "shadowmap_plugin", "settings": {...}} ],
+//   "renderer": {"ambient": [r,g,b], "clear_color": [r,g,b]}          optional
+// }
+// Unknown keys are errors (a typo must not silently change nothing). Plugins are searched
+// only in plugin_dirs and then in the build's plugin folder (ENGINE_DEFAULT_PLUGIN_DIR).
+#include <glm/glm.hpp>
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace engine {
+
+struct PluginConfig {
+    std::string library;  // a bare name: "shadowmap_plugin" -> shadowmap_plugin.so
+    nlohmann::json settings = nlohmann::json::object();
+};
+
+struct RendererConfig {
+    glm::vec3 ambient{0.04f};      // linear ambient light, multiplied by albedo
+    glm::vec3 clearColor{0.0f};    // linear background
+};
+
+struct EngineConfig {
+    std::filesystem::path sourcePath;  // for messages
+    std::vector<std::filesystem::path> pluginDirs;
+    std::vector<PluginConfig> plugins;
+    RendererConfig renderer;
+};
+
+// Throws InputError("config.json: plugins[0].library: ...") on bad input.
+EngineConfig loadEngineConfig(const std::filesystem::path& path);
+EngineConfig parseEngineConfig(const std::string& jsonText, const std::filesystem::path& path);
+
+} // namespace engine

@@ -1,0 +1,46 @@
+#pragma once
+// What a plugin registers: RenderPlugin objects that add passes to every frame's graph and,
+// optionally, the lit pass's per-light visibility term (the shadow plugin's hook).
+#include <nlohmann/json.hpp>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace engine {
+
+class Frame;
+struct Scene;
+
+class RenderPlugin {
+public:
+    virtual ~RenderPlugin() = default;
+    virtual std::string name() const = 0;
+
+    // A per-light option from the command line (engine-render --light NAME=VALUE), given
+    // before prepareScene. Return false when this plugin has no per-light options.
+    virtual bool setLightOption(const std::string& light, const std::string& value) {
+        return false;
+    }
+    // The scene was loaded (or replaced). Validate per-light settings here and throw
+    // InputError naming the light for bad ones.
+    virtual void prepareScene(const Scene& scene) {}
+    // Adds this frame's passes (setup runs now, execute later) and hooks into the frame.
+    virtual void addPasses(Frame& frame) = 0;
+    // Plugin-specific figures for --stats (after the frame executed).
+    virtual nlohmann::json frameStats() const { return nlohmann::json::object(); }
+};
+
+// Handed to a plugin's registerPlugin(); owned by the engine's PluginHost.
+class PluginRegistry {
+public:
+    void addRenderPlugin(std::unique_ptr<RenderPlugin> plugin) {
+        plugins_.push_back(std::move(plugin));
+    }
+    std::vector<std::unique_ptr<RenderPlugin>>& renderPlugins() { return plugins_; }
+
+private:
+    std::vector<std::unique_ptr<RenderPlugin>> plugins_;
+};
+
+} // namespace engine

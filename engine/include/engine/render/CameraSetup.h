@@ -1,0 +1,16 @@
+#pragma once
+// Turns a glTF camera (or none) into the frame's V and P_eye, in double.
+#include "engine/render/Frame.h"
+#include "engine/scene/Scene.h"
+
+namespace engine {
+
+// The camera placed by scene.cameraInstances[instance]. The projection uses the viewport's
+// aspect ratio (a stored glTF aspectRatio would stretch the image on other sizes); an
+// infinite far plane (zfar absent) is fitted to the scene's bounds so depth keeps precision.
+FrameCamera cameraFromScene(const Scene& scene, int instance, int width, int height);
+
+// A camera that frames the whole scene from above and to the side, for scenes without one.
+FrameCamera framingCamera(const Scene& scene, int width, int height);
+
+} // namespace engine

@@ -1,0 +1,74 @@
+#pragma once
+// One frame as plugins see it: the scene, its GPU copy, the camera, and the render graph
+// the frame is being built into. Plugins add passes and may install the lit pass's
+// per-light visibility hook (the shadow plugin's contribution to shading).
+#include "engine/graph/RenderGraph.h"
+
+#include <glm/glm.hpp>
+
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace engine {
+
+struct Scene;
+class SceneGpu;
+namespace gl { class Program; }
+
+// The lit pass handles the first kMaxLights entries of Scene::lightInstances; a light's
+// "slot" is its index there.
+constexpr int kMaxLights = 16;
+// Texture units 0..kFirstPluginTextureUnit-1 belong to the engine's materials.
+constexpr int kFirstPluginTextureUnit = 4;
+
+struct FrameCamera {
+    glm::dmat4 eyeToWorld{1.0};  // V (eye -> world); the view matrix is V^-1
+    glm::dmat4 projection{1.0};  // P_eye
+    int width = 0, height = 0;
+    glm::dvec3 position() const { return glm::dvec3(eyeToWorld[3]); }
+};
+
+// The per-light visibility term of the lit pass (DESIGN.md "ambient-retaining modulate").
+// `glsl` is inserted into the lit fragment shader (GLSL 4.50 core, after the engine's own
+// declarations) and must define
+//     vec2 lightVisibility(int lightSlot, vec3 eyePosition, vec3 eyeNormal);
+// returning (shade in [0,1], dimming in [0,1]) for that light at that eye-space point.
+// The lit pass then uses diffuseShade = dimming + (1 - dimming) * shade for diffuse and
+// shade for specular. `bind` runs before the lit pass draws (uniforms; textures on units
+// >= kFirstPluginTextureUnit), and `reads` are the graph resources it samples.
+struct LightVisibilityHook {
+    std::string owner;  // plugin name, for messages
+    std::string glsl;
+    std::vector<ResourceHandle> reads;
+    std::function<void(const gl::Program&, const PassContext&)> bind;
+};
+
+class Frame {
+public:
+    Frame(const Scene& scene, const SceneGpu& gpu, RenderGraph& graph, const FrameCamera& camera,
+          std::uint64_t index)
+        : scene_(scene), gpu_(gpu), graph_(graph), camera_(camera), index_(index) {}
+
+    const Scene& scene() const { return scene_; }
+    const SceneGpu& gpu() const { return gpu_; }
+    RenderGraph& graph() { return graph_; }
+    const FrameCamera& camera() const { return camera_; }
+    std::uint64_t index() const { return index_; }
+
+    // Only one plugin may shade lights; a second hook is a configuration error.
+    void setLightVisibility(LightVisibilityHook hook);
+    const std::optional<LightVisibilityHook>& lightVisibility() const { return visibility_; }
+
+private:
+    const Scene& scene_;
+    const SceneGpu& gpu_;
+    RenderGraph& graph_;
+    FrameCamera camera_;
+    std::uint64_t index_;
+    std::optional<LightVisibilityHook> visibility_;
+};
+
+} // namespace engine

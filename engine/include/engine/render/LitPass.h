@@ -1,0 +1,40 @@
+#pragma once
+// The forward lit pass: draws every mesh instance with the material model and lights of
+// lit.frag, the plugin's visibility hook inserted. It also draws the shadow-mask views
+// (one light's shade as gray) with the same program, so masks show exactly what shading
+// used.
+#include "engine/config/EngineConfig.h"
+#include "engine/gl/Buffer.h"
+#include "engine/gl/Program.h"
+#include "engine/render/Frame.h"
+
+#include <map>
+#include <memory>
+#include <string>
+
+namespace engine {
+
+class LitPass {
+public:
+    explicit LitPass(const RendererConfig& config);
+
+    // Adds the lit pass writing `colorTarget` (an imported texture) to the frame's graph.
+    void addTo(Frame& frame, ResourceHandle colorTarget);
+    // Adds a pass writing light `slot`'s shade into `maskTarget` (an imported RGBA8 texture).
+    void addMaskTo(Frame& frame, int slot, ResourceHandle maskTarget);
+
+private:
+    enum class Output { Color = 0, ShadowMask = 1 };
+    void addPass(Frame& frame, const std::string& name, ResourceHandle target, Output output,
+                 int maskSlot);
+    const gl::Program& programFor(const std::string& visibilityGlsl);
+    void uploadLights(const Scene& scene, const FrameCamera& camera);
+    void drawScene(const Frame& frame, const gl::Program& program, PassContext& context);
+
+    RendererConfig config_;
+    std::map<std::string, std::unique_ptr<gl::Program>> programs_;  // by hook source
+    gl::Buffer lightBuffer_;
+    int lightCount_ = 0;
+};
+
+} // namespace engine

@@ -1,0 +1,65 @@
+#pragma once
+// Renders frames of one scene: builds each frame's render graph (plugin passes, the lit
+// pass, optional shadow-mask passes), compiles it, executes it and reports per pass.
+// Needs a current GL 4.5 context for its whole life.
+#include "engine/config/EngineConfig.h"
+#include "engine/gl/Texture.h"
+#include "engine/plugin/RenderPlugin.h"
+#include "engine/render/Frame.h"
+#include "engine/render/GlTexturePool.h"
+#include "engine/render/LitPass.h"
+#include "engine/render/SceneGpu.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+namespace engine {
+
+struct FrameRequest {
+    FrameCamera camera;
+    std::vector<int> shadowMaskSlots;  // lights (slots) whose shade is also rendered
+    bool timing = false;               // close every pass with glFinish and time it
+};
+
+struct FrameResult {
+    std::vector<PassReport> passes;
+    double frameMs = 0.0;     // wall time of the whole frame (graph build to glFinish)
+    nlohmann::json pluginStats = nlohmann::json::object();
+    std::string graphviz;
+    bool shadowTermProvided = false;  // a plugin installed the lit pass's visibility hook
+};
+
+class Renderer {
+public:
+    Renderer(const RendererConfig& config, std::vector<RenderPlugin*> plugins);
+    ~Renderer();
+
+    // The scene must outlive the renderer (or the next setScene). Calls every plugin's
+    // prepareScene, which throws InputError for bad per-light settings.
+    void setScene(const Scene& scene);
+
+    FrameResult renderFrame(const FrameRequest& request);
+
+    // The last frame's image as 8-bit RGBA (sRGB encoded), top row first.
+    std::vector<std::uint8_t> readColor() const;
+    // The last frame's shade of light `slot` as 8-bit gray (255 = lit), top row first.
+    std::vector<std::uint8_t> readShadowMask(int slot) const;
+
+private:
+    void ensureTargets(int width, int height, const std::vector<int>& maskSlots);
+
+    RendererConfig config_;
+    std::vector<RenderPlugin*> plugins_;
+    const Scene* scene_ = nullptr;
+    std::unique_ptr<SceneGpu> gpu_;
+    std::unique_ptr<LitPass> litPass_;
+    GlTexturePool pool_;
+    gl::Texture color_;
+    std::vector<std::pair<int, gl::Texture>> masks_;  // slot -> RGBA8 target
+    std::uint64_t frameIndex_ = 0;
+};
+
+} // namespace engine

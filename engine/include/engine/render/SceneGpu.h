@@ -1,0 +1,44 @@
+#pragma once
+// The scene's meshes and material textures on the GPU, uploaded once per scene and shared by
+// every pass that draws geometry (the lit pass, the shadow plugin's depth passes).
+#include "engine/gl/Buffer.h"
+#include "engine/gl/Texture.h"
+#include "engine/gl/VertexArray.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace engine {
+
+struct Scene;
+
+// Vertex attribute locations every engine and plugin shader uses.
+constexpr unsigned kAttribPosition = 0;
+constexpr unsigned kAttribNormal = 1;
+constexpr unsigned kAttribTexcoord = 2;
+
+class SceneGpu {
+public:
+    struct Primitive {
+        gl::Buffer positions, normals, texcoords, indices;
+        gl::VertexArray vertexArray;
+        std::int32_t indexCount = 0;
+        int material = -1;
+        bool hasTexcoords = false;
+    };
+
+    explicit SceneGpu(const Scene& scene);
+
+    const std::vector<Primitive>& primitives(int mesh) const { return meshes_.at(mesh); }
+    // Binds the primitive's vertex array and draws it; returns its triangle count.
+    std::uint64_t draw(const Primitive& primitive) const;
+    // The material's base color texture (sRGB, mipmapped), or 0 when it has none.
+    unsigned baseColorTexture(int material) const;
+
+private:
+    std::vector<std::vector<Primitive>> meshes_;
+    std::vector<gl::Texture> images_;          // per Scene::images, sRGB
+    std::vector<int> materialImage_;           // per material: index into images_ or -1
+};
+
+} // namespace engine

@@ -1,0 +1,14 @@
+#pragma once
+// Reads a texture back to the CPU in image order (top row first), as PNG files expect;
+// GL stores row 0 at the bottom.
+#include "engine/gl/Texture.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace engine {
+
+std::vector<std::uint8_t> readTextureRGBA8TopDown(const gl::Texture& texture);
+std::vector<float> readTextureFloatTopDown(const gl::Texture& texture, int channels);
+
+} // namespace engine

@@ -1,0 +1,105 @@
+// Lit pass, fragment stage: ambient + per-light Lambert diffuse and normalized Blinn-Phong
+// specular from the glTF metallic/roughness factors, spot cone falloff and range
+// attenuation as KHR_lights_punctual recommends, and the ambient-retaining modulate of
+// DESIGN.md with the plugin's per-light visibility term:
+//   diffuseShade = d + (1 - d) * shade
+//   color = emissive + ambient * albedo + sum(diffuseShade * diffuse + shade * specular)
+// The engine prepends "#version 450 core", MAX_LIGHTS and then appends the visibility hook.
+const int LIGHT_DIRECTIONAL = 0;
+const int LIGHT_SPOT = 1;
+const int LIGHT_POINT = 2;
+const float PI = 3.14159265358979;
+
+struct LightData {
+    vec4 positionRange;   // eye space position; w = range (0 = infinite)
+    vec4 directionType;   // eye space direction the light shines along; w = type
+    vec4 radiance;        // linear color * intensity
+    vec4 cone;            // x = cos(outer), y = cos(inner)
+};
+layout(std140, binding = 0) uniform Lights {
+    LightData uLights[MAX_LIGHTS];
+};
+uniform int uLightCount;
+uniform vec3 uAmbient;
+
+uniform vec4 uBaseColorFactor;
+uniform float uMetallic;
+uniform float uRoughness;
+uniform vec3 uEmissive;
+uniform bool uHasBaseColorTexture;
+uniform float uAlphaCutoff;  // < 0: no alpha test
+layout(binding = 0) uniform sampler2D uBaseColorTexture;
+
+// 0: shaded color; 1: the visibility hook's shade of light uMaskLight as gray.
+uniform int uOutputMode;
+uniform int uMaskLight;
+
+in vec3 vEyePosition;
+in vec3 vEyeNormal;
+in vec2 vTexcoord;
+out vec4 outColor;
+
+vec2 lightVisibility(int lightSlot, vec3 eyePosition, vec3 eyeNormal);
+
+float rangeWindow(float distance, float range) {
+    if (range <= 0.0) return 1.0;
+    float ratio = distance / range;
+    float window = clamp(1.0 - ratio * ratio * ratio * ratio, 0.0, 1.0);
+    return window * window;
+}
+
+void main() {
+    vec4 albedo = uBaseColorFactor;
+    if (uHasBaseColorTexture) albedo *= texture(uBaseColorTexture, vTexcoord);
+    if (uAlphaCutoff >= 0.0 && albedo.a < uAlphaCutoff) discard;
+
+    vec3 N = normalize(vEyeNormal);
+    if (!gl_FrontFacing) N = -N;  // double-sided materials light their back side
+    vec3 V = normalize(-vEyePosition);
+
+    if (uOutputMode == 1) {
+        outColor = vec4(vec3(lightVisibility(uMaskLight, vEyePosition, N).x), 1.0);
+        return;
+    }
+
+    vec3 diffuseColor = albedo.rgb * (1.0 - uMetallic);
+    vec3 f0 = mix(vec3(0.04), albedo.rgb, uMetallic);
+    float alpha = max(uRoughness * uRoughness, 0.03);
+    float shininess = min(2.0 / (alpha * alpha) - 2.0, 2048.0);
+
+    vec3 color = uEmissive + uAmbient * albedo.rgb;
+    for (int i = 0; i < uLightCount; ++i) {
+        LightData light = uLights[i];
+        int type = int(light.directionType.w);
+        vec3 L;
+        float attenuation = 1.0;
+        if (type == LIGHT_DIRECTIONAL) {
+            L = -light.directionType.xyz;
+        } else {
+            vec3 toLight = light.positionRange.xyz - vEyePosition;
+            float distance = length(toLight);
+            L = toLight / max(distance, 1e-20);
+            attenuation = rangeWindow(distance, light.positionRange.w) /
+                          max(distance * distance, 1e-8);
+            if (type == LIGHT_SPOT) {
+                float cosAngle = dot(-L, light.directionType.xyz);
+                float t = clamp((cosAngle - light.cone.x) / max(light.cone.y - light.cone.x, 1e-4),
+                                0.0, 1.0);
+                attenuation *= t * t;
+            }
+        }
+        float NdotL = dot(N, L);
+        if (NdotL <= 0.0 || attenuation <= 0.0) continue;
+        vec3 radiance = light.radiance.rgb * attenuation * NdotL;
+        vec3 H = normalize(L + V);
+        vec3 diffuse = diffuseColor / PI * radiance;
+        vec3 specular = f0 * ((shininess + 8.0) / (8.0 * PI)) *
+                        pow(max(dot(N, H), 0.0), shininess) * radiance;
+
+        vec2 visibility = lightVisibility(i, vEyePosition, N);
+        float shade = visibility.x;
+        float diffuseShade = visibility.y + (1.0 - visibility.y) * shade;
+        color += diffuseShade * diffuse + shade * specular;
+    }
+    outColor = vec4(color, albedo.a);
+}

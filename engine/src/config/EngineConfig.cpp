@@ -1,0 +1,84 @@
+#include "engine/config/EngineConfig.h"
+
+#include "engine/util/Error.h"
+#include "engine/util/JsonRead.h"
+
+#include <fstream>
+#include <sstream>
+
+namespace engine {
+
+namespace {
+
+PluginConfig parsePlugin(const nlohmann::json& entry, const std::string& file,
+                         const std::string& where) {
+    json::requireKnownKeys(entry, {"library", "settings"}, file, where);
+    if (!entry.contains("library")) throwInputError(file, where, "missing \"library\"");
+    PluginConfig plugin;
+    plugin.library = json::readString(entry["library"], file, where + ".library");
+    // A bare name only: the host decides the folder, never the config or the current dir.
+    if (plugin.library.empty() || plugin.library.find('/') != std::string::npos ||
+        plugin.library == "." || plugin.library == "..")
+        throwInputError(file, where + ".library",
+                        "\"" + plugin.library + "\" must be a bare library name without '/'");
+    if (entry.contains("settings")) {
+        if (!entry["settings"].is_object())
+            throwInputError(file, where + ".settings", "must be a JSON object");
+        plugin.settings = entry["settings"];
+    }
+    return plugin;
+}
+
+RendererConfig parseRenderer(const nlohmann::json& node, const std::string& file) {
+    json::requireKnownKeys(node, {"ambient", "clear_color"}, file, "renderer");
+    RendererConfig renderer;
+    if (node.contains("ambient"))
+        renderer.ambient = glm::vec3(json::readVec3(node["ambient"], file, "renderer.ambient"));
+    if (node.contains("clear_color"))
+        renderer.clearColor =
+            glm::vec3(json::readVec3(node["clear_color"], file, "renderer.clear_color"));
+    return renderer;
+}
+
+} // namespace
+
+EngineConfig parseEngineConfig(const std::string& jsonText, const std::filesystem::path& path) {
+    const std::string file = path.string();
+    nlohmann::json root;
+    try {
+        root = nlohmann::json::parse(jsonText);
+    } catch (const nlohmann::json::parse_error& error) {
+        throwInputError(file, "", std::string("not valid JSON: ") + error.what());
+    }
+    json::requireKnownKeys(root, {"plugins", "plugin_dirs", "renderer"}, file, "");
+
+    EngineConfig config;
+    config.sourcePath = path;
+    const std::filesystem::path base = path.has_parent_path() ? path.parent_path() : ".";
+    if (root.contains("plugin_dirs")) {
+        if (!root["plugin_dirs"].is_array()) throwInputError(file, "plugin_dirs", "must be an array");
+        for (std::size_t i = 0; i < root["plugin_dirs"].size(); ++i) {
+            std::filesystem::path dir = json::readString(
+                root["plugin_dirs"][i], file, "plugin_dirs[" + std::to_string(i) + "]");
+            config.pluginDirs.push_back(dir.is_absolute() ? dir : base / dir);
+        }
+    }
+    if (root.contains("plugins")) {
+        if (!root["plugins"].is_array()) throwInputError(file, "plugins", "must be an array");
+        for (std::size_t i = 0; i < root["plugins"].size(); ++i)
+            config.plugins.push_back(
+                parsePlugin(root["plugins"][i], file, "plugins[" + std::to_string(i) + "]"));
+    }
+    if (root.contains("renderer")) config.renderer = parseRenderer(root["renderer"], file);
+    return config;
+}
+
+EngineConfig loadEngineConfig(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throwInputError(path.string(), "", "cannot open the engine config");
+    std::ostringstream text;
+    text << in.rdbuf();
+    return parseEngineConfig(text.str(), path);
+}
+
+} // namespace engine

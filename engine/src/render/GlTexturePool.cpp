@@ -1,0 +1,53 @@
+#include "engine/render/GlTexturePool.h"
+
+#include <cassert>
+
+namespace engine {
+
+unsigned internalFormatFor(TextureFormat format) {
+    switch (format) {
+    case TextureFormat::RGBA8: return GL_RGBA8;
+    case TextureFormat::SRGB8_A8: return GL_SRGB8_ALPHA8;
+    case TextureFormat::RGBA16F: return GL_RGBA16F;
+    case TextureFormat::RGBA32F: return GL_RGBA32F;
+    case TextureFormat::R8: return GL_R8;
+    case TextureFormat::R32F: return GL_R32F;
+    case TextureFormat::RG32F: return GL_RG32F;
+    case TextureFormat::Depth16: return GL_DEPTH_COMPONENT16;
+    case TextureFormat::Depth24: return GL_DEPTH_COMPONENT24;
+    case TextureFormat::Depth32F: return GL_DEPTH_COMPONENT32F;
+    }
+    return GL_RGBA8;
+}
+
+std::uint32_t GlTexturePool::acquire(const TextureDesc& desc) {
+    for (Entry& entry : textures_)
+        if (!entry.inUse && entry.desc == desc) {
+            entry.inUse = true;
+            return entry.texture.id();
+        }
+    Entry entry{desc, desc.cube ? gl::Texture::createCube(internalFormatFor(desc.format), desc.width)
+                                : gl::Texture::create2D(internalFormatFor(desc.format), desc.width,
+                                                        desc.height),
+                true};
+    // Complete for sampling without mipmaps; shadow lookups override this with samplers.
+    entry.texture.setParameter(GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    entry.texture.setParameter(GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    entry.texture.setParameter(GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    entry.texture.setParameter(GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    const std::uint32_t id = entry.texture.id();
+    textures_.push_back(std::move(entry));
+    return id;
+}
+
+void GlTexturePool::release(std::uint32_t handle, const TextureDesc& desc) {
+    for (Entry& entry : textures_)
+        if (entry.texture.id() == handle) {
+            assert(entry.inUse && entry.desc == desc);
+            entry.inUse = false;
+            return;
+        }
+    assert(false && "released a texture the pool does not own");
+}
+
+} // namespace engine

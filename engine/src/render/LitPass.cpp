@@ -1,0 +1,175 @@
+#include "engine/render/LitPass.h"
+
+#include "engine/gl/Framebuffer.h"
+#include "engine/render/SceneGpu.h"
+#include "engine/scene/Scene.h"
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include <cmath>
+
+namespace engine {
+
+namespace shaders {
+extern const char lit_vert[];
+extern const char lit_frag[];
+}
+
+namespace {
+
+// Without a plugin every light is fully visible and nothing is dimmed.
+constexpr const char* kNoShadowsGlsl =
+    "vec2 lightVisibility(int lightSlot, vec3 eyePosition, vec3 eyeNormal) {\n"
+    "    return vec2(1.0, 0.0);\n"
+    "}\n";
+
+// std140 layout of lit.frag's LightData.
+struct LightData {
+    glm::vec4 positionRange;
+    glm::vec4 directionType;
+    glm::vec4 radiance;
+    glm::vec4 cone;
+};
+
+int lightTypeCode(Light::Type type) {
+    switch (type) {
+    case Light::Type::Directional: return 0;
+    case Light::Type::Spot: return 1;
+    case Light::Type::Point: return 2;
+    }
+    return 2;
+}
+
+} // namespace
+
+LitPass::LitPass(const RendererConfig& config)
+    : config_(config),
+      lightBuffer_(gl::Buffer::create(sizeof(LightData) * kMaxLights, nullptr,
+                                      GL_DYNAMIC_STORAGE_BIT)) {}
+
+const gl::Program& LitPass::programFor(const std::string& visibilityGlsl) {
+    auto found = programs_.find(visibilityGlsl);
+    if (found != programs_.end()) return *found->second;
+    const std::string header =
+        "#version 450 core\n#define MAX_LIGHTS " + std::to_string(kMaxLights) + "\n";
+    auto program = std::make_unique<gl::Program>(gl::Program::compile(
+        "lit", {{GL_VERTEX_SHADER, header + shaders::lit_vert},
+                {GL_FRAGMENT_SHADER, header + shaders::lit_frag + "\n" + visibilityGlsl}}));
+    return *programs_.emplace(visibilityGlsl, std::move(program)).first->second;
+}
+
+void LitPass::uploadLights(const Scene& scene, const FrameCamera& camera) {
+    // Eye-space light data composed in double: V^-1 * L, then cast.
+    const glm::dmat4 view = glm::inverse(camera.eyeToWorld);
+    LightData lights[kMaxLights]{};
+    lightCount_ = 0;
+    for (const LightInstance& placed : scene.lightInstances) {
+        if (lightCount_ == kMaxLights) break;
+        const Light& light = scene.lights[placed.light];
+        LightData& data = lights[lightCount_++];
+        const glm::dvec3 eyePosition = glm::dvec3(view * glm::dvec4(placed.position(), 1.0));
+        const glm::dvec3 eyeDirection = glm::normalize(glm::dmat3(view) * placed.direction());
+        data.positionRange = glm::vec4(glm::vec3(eyePosition), static_cast<float>(light.range));
+        data.directionType = glm::vec4(glm::vec3(eyeDirection), float(lightTypeCode(light.type)));
+        data.radiance = glm::vec4(light.color * light.intensity, 0.0f);
+        data.cone = glm::vec4(static_cast<float>(std::cos(light.outerConeAngle)),
+                              static_cast<float>(std::cos(light.innerConeAngle)), 0.0f, 0.0f);
+    }
+    lightBuffer_.update(0, sizeof(lights), lights);
+}
+
+void LitPass::drawScene(const Frame& frame, const gl::Program& program, PassContext& context) {
+    const Scene& scene = frame.scene();
+    const glm::dmat4 view = glm::inverse(frame.camera().eyeToWorld);
+    program.set("uProjection", glm::mat4(frame.camera().projection));
+    program.set("uLightCount", lightCount_);
+    program.set("uAmbient", config_.ambient);
+    glBindBufferBase(GL_UNIFORM_BUFFER, 0, lightBuffer_.id());
+
+    static const Material kDefaultMaterial{};
+    for (const MeshInstance& instance : scene.meshInstances) {
+        // Compose in double so only the camera-relative result is rounded to float.
+        const glm::dmat4 modelView = view * instance.world;
+        const glm::dmat3 normalMatrix = glm::transpose(glm::inverse(glm::dmat3(modelView)));
+        program.set("uModelView", glm::mat4(modelView));
+        program.set("uNormalMatrix", glm::mat3(normalMatrix));
+        // A mirroring transform turns counter-clockwise triangles clockwise on screen.
+        glFrontFace(glm::determinant(glm::dmat3(instance.world)) < 0.0 ? GL_CW : GL_CCW);
+        for (const SceneGpu::Primitive& primitive : frame.gpu().primitives(instance.mesh)) {
+            const Material& material = primitive.material >= 0 ? scene.materials[primitive.material]
+                                                               : kDefaultMaterial;
+            program.set("uBaseColorFactor", material.baseColorFactor);
+            program.set("uMetallic", material.metallicFactor);
+            program.set("uRoughness", material.roughnessFactor);
+            program.set("uEmissive", material.emissiveFactor);
+            program.set("uAlphaCutoff",
+                        material.alphaMode == AlphaMode::Mask ? material.alphaCutoff : -1.0f);
+            const unsigned texture = frame.gpu().baseColorTexture(primitive.material);
+            program.set("uHasBaseColorTexture", texture != 0 ? 1 : 0);
+            glBindTextureUnit(0, texture);
+            if (material.doubleSided) glDisable(GL_CULL_FACE);
+            else glEnable(GL_CULL_FACE);
+            context.countDraw(frame.gpu().draw(primitive));
+        }
+    }
+    glFrontFace(GL_CCW);
+    glEnable(GL_CULL_FACE);
+}
+
+void LitPass::addPass(Frame& frame, const std::string& name, ResourceHandle target, Output output,
+                      int maskSlot) {
+    const auto& hook = frame.lightVisibility();
+    const gl::Program& program = programFor(hook ? hook->glsl : kNoShadowsGlsl);
+    // Setup runs inside addPass, after both callbacks were built: share the handles it
+    // declares with the execute callback through one small heap object.
+    struct Handles { ResourceHandle target, depth; };
+    auto handles = std::make_shared<Handles>();
+    handles->target = target;
+    frame.graph().addPass(
+        name,
+        [&](PassBuilder& builder) {
+            if (hook)
+                for (ResourceHandle read : hook->reads) builder.read(read);
+            handles->depth = builder.create(
+                name + "_depth",
+                {frame.camera().width, frame.camera().height, TextureFormat::Depth32F});
+            handles->target = builder.write(target);
+        },
+        [this, &frame, &program, handles, output, maskSlot](PassContext& context) {
+            const bool color = output == Output::Color;
+            if (color) uploadLights(frame.scene(), frame.camera());
+            gl::Framebuffer framebuffer = gl::Framebuffer::create();
+            glNamedFramebufferTexture(framebuffer.id(), GL_COLOR_ATTACHMENT0,
+                                      context.texture(handles->target), 0);
+            glNamedFramebufferTexture(framebuffer.id(), GL_DEPTH_ATTACHMENT,
+                                      context.texture(handles->depth), 0);
+            framebuffer.requireComplete("lit pass framebuffer");
+            glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.id());
+            glViewport(0, 0, frame.camera().width, frame.camera().height);
+            if (color) glEnable(GL_FRAMEBUFFER_SRGB);
+            const glm::vec4 clear = color ? glm::vec4(config_.clearColor, 1.0f) : glm::vec4(0.0f);
+            glClearNamedFramebufferfv(framebuffer.id(), GL_COLOR, 0, &clear[0]);
+            const float farDepth = 1.0f;
+            glClearNamedFramebufferfv(framebuffer.id(), GL_DEPTH, 0, &farDepth);
+            glEnable(GL_DEPTH_TEST);
+            glDepthFunc(GL_LESS);
+            program.use();
+            program.set("uOutputMode", static_cast<int>(output));
+            program.set("uMaskLight", maskSlot);
+            const auto& visibility = frame.lightVisibility();
+            if (visibility && visibility->bind) visibility->bind(program, context);
+            drawScene(frame, program, context);
+            glDisable(GL_FRAMEBUFFER_SRGB);
+            glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        });
+}
+
+void LitPass::addTo(Frame& frame, ResourceHandle colorTarget) {
+    addPass(frame, "lit", colorTarget, Output::Color, -1);
+}
+
+void LitPass::addMaskTo(Frame& frame, int slot, ResourceHandle maskTarget) {
+    addPass(frame, "shadow_mask_" + std::to_string(slot), maskTarget, Output::ShadowMask, slot);
+}
+
+} // namespace engine

@@ -1,0 +1,87 @@
+#include "engine/render/Renderer.h"
+
+#include "engine/render/TextureReadback.h"
+#include "engine/scene/Scene.h"
+
+#include <chrono>
+
+namespace engine {
+
+Renderer::Renderer(const RendererConfig& config, std::vector<RenderPlugin*> plugins)
+    : config_(config), plugins_(std::move(plugins)), litPass_(std::make_unique<LitPass>(config)) {}
+
+Renderer::~Renderer() = default;
+
+void Renderer::setScene(const Scene& scene) {
+    scene_ = &scene;
+    gpu_ = std::make_unique<SceneGpu>(scene);
+    for (RenderPlugin* plugin : plugins_) plugin->prepareScene(scene);
+}
+
+void Renderer::ensureTargets(int width, int height, const std::vector<int>& maskSlots) {
+    if (!color_.id() || color_.width() != width || color_.height() != height) {
+        color_ = gl::Texture::create2D(GL_SRGB8_ALPHA8, width, height);
+        masks_.clear();
+    }
+    for (int slot : maskSlots) {
+        bool present = false;
+        for (const auto& mask : masks_) present = present || mask.first == slot;
+        if (!present) masks_.emplace_back(slot, gl::Texture::create2D(GL_RGBA8, width, height));
+    }
+}
+
+FrameResult Renderer::renderFrame(const FrameRequest& request) {
+    const auto start = std::chrono::steady_clock::now();
+    const int width = request.camera.width, height = request.camera.height;
+    ensureTargets(width, height, request.shadowMaskSlots);
+
+    RenderGraph graph;
+    Frame frame(*scene_, *gpu_, graph, request.camera, frameIndex_++);
+    const ResourceHandle color =
+        graph.importTexture("scene_color", {width, height, TextureFormat::SRGB8_A8}, color_.id());
+    for (RenderPlugin* plugin : plugins_) plugin->addPasses(frame);
+    litPass_->addTo(frame, color);
+    graph.markOutput(color);
+    for (int slot : request.shadowMaskSlots)
+        for (const auto& [maskSlot, texture] : masks_)
+            if (maskSlot == slot) {
+                const ResourceHandle mask = graph.importTexture(
+                    "shadow_mask_target_" + std::to_string(slot),
+                    {width, height, TextureFormat::RGBA8}, texture.id());
+                litPass_->addMaskTo(frame, slot, mask);
+                graph.markOutput(mask);
+            }
+
+    graph.compile();
+    ExecuteOptions options;
+    options.timing = request.timing;
+    options.finish = [] { glFinish(); };
+    graph.execute(pool_, options);
+    glFinish();
+
+    FrameResult result;
+    result.passes = graph.reports();
+    result.graphviz = graph.graphviz();
+    result.shadowTermProvided = frame.lightVisibility().has_value();
+    for (RenderPlugin* plugin : plugins_) result.pluginStats[plugin->name()] = plugin->frameStats();
+    result.frameMs =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    return result;
+}
+
+std::vector<std::uint8_t> Renderer::readColor() const {
+    return readTextureRGBA8TopDown(color_);
+}
+
+std::vector<std::uint8_t> Renderer::readShadowMask(int slot) const {
+    for (const auto& [maskSlot, texture] : masks_)
+        if (maskSlot == slot) {
+            const std::vector<std::uint8_t> rgba = readTextureRGBA8TopDown(texture);
+            std::vector<std::uint8_t> gray(rgba.size() / 4);
+            for (std::size_t i = 0; i < gray.size(); ++i) gray[i] = rgba[i * 4];
+            return gray;
+        }
+    return {};
+}
+
+} // namespace engine

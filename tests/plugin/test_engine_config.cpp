@@ -1,0 +1,47 @@
+// Engine config parsing: valid configs, and bad ones with messages naming file and key.
+#include "engine/config/EngineConfig.h"
+#include "engine/util/Error.h"
+
+#include <gtest/gtest.h>
+
+namespace {
+
+std::string configError(const std::string& text) {
+    try {
+        engine::parseEngineConfig(text, "my/engine.json");
+    } catch (const engine::InputError& error) {
+        return error.what();
+    }
+    ADD_FAILURE() << "accepted: " << text;
+    return {};
+}
+
+} // namespace
+
+TEST(EngineConfig, ParsesPluginsSettingsAndRenderer) {
+    const auto config = engine::parseEngineConfig(
+        R"({"plugin_dirs":["plugins"],"plugins":[{"library":"shadowmap_plugin",
+            "settings":{"variant":"woo","resolution":1024}}],
+            "renderer":{"ambient":[0.1,0.2,0.3]}})",
+        "my/engine.json");
+    ASSERT_EQ(config.plugins.size(), 1u);
+    EXPECT_EQ(config.plugins[0].library, "shadowmap_plugin");
+    EXPECT_EQ(config.plugins[0].settings["resolution"], 1024);
+    ASSERT_EQ(config.pluginDirs.size(), 1u);
+    EXPECT_EQ(config.pluginDirs[0], std::filesystem::path("my/plugins"));
+    EXPECT_FLOAT_EQ(config.renderer.ambient.y, 0.2f);
+}
+
+TEST(EngineConfig, BadInputNamesFileAndKey) {
+    EXPECT_NE(configError("{").find("my/engine.json: not valid JSON"), std::string::npos);
+    EXPECT_NE(configError(R"({"plugnis":[]})").find("plugnis: unknown key"), std::string::npos);
+    EXPECT_NE(configError(R"({"plugins":[{"settings":{}}]})").find("plugins[0]: missing \"library\""),
+              std::string::npos);
+    EXPECT_NE(configError(R"({"plugins":[{"library":"../evil"}]})").find("plugins[0].library"),
+              std::string::npos);
+    EXPECT_NE(configError(R"({"plugins":[{"library":"x","settings":3}]})")
+                  .find("plugins[0].settings: must be a JSON object"),
+              std::string::npos);
+    EXPECT_NE(configError(R"({"renderer":{"ambient":[1,2]}})").find("renderer.ambient"),
+              std::string::npos);
+}

@@ -1,0 +1,63 @@
+#include "RenderOptions.h"
+
+#include <cerrno>
+#include <cstdlib>
+#include <stdexcept>
+
+const char* const kRenderUsage =
+    "usage: engine-render --config CONFIG.json --scene SCENE.gltf|.glb --out OUT.png\n"
+    "  [--width W] [--height H] [--camera NAME]\n"
+    "  [--light NAME=VARIANT]... [--shadow-mask NAME=MASK.png]...\n"
+    "  [--frames N] [--stats STATS.json] [--graph-dot GRAPH.dot]\n";
+
+namespace {
+
+int parsePositive(const std::string& flag, const std::string& text, int maximum) {
+    char* end = nullptr;
+    errno = 0;
+    const long value = std::strtol(text.c_str(), &end, 10);
+    if (text.empty() || *end != '\0' || errno != 0 || value < 1 || value > maximum)
+        throw std::invalid_argument(flag + ": \"" + text + "\" is not an integer in [1, " +
+                                    std::to_string(maximum) + "]");
+    return static_cast<int>(value);
+}
+
+std::pair<std::string, std::string> parseAssignment(const std::string& flag,
+                                                    const std::string& text) {
+    const auto equals = text.find('=');
+    if (equals == std::string::npos || equals == 0 || equals + 1 == text.size())
+        throw std::invalid_argument(flag + ": \"" + text + "\" must be NAME=VALUE");
+    return {text.substr(0, equals), text.substr(equals + 1)};
+}
+
+} // namespace
+
+RenderOptions parseRenderOptions(int argc, char** argv) {
+    RenderOptions options;
+    bool sawScene = false, sawOut = false;
+    for (int i = 1; i < argc; ++i) {
+        const std::string flag = argv[i];
+        if (flag == "--help" || flag == "-h") {
+            options.help = true;
+            return options;
+        }
+        if (flag.rfind("--", 0) != 0) throw std::invalid_argument("unexpected argument \"" + flag + "\"");
+        if (i + 1 >= argc) throw std::invalid_argument(flag + ": missing value");
+        const std::string value = argv[++i];
+        if (flag == "--config") options.config = value;
+        else if (flag == "--scene") { options.scene = value; sawScene = true; }
+        else if (flag == "--out") { options.out = value; sawOut = true; }
+        else if (flag == "--width") options.width = parsePositive(flag, value, 16384);
+        else if (flag == "--height") options.height = parsePositive(flag, value, 16384);
+        else if (flag == "--camera") options.camera = value;
+        else if (flag == "--light") options.lightVariants.push_back(parseAssignment(flag, value));
+        else if (flag == "--shadow-mask") options.shadowMasks.push_back(parseAssignment(flag, value));
+        else if (flag == "--frames") options.frames = parsePositive(flag, value, 100000);
+        else if (flag == "--stats") options.stats = value;
+        else if (flag == "--graph-dot") options.graphDot = value;
+        else throw std::invalid_argument("unknown option " + flag);
+    }
+    if (!sawScene) throw std::invalid_argument("--scene is required");
+    if (!sawOut) throw std::invalid_argument("--out is required");
+    return options;
+}

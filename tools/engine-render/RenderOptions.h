@@ -1,0 +1,24 @@
+#pragma once
+// engine-render's command line (the contract in DESIGN.md).
+#include <string>
+#include <utility>
+#include <vector>
+
+struct RenderOptions {
+    std::string config = "content/engine.json";
+    std::string scene;
+    std::string out;
+    int width = 1280, height = 720;
+    std::string camera;                                       // empty: first glTF camera
+    std::vector<std::pair<std::string, std::string>> lightVariants;  // --light NAME=VARIANT
+    std::vector<std::pair<std::string, std::string>> shadowMasks;    // --shadow-mask NAME=FILE
+    int frames = 1;
+    std::string stats;      // JSON
+    std::string graphDot;   // graphviz of the last frame's compiled graph
+    bool help = false;
+};
+
+extern const char* const kRenderUsage;
+
+// Throws std::invalid_argument with one line naming the flag and the reason.
+RenderOptions parseRenderOptions(int argc, char** argv);

@@ -1,0 +1,177 @@
+// engine-render: renders one glTF scene headless (EGL surfaceless) and writes a PNG,
+// optionally per-light shadow masks, per-pass statistics and the compiled frame graph.
+#include "RenderOptions.h"
+
+#include "engine/config/EngineConfig.h"
+#include "engine/context/GlContext.h"
+#include "engine/gltf/GltfLoader.h"
+#include "engine/plugin/PluginHost.h"
+#include "engine/render/CameraSetup.h"
+#include "engine/render/Renderer.h"
+#include "engine/util/Error.h"
+#include "engine/util/OutputFile.h"
+#include "engine/util/ProcessSetup.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <iostream>
+#include <map>
+
+namespace {
+
+double median(std::vector<double> values) {
+    if (values.empty()) return 0.0;
+    std::sort(values.begin(), values.end());
+    const std::size_t mid = values.size() / 2;
+    return values.size() % 2 ? values[mid] : 0.5 * (values[mid - 1] + values[mid]);
+}
+
+engine::FrameCamera chooseCamera(const engine::Scene& scene, const RenderOptions& options) {
+    if (!options.camera.empty()) {
+        const int instance = scene.findCameraInstance(options.camera);
+        if (instance < 0)
+            engine::throwInputError(options.scene, "camera \"" + options.camera + "\"",
+                                    "no such camera in the scene");
+        return engine::cameraFromScene(scene, instance, options.width, options.height);
+    }
+    if (!scene.cameraInstances.empty())
+        return engine::cameraFromScene(scene, 0, options.width, options.height);
+    return engine::framingCamera(scene, options.width, options.height);
+}
+
+int lightSlot(const engine::Scene& scene, const std::string& sceneFile, const std::string& name) {
+    const int slot = scene.findLightInstance(name);
+    if (slot < 0) engine::throwInputError(sceneFile, "light \"" + name + "\"", "no such light in the scene");
+    if (slot >= engine::kMaxLights)
+        engine::throwInputError(sceneFile, "light \"" + name + "\"",
+                                "only the first " + std::to_string(engine::kMaxLights) +
+                                    " lights are rendered");
+    return slot;
+}
+
+struct PassSummary {
+    std::vector<double> wallMs;
+    engine::PassReport last;
+};
+
+nlohmann::json statsJson(const RenderOptions& options, const std::vector<double>& frameMs,
+                         const std::vector<std::string>& order,
+                         const std::map<std::string, PassSummary>& passes,
+                         const engine::FrameResult& last) {
+    nlohmann::json stats;
+    stats["scene"] = options.scene;
+    stats["width"] = options.width;
+    stats["height"] = options.height;
+    stats["frames"] = options.frames;
+    stats["frame_ms"] = frameMs;
+    stats["frame_ms_median"] = median(frameMs);
+    nlohmann::json list = nlohmann::json::array();
+    for (const std::string& name : order) {
+        const PassSummary& pass = passes.at(name);
+        list.push_back({{"name", name},
+                        {"culled", pass.last.culled},
+                        {"cull_reason", pass.last.cullReason},
+                        {"order", pass.last.order},
+                        {"wall_ms_median", median(pass.wallMs)},
+                        {"draws", pass.last.draws},
+                        {"triangles", pass.last.triangles}});
+    }
+    stats["passes"] = list;
+    stats["plugins"] = last.pluginStats;
+    return stats;
+}
+
+int run(const RenderOptions& options) {
+    engine::tuneAllocatorForRendering();
+    const engine::EngineConfig config = engine::loadEngineConfig(options.config);
+    auto context = engine::createEglContext();
+    context->makeCurrent();
+
+    engine::PluginHost host;
+    host.loadAll(config);
+    const auto plugins = host.renderPlugins();
+    for (const auto& [light, variant] : options.lightVariants) {
+        bool handled = false;
+        for (engine::RenderPlugin* plugin : plugins) handled = plugin->setLightOption(light, variant) || handled;
+        if (!handled)
+            throw engine::InputError("--light " + light + "=" + variant +
+                                     ": no loaded plugin takes per-light options (config " +
+                                     options.config + " loads " +
+                                     std::to_string(plugins.size()) + " plugins)");
+    }
+
+    std::vector<std::string> warnings;
+    const engine::Scene scene = engine::loadGltf(options.scene, &warnings);
+    for (const std::string& warning : warnings) std::cerr << "warning: " << warning << "\n";
+
+    engine::Renderer renderer(config.renderer, plugins);
+    renderer.setScene(scene);
+
+    engine::FrameRequest request;
+    request.camera = chooseCamera(scene, options);
+    request.timing = true;
+    for (const auto& [light, file] : options.shadowMasks)
+        request.shadowMaskSlots.push_back(lightSlot(scene, options.scene, light));
+
+    std::vector<double> frameMs;
+    std::vector<std::string> order;
+    std::map<std::string, PassSummary> passes;
+    engine::FrameResult last;
+    for (int frame = 0; frame < options.frames; ++frame) {
+        last = renderer.renderFrame(request);
+        frameMs.push_back(last.frameMs);
+        for (const engine::PassReport& report : last.passes) {
+            auto [it, inserted] = passes.try_emplace(report.name);
+            if (inserted) order.push_back(report.name);
+            if (!report.culled) it->second.wallMs.push_back(report.wallMs);
+            it->second.last = report;
+        }
+    }
+    if (!options.shadowMasks.empty() && !last.shadowTermProvided)
+        throw engine::InputError("--shadow-mask: no loaded plugin provides a shadow term (config " +
+                                 options.config + ")");
+
+    engine::writePngAtomically(options.out, options.width, options.height, 4, renderer.readColor());
+    for (std::size_t i = 0; i < options.shadowMasks.size(); ++i)
+        engine::writePngAtomically(options.shadowMasks[i].second, options.width, options.height, 1,
+                                   renderer.readShadowMask(request.shadowMaskSlots[i]));
+    if (!options.stats.empty())
+        engine::writeFileAtomically(options.stats,
+                                    statsJson(options, frameMs, order, passes, last).dump(2));
+    if (!options.graphDot.empty()) engine::writeFileAtomically(options.graphDot, last.graphviz);
+
+    std::printf("%s: %dx%d, %d frame(s), median frame %.2f ms (%s)\n", options.scene.c_str(),
+                options.width, options.height, options.frames, median(frameMs),
+                context->rendererString().c_str());
+    std::printf("  %-28s %10s %8s %12s  %s\n", "pass", "ms", "draws", "triangles", "state");
+    for (const std::string& name : order) {
+        const PassSummary& pass = passes[name];
+        std::printf("  %-28s %10.2f %8llu %12llu  %s\n", name.c_str(), median(pass.wallMs),
+                    static_cast<unsigned long long>(pass.last.draws),
+                    static_cast<unsigned long long>(pass.last.triangles),
+                    pass.last.culled ? ("culled: " + pass.last.cullReason).c_str() : "run");
+    }
+    return 0;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    RenderOptions options;
+    try {
+        options = parseRenderOptions(argc, argv);
+    } catch (const std::invalid_argument& error) {
+        std::fprintf(stderr, "engine-render: %s (see --help)\n", error.what());
+        return 1;
+    }
+    if (options.help) {
+        std::fputs(kRenderUsage, stdout);
+        return 0;
+    }
+    try {
+        return run(options);
+    } catch (const std::exception& error) {
+        std::fprintf(stderr, "engine-render: %s\n", error.what());
+        return 1;
+    }
+}
