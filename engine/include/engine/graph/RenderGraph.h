@@ -1,0 +1,162 @@
+#pragma once
+// The render-pass graph: each frame, modules add passes that declare which textures they
+// create, read and write; compile() culls what no output needs, orders the rest and plans
+// transient textures; execute() runs the survivors. No GL here: physical textures come from a
+// ResourceAllocator, so the whole algorithm is unit-tested without a context.
+//
+// Contract (plugins and tools rely on it):
+// - Resources are textures with names unique in the graph. A transient is made by create()
+//   in exactly one pass, its writer. An import (importTexture) is owned elsewhere (persistent
+//   shadow maps, the final target) and may be written by at most one pass, via write().
+//   A duplicate name, a second writer, an unknown name or a pass reading what it writes is a
+//   GraphError naming the pass(es) and the resource.
+// - Dependencies run from a resource's writer to every reader, whatever the declaration
+//   order: a pass reading an import that another pass writes runs after that writer and sees
+//   this frame's contents. An import nobody writes is a valid input (its contents come from
+//   outside). Cycles are a GraphError naming the passes in them.
+// - Culling counts references back from the outputs (as Filament's FrameGraph): a pass
+//   survives if it has a side effect, writes a resource marked output, or writes something a
+//   surviving pass reads. Culled passes never execute, their transients are never acquired,
+//   and reports() gives the reason.
+// - Order: topological and stable (ties keep declaration order), so output is reproducible.
+// - Transients are acquired right before their first user executes and released right after
+//   their last user, so the allocator can reuse a texture within the frame. compile() also
+//   plans that reuse statically (physicalSlot / physicalSlotCount): transients of equal desc
+//   with disjoint lifetimes share one slot. To keep contents past the frame, import instead.
+#include "engine/graph/ResourceAllocator.h"
+#include "engine/graph/TextureDesc.h"
+
+#include <cstdint>
+#include <functional>
+#include <stdexcept>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+namespace engine {
+
+class RenderGraph;
+
+class GraphError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+// Index of a resource in its graph; only meaningful for the graph that returned it.
+struct ResourceHandle {
+    int index = -1;
+    bool valid() const { return index >= 0; }
+    bool operator==(const ResourceHandle&) const = default;
+};
+
+// Handed to a pass's setup callback: the pass declares its resources through it.
+class PassBuilder {
+public:
+    // A transient texture this pass writes; the name must be new to the graph.
+    [[nodiscard]] ResourceHandle create(const std::string& name, const TextureDesc& desc);
+    ResourceHandle read(ResourceHandle resource);
+    ResourceHandle read(const std::string& name);  // unknown name -> GraphError
+    // Declares this pass the writer of an import (or returns its own transient unchanged).
+    [[nodiscard]] ResourceHandle write(ResourceHandle resource);
+    void sideEffect();  // never culled (e.g. a readback)
+
+private:
+    friend class RenderGraph;
+    PassBuilder(RenderGraph& graph, int pass) : graph_(graph), pass_(pass) {}
+    RenderGraph& graph_;
+    int pass_;
+};
+
+struct PassReport {
+    std::string name;
+    bool culled = false;
+    std::string cullReason;  // e.g. "no surviving pass reads 'shadow_map_light2'"
+    int order = -1;          // position in execution order, -1 when culled
+    double wallMs = 0;       // only measured with ExecuteOptions::timing
+    std::uint64_t draws = 0, triangles = 0;
+};
+
+// Handed to a pass's execute callback.
+class PassContext {
+public:
+    // Physical handle (a GL texture name in practice) of a resource this pass declared.
+    std::uint32_t texture(ResourceHandle resource) const;
+    const TextureDesc& desc(ResourceHandle resource) const;
+    void countDraw(std::uint64_t triangles);  // one draw call of that many triangles
+    const std::string& passName() const;
+
+private:
+    friend class RenderGraph;
+    PassContext(const RenderGraph& graph, int pass, PassReport& report)
+        : graph_(graph), pass_(pass), report_(report) {}
+    const RenderGraph& graph_;
+    int pass_;
+    PassReport& report_;
+};
+
+struct ExecuteOptions {
+    bool timing = false;
+    // Called after each pass when timing (glFinish in practice): GL work is asynchronous,
+    // so without it a pass's wall time would measure command submission, not the work.
+    std::function<void()> finish;
+};
+
+class RenderGraph {
+public:
+    ResourceHandle importTexture(const std::string& name, const TextureDesc& desc,
+                                 std::uint32_t physical);
+    // setup runs now (declaring resources); execute runs in execute(), if not culled.
+    void addPass(std::string name, std::function<void(PassBuilder&)> setup,
+                 std::function<void(PassContext&)> execute);
+    void markOutput(ResourceHandle resource);  // presented or exported: keeps its writer alive
+    void compile();                            // throws GraphError
+    void execute(ResourceAllocator& allocator, const ExecuteOptions& options = {});  // compiles if needed
+
+    const std::vector<PassReport>& reports() const { return reports_; }  // declaration order
+    // Compiled graph in DOT: passes boxes, resources ellipses, culled passes dashed grey with
+    // their reason, imports filled, outputs double-bordered.
+    std::string graphviz() const;
+
+    // Introspection (valid after compile()).
+    ResourceHandle find(const std::string& name) const;  // invalid handle when unknown
+    std::vector<std::string> executionOrder() const;      // surviving pass names
+    int physicalSlotCount() const { return slotCount_; }  // textures the aliasing plan needs
+    int physicalSlot(ResourceHandle resource) const;      // -1 for imports and unused transients
+
+private:
+    friend class PassBuilder;
+    friend class PassContext;
+
+    struct Pass {
+        std::string name;
+        std::function<void(PassContext&)> execute;
+        std::vector<int> reads{}, writes{};  // resource indices; writes include creates
+        bool sideEffect = false;
+    };
+    struct Resource {
+        std::string name;
+        TextureDesc desc;
+        bool imported = false, output = false;
+        int writer = -1;             // pass index
+        std::uint32_t physical = 0;  // an import's handle; a transient's while acquired
+        int firstUse = -1, lastUse = -1;  // positions in order_, from compile()
+        int slot = -1;                    // aliasing plan, from compile()
+    };
+
+    int addResource(Resource resource, int pass);
+    const Resource& resourceAt(ResourceHandle handle, int pass) const;
+    const Resource& declaredBy(ResourceHandle handle, int pass) const;  // PassContext's check
+    std::vector<int> topologicalOrder() const;                          // throws on cycles
+    std::vector<bool> cull();
+    void planLifetimes();
+
+    std::vector<Pass> passes_;
+    std::vector<Resource> resources_;
+    std::unordered_map<std::string, int> resourceByName_;
+    bool compiled_ = false;
+    std::vector<int> order_;  // surviving pass indices in execution order
+    std::vector<PassReport> reports_;
+    int slotCount_ = 0;
+};
+
+} // namespace engine

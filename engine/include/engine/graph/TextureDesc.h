@@ -1,0 +1,25 @@
+#pragma once
+// What a render-graph texture is, independent of GL: the graph compares descs to decide
+// which transients may share one physical texture, and the allocator turns a desc into a
+// real texture (GL formats are mapped by the GL allocator, not here).
+#include <string>
+
+namespace engine {
+
+enum class TextureFormat { RGBA8, SRGB8_A8, RGBA16F, RGBA32F, R8, R32F, RG32F, Depth16, Depth24, Depth32F };
+
+const char* toString(TextureFormat format);
+bool isDepthFormat(TextureFormat format);
+
+struct TextureDesc {
+    int width = 0, height = 0;
+    TextureFormat format = TextureFormat::RGBA8;
+    int layers = 1;     // array layers (for a cube: cube count, each of 6 faces)
+    bool cube = false;
+    bool operator==(const TextureDesc&) const = default;
+};
+
+// "2048x2048 Depth32F", plus " x4 layers" / " cube" when they apply: for messages and graphviz.
+std::string toString(const TextureDesc& desc);
+
+} // namespace engine

@@ -1,0 +1,194 @@
+// Declaring passes and resources (PassBuilder), and running the compiled graph (execute,
+// PassContext). The analysis itself lives in RenderGraphCompile.cpp.
+#include "engine/graph/RenderGraph.h"
+
+#include <algorithm>
+#include <chrono>
+
+namespace engine {
+
+namespace {
+std::string quoted(const std::string& name) { return "'" + name + "'"; }
+bool contains(const std::vector<int>& list, int value) {
+    return std::find(list.begin(), list.end(), value) != list.end();
+}
+} // namespace
+
+// ---- declaration ----------------------------------------------------------------------
+
+ResourceHandle RenderGraph::importTexture(const std::string& name, const TextureDesc& desc,
+                                          std::uint32_t physical) {
+    Resource resource{.name = name, .desc = desc, .imported = true, .physical = physical};
+    return {addResource(std::move(resource), -1)};
+}
+
+int RenderGraph::addResource(Resource resource, int pass) {
+    const std::string who = pass < 0 ? "import" : "pass " + quoted(passes_[pass].name);
+    if (resource.name.empty()) throw GraphError(who + ": resource with an empty name");
+    if (auto it = resourceByName_.find(resource.name); it != resourceByName_.end()) {
+        const Resource& old = resources_[it->second];
+        const std::string first = old.imported ? "imported" : "created by pass " + quoted(passes_[old.writer].name);
+        throw GraphError(who + ": resource " + quoted(resource.name) + " already " + first);
+    }
+    const TextureDesc& d = resource.desc;
+    if (d.width <= 0 || d.height <= 0 || d.layers < 1 || (d.cube && d.width != d.height))
+        throw GraphError(who + ": resource " + quoted(resource.name) + " has an invalid desc " + toString(d));
+    resource.writer = pass;
+    resourceByName_.emplace(resource.name, static_cast<int>(resources_.size()));
+    resources_.push_back(std::move(resource));
+    compiled_ = false;
+    return static_cast<int>(resources_.size()) - 1;
+}
+
+const RenderGraph::Resource& RenderGraph::resourceAt(ResourceHandle handle, int pass) const {
+    if (handle.index < 0 || handle.index >= static_cast<int>(resources_.size()))
+        throw GraphError("pass " + quoted(passes_[pass].name) + ": invalid resource handle " +
+                         std::to_string(handle.index));
+    return resources_[handle.index];
+}
+
+void RenderGraph::addPass(std::string name, std::function<void(PassBuilder&)> setup,
+                          std::function<void(PassContext&)> execute) {
+    for (const Pass& pass : passes_)
+        if (pass.name == name) throw GraphError("pass " + quoted(name) + " declared twice");
+    passes_.push_back(Pass{.name = std::move(name), .execute = std::move(execute)});
+    compiled_ = false;
+    const int index = static_cast<int>(passes_.size()) - 1;
+    const std::size_t resourceCount = resources_.size();
+    try {
+        PassBuilder builder(*this, index);
+        if (setup) setup(builder);
+    } catch (...) {
+        // Roll back so a caller that catches the error still holds a consistent graph.
+        for (std::size_t i = resourceCount; i < resources_.size(); ++i)
+            resourceByName_.erase(resources_[i].name);
+        resources_.resize(resourceCount);
+        for (Resource& resource : resources_)
+            if (resource.writer == index) resource.writer = -1;
+        passes_.pop_back();
+        throw;
+    }
+}
+
+void RenderGraph::markOutput(ResourceHandle resource) {
+    if (resource.index < 0 || resource.index >= static_cast<int>(resources_.size()))
+        throw GraphError("markOutput: invalid resource handle " + std::to_string(resource.index));
+    resources_[resource.index].output = true;
+    compiled_ = false;
+}
+
+ResourceHandle RenderGraph::find(const std::string& name) const {
+    auto it = resourceByName_.find(name);
+    return it == resourceByName_.end() ? ResourceHandle{} : ResourceHandle{it->second};
+}
+
+ResourceHandle PassBuilder::create(const std::string& name, const TextureDesc& desc) {
+    RenderGraph::Resource resource{.name = name, .desc = desc};
+    const int index = graph_.addResource(std::move(resource), pass_);
+    graph_.passes_[pass_].writes.push_back(index);
+    return {index};
+}
+
+ResourceHandle PassBuilder::read(ResourceHandle handle) {
+    const auto& resource = graph_.resourceAt(handle, pass_);
+    auto& pass = graph_.passes_[pass_];
+    // One writer per resource means there is no "before" version to read: it would be a
+    // self-cycle, so say so plainly instead.
+    if (contains(pass.writes, handle.index))
+        throw GraphError("pass " + quoted(pass.name) + " reads " + quoted(resource.name) +
+                         ", which it writes itself");
+    if (!contains(pass.reads, handle.index)) pass.reads.push_back(handle.index);
+    return handle;
+}
+
+ResourceHandle PassBuilder::read(const std::string& name) {
+    const ResourceHandle handle = graph_.find(name);
+    if (!handle.valid())
+        throw GraphError("pass " + quoted(graph_.passes_[pass_].name) + " reads unknown resource " +
+                         quoted(name));
+    return read(handle);
+}
+
+ResourceHandle PassBuilder::write(ResourceHandle handle) {
+    const auto& resource = graph_.resourceAt(handle, pass_);
+    auto& pass = graph_.passes_[pass_];
+    if (resource.writer == pass_) return handle;
+    if (resource.writer >= 0)
+        throw GraphError("pass " + quoted(pass.name) + " writes " + quoted(resource.name) +
+                         ", already written by pass " + quoted(graph_.passes_[resource.writer].name));
+    if (contains(pass.reads, handle.index))
+        throw GraphError("pass " + quoted(pass.name) + " writes " + quoted(resource.name) +
+                         ", which it reads itself");
+    graph_.resources_[handle.index].writer = pass_;
+    pass.writes.push_back(handle.index);
+    return handle;
+}
+
+void PassBuilder::sideEffect() { graph_.passes_[pass_].sideEffect = true; }
+
+// ---- execution --------------------------------------------------------------------------
+
+const RenderGraph::Resource& RenderGraph::declaredBy(ResourceHandle handle, int pass) const {
+    const Resource& resource = resourceAt(handle, pass);
+    const Pass& p = passes_[pass];
+    if (!contains(p.reads, handle.index) && !contains(p.writes, handle.index))
+        throw GraphError("pass " + quoted(p.name) + " uses " + quoted(resource.name) +
+                         " without declaring it in setup");
+    return resource;
+}
+
+std::uint32_t PassContext::texture(ResourceHandle resource) const {
+    return graph_.declaredBy(resource, pass_).physical;
+}
+
+const TextureDesc& PassContext::desc(ResourceHandle resource) const {
+    return graph_.declaredBy(resource, pass_).desc;
+}
+
+void PassContext::countDraw(std::uint64_t triangles) {
+    report_.draws += 1;
+    report_.triangles += triangles;
+}
+
+const std::string& PassContext::passName() const { return graph_.passes_[pass_].name; }
+
+void RenderGraph::execute(ResourceAllocator& allocator, const ExecuteOptions& options) {
+    if (!compiled_) compile();
+    std::vector<std::vector<int>> acquireAt(order_.size()), releaseAt(order_.size());
+    for (int r = 0; r < static_cast<int>(resources_.size()); ++r) {
+        if (resources_[r].imported || resources_[r].firstUse < 0) continue;
+        acquireAt[resources_[r].firstUse].push_back(r);
+        releaseAt[resources_[r].lastUse].push_back(r);
+    }
+    std::vector<int> held;  // acquired and not yet released: given back if a pass throws
+    auto release = [&](int r) {
+        allocator.release(resources_[r].physical, resources_[r].desc);
+        resources_[r].physical = 0;
+        held.erase(std::find(held.begin(), held.end(), r));
+    };
+    for (PassReport& report : reports_) report.wallMs = 0, report.draws = report.triangles = 0;
+    try {
+        for (std::size_t position = 0; position < order_.size(); ++position) {
+            for (int r : acquireAt[position]) {
+                resources_[r].physical = allocator.acquire(resources_[r].desc);
+                held.push_back(r);
+            }
+            const int index = order_[position];
+            PassContext context(*this, index, reports_[index]);
+            const auto start = std::chrono::steady_clock::now();
+            if (passes_[index].execute) passes_[index].execute(context);
+            if (options.timing) {
+                if (options.finish) options.finish();
+                const std::chrono::duration<double, std::milli> elapsed =
+                    std::chrono::steady_clock::now() - start;
+                reports_[index].wallMs = elapsed.count();
+            }
+            for (int r : releaseAt[position]) release(r);
+        }
+    } catch (...) {
+        while (!held.empty()) release(held.back());
+        throw;
+    }
+}
+
+} // namespace engine

@@ -1,0 +1,164 @@
+// Headless render tests of the lit pass (no plugin): a plane facing the camera, lit by one
+// light, against the shading formula of lit.frag evaluated here in double.
+//
+// Tolerance: 2/255 per channel. The image is 8-bit sRGB: quantization alone is 0.5/255, and
+// the GPU computes in float with an approximate linear->sRGB encode; measured on llvmpipe:
+// 0.34/255 (directional) and 0.61/255 (point), so 2/255 is headroom that still catches a
+// wrong term (dropping the specular or the 1/d^2 attenuation moves pixels by > 10/255).
+#include "../gl/GlTestContext.h"
+
+#include "engine/render/Renderer.h"
+#include "engine/scene/Scene.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <cmath>
+
+namespace {
+
+constexpr int kSize = 48;
+constexpr double kPi = 3.14159265358979323846;
+const glm::dvec3 kAlbedo{0.5, 0.4, 0.3};
+const glm::dvec3 kAmbient{0.05, 0.06, 0.07};
+
+double srgbEncode(double linear) {
+    linear = std::clamp(linear, 0.0, 1.0);
+    return linear <= 0.0031308 ? 12.92 * linear : 1.055 * std::pow(linear, 1.0 / 2.4) - 0.055;
+}
+
+// A 4x4 plane at z = 0 facing +Z, seen by a camera on the +Z axis.
+engine::Scene planeScene(float roughness) {
+    engine::Scene scene;
+    engine::Primitive plane;
+    plane.positions = {{-2, -2, 0}, {2, -2, 0}, {2, 2, 0}, {-2, 2, 0}};
+    plane.normals.assign(4, glm::vec3(0, 0, 1));
+    plane.indices = {0, 1, 2, 0, 2, 3};
+    plane.material = 0;
+    engine::Mesh mesh;
+    mesh.primitives.push_back(plane);
+    scene.meshes.push_back(mesh);
+    engine::Material material;
+    material.baseColorFactor = glm::vec4(glm::vec3(kAlbedo), 1.0f);
+    material.metallicFactor = 0.0f;
+    material.roughnessFactor = roughness;
+    scene.materials.push_back(material);
+    engine::Node node;
+    node.mesh = 0;
+    scene.nodes.push_back(node);
+    scene.roots = {0};
+    return scene;
+}
+
+void addLight(engine::Scene& scene, engine::Light::Type type, const glm::dvec3& position,
+              float intensity) {
+    engine::Light light;
+    light.type = type;
+    light.intensity = intensity;
+    scene.lights.push_back(light);
+    engine::Node node;
+    node.light = static_cast<int>(scene.lights.size()) - 1;
+    node.local = glm::translate(glm::dmat4(1.0), position);  // shines down -Z, at the plane
+    scene.nodes.push_back(node);
+    scene.roots.push_back(static_cast<int>(scene.nodes.size()) - 1);
+}
+
+engine::FrameCamera camera() {
+    engine::FrameCamera frame;
+    frame.width = frame.height = kSize;
+    frame.eyeToWorld = glm::translate(glm::dmat4(1.0), glm::dvec3(0, 0, 3));
+    frame.projection = glm::perspective(0.6, 1.0, 0.5, 10.0);
+    return frame;
+}
+
+// The world point on the plane z = 0 seen through the centre of pixel (x, y), y from top.
+glm::dvec3 surfacePoint(const engine::FrameCamera& frame, int x, int y) {
+    const glm::dvec2 ndc((x + 0.5) / kSize * 2.0 - 1.0, 1.0 - (y + 0.5) / kSize * 2.0);
+    const glm::dmat4 inverse = glm::inverse(frame.projection * glm::inverse(frame.eyeToWorld));
+    glm::dvec4 a = inverse * glm::dvec4(ndc, -1.0, 1.0), b = inverse * glm::dvec4(ndc, 1.0, 1.0);
+    const glm::dvec3 from = glm::dvec3(a) / a.w, to = glm::dvec3(b) / b.w;
+    return from + (to - from) * (from.z / (from.z - to.z));
+}
+
+// lit.frag for one light with shade = 1, metallic = 0, in double.
+glm::dvec3 expectedColor(const engine::Scene& scene, const glm::dvec3& point, double roughness) {
+    glm::dvec3 color = kAmbient * kAlbedo;
+    const glm::dvec3 normal(0, 0, 1), toEye = glm::normalize(glm::dvec3(0, 0, 3) - point);
+    const double alpha = std::max(roughness * roughness, 0.03);
+    const double shininess = std::min(2.0 / (alpha * alpha) - 2.0, 2048.0);
+    for (const engine::LightInstance& placed : scene.lightInstances) {
+        const engine::Light& light = scene.lights[placed.light];
+        glm::dvec3 toLight = -placed.direction();
+        double attenuation = 1.0;
+        if (light.type == engine::Light::Type::Point) {
+            const glm::dvec3 offset = placed.position() - point;
+            toLight = glm::normalize(offset);
+            attenuation = 1.0 / glm::dot(offset, offset);
+        }
+        const double nDotL = glm::dot(normal, toLight);
+        if (nDotL <= 0.0) continue;
+        const glm::dvec3 radiance = glm::dvec3(light.intensity * attenuation * nDotL);
+        const glm::dvec3 half = glm::normalize(toLight + toEye);
+        color += kAlbedo / kPi * radiance +
+                 0.04 * (shininess + 8.0) / (8.0 * kPi) *
+                     std::pow(std::max(glm::dot(normal, half), 0.0), shininess) * radiance;
+    }
+    return color;
+}
+
+class LitShading : public engine::test::GlTest {
+protected:
+    std::vector<std::uint8_t> render(engine::Scene& scene) {
+        scene.updateWorldTransforms();
+        engine::RendererConfig config;
+        config.ambient = glm::vec3(kAmbient);
+        engine::Renderer renderer(config, {});
+        renderer.setScene(scene);
+        engine::FrameRequest request;
+        request.camera = camera();
+        renderer.renderFrame(request);
+        return renderer.readColor();
+    }
+
+    // Every pixel against the formula: max error in 1/255 units.
+    double maxError(engine::Scene& scene, double roughness) {
+        const auto pixels = render(scene);
+        double worst = 0.0;
+        for (int y = 0; y < kSize; ++y)
+            for (int x = 0; x < kSize; ++x) {
+                const glm::dvec3 expected =
+                    expectedColor(scene, surfacePoint(camera(), x, y), roughness);
+                for (int c = 0; c < 3; ++c) {
+                    const double actual = pixels[(y * kSize + x) * 4 + c];
+                    worst = std::max(worst, std::abs(actual - 255.0 * srgbEncode(expected[c])));
+                }
+            }
+        RecordProperty("max_error_255", std::to_string(worst));
+        std::printf("max error: %.3f / 255\n", worst);
+        return worst;
+    }
+};
+
+} // namespace
+
+TEST_F(LitShading, DirectionalLightMatchesFormula) {
+    engine::Scene scene = planeScene(1.0f);
+    addLight(scene, engine::Light::Type::Directional, {0, 0, 5}, 1.5f);
+    EXPECT_LE(maxError(scene, 1.0), 2.0);
+}
+
+TEST_F(LitShading, PointLightWithAttenuationAndHighlightMatchesFormula) {
+    engine::Scene scene = planeScene(0.5f);
+    addLight(scene, engine::Light::Type::Point, {0.4, -0.3, 1.5}, 3.0f);
+    EXPECT_LE(maxError(scene, 0.5), 2.0);
+}
+
+TEST_F(LitShading, NoLightsRendersAmbientOnly) {
+    engine::Scene scene = planeScene(0.5f);
+    const auto pixels = render(scene);
+    const glm::dvec3 ambient = kAmbient * kAlbedo;
+    for (int c = 0; c < 3; ++c)
+        EXPECT_NEAR(pixels[(kSize / 2 * kSize + kSize / 2) * 4 + c], 255.0 * srgbEncode(ambient[c]), 1.0);
+    // The plane covers the whole view: every pixel has the same ambient colour.
+    for (int i = 0; i < kSize * kSize; ++i)
+        ASSERT_EQ(pixels[i * 4 + 1], pixels[(kSize / 2 * kSize + kSize / 2) * 4 + 1]) << "pixel " << i;
+}

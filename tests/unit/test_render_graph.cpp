@@ -1,0 +1,307 @@
+// Render graph core without GL: a fake allocator and passes that log what happens, so
+// ordering, culling, lifetimes and errors are checked as plain sequences of events.
+#include "engine/graph/RenderGraph.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+using namespace engine;
+
+namespace {
+
+const TextureDesc kColor{.width = 64, .height = 64, .format = TextureFormat::RGBA8};
+const TextureDesc kDepth{.width = 256, .height = 256, .format = TextureFormat::Depth32F};
+
+// Hands out fresh handles 1, 2, 3... (no pooling, so every acquire is visible in the log).
+struct FakeAllocator : ResourceAllocator {
+    std::vector<std::string>& log;
+    std::uint32_t next = 1;
+    explicit FakeAllocator(std::vector<std::string>& log) : log(log) {}
+    std::uint32_t acquire(const TextureDesc& desc) override {
+        log.push_back("acquire " + std::to_string(next) + " " + toString(desc));
+        return next++;
+    }
+    void release(std::uint32_t handle, const TextureDesc&) override {
+        log.push_back("release " + std::to_string(handle));
+    }
+};
+
+// Catches a GraphError and checks its message names every piece in `parts`.
+template <class F>
+void expectGraphError(F&& action, const std::vector<std::string>& parts) {
+    try {
+        action();
+        ADD_FAILURE() << "expected a GraphError";
+    } catch (const GraphError& error) {
+        const std::string message = error.what();
+        for (const std::string& part : parts)
+            EXPECT_NE(message.find(part), std::string::npos) << "'" << part << "' missing from: " << message;
+    }
+}
+
+const PassReport& reportOf(const RenderGraph& graph, const std::string& name) {
+    for (const PassReport& report : graph.reports())
+        if (report.name == name) return report;
+    throw std::runtime_error("no report for " + name);
+}
+
+struct GraphTest : ::testing::Test {
+    RenderGraph graph;
+    std::vector<std::string> log;
+    FakeAllocator allocator{log};
+    // An execute callback that logs the pass name.
+    std::function<void(PassContext&)> logged(const std::string& name) {
+        return [this, name](PassContext&) { log.push_back("exec " + name); };
+    }
+};
+
+} // namespace
+
+TEST_F(GraphTest, OrderRespectsDependenciesRegardlessOfDeclarationOrder) {
+    const auto target = graph.importTexture("target", kColor, 100);
+    const auto shadow = graph.importTexture("shadow_map", kDepth, 101);
+    graph.markOutput(target);
+    // Declared before the pass that writes its input: must still run after it.
+    graph.addPass("lit", [&](PassBuilder& b) { b.read(shadow); (void)b.write(target); }, logged("lit"));
+    graph.addPass("depth", [&](PassBuilder& b) { (void)b.write(shadow); }, logged("depth"));
+    graph.compile();
+    EXPECT_EQ(graph.executionOrder(), (std::vector<std::string>{"depth", "lit"}));
+    graph.execute(allocator);
+    EXPECT_EQ(log, (std::vector<std::string>{"exec depth", "exec lit"}));
+    EXPECT_EQ(reportOf(graph, "depth").order, 0);
+    EXPECT_EQ(reportOf(graph, "lit").order, 1);
+}
+
+TEST_F(GraphTest, TiesKeepDeclarationOrder) {
+    const auto target = graph.importTexture("target", kColor, 100);
+    graph.markOutput(target);
+    for (const char* name : {"c", "a", "b"})
+        graph.addPass(name, [&](PassBuilder& b) { (void)b.create(std::string(name) + "_out", kColor); b.sideEffect(); }, {});
+    graph.addPass("final", [&](PassBuilder& b) { b.read("a_out"); (void)b.write(target); }, {});
+    graph.compile();
+    EXPECT_EQ(graph.executionOrder(), (std::vector<std::string>{"c", "a", "b", "final"}));
+}
+
+TEST_F(GraphTest, PassNobodyReadsIsCulledWithReasonAndNeverExecuted) {
+    const auto target = graph.importTexture("target", kColor, 100);
+    graph.markOutput(target);
+    ResourceHandle light1;
+    graph.addPass("shadow_light1", [&](PassBuilder& b) { light1 = b.create("shadow_map_light1", kDepth); }, logged("shadow_light1"));
+    graph.addPass("shadow_light2", [&](PassBuilder& b) { (void)b.create("shadow_map_light2", kDepth); }, logged("shadow_light2"));
+    graph.addPass("lit", [&](PassBuilder& b) { b.read(light1); (void)b.write(target); }, logged("lit"));
+    graph.addPass("idle", [](PassBuilder&) {}, logged("idle"));
+    graph.execute(allocator);
+
+    EXPECT_EQ(log, (std::vector<std::string>{"acquire 1 256x256 Depth32F", "exec shadow_light1",
+                                             "exec lit", "release 1"}));
+    const PassReport& culled = reportOf(graph, "shadow_light2");
+    EXPECT_TRUE(culled.culled);
+    EXPECT_EQ(culled.order, -1);
+    EXPECT_EQ(culled.cullReason, "no surviving pass reads 'shadow_map_light2'");
+    EXPECT_EQ(reportOf(graph, "idle").cullReason, "writes nothing");
+    EXPECT_FALSE(reportOf(graph, "lit").culled);
+    EXPECT_EQ(graph.reports().size(), 4u);  // culled passes are reported too
+}
+
+TEST_F(GraphTest, ChainWhoseEndIsCulledIsCulledEntirely) {
+    graph.addPass("a", [](PassBuilder& b) { (void)b.create("a_out", kColor); }, logged("a"));
+    graph.addPass("b", [](PassBuilder& b) { b.read("a_out"); (void)b.create("b_out", kColor); }, logged("b"));
+    graph.addPass("c", [](PassBuilder& b) { b.read("b_out"); (void)b.create("c_out", kColor); }, logged("c"));
+    graph.execute(allocator);
+    EXPECT_TRUE(log.empty());  // nothing executed, no transient acquired
+    for (const char* name : {"a", "b", "c"}) EXPECT_TRUE(reportOf(graph, name).culled) << name;
+    EXPECT_EQ(reportOf(graph, "a").cullReason, "no surviving pass reads 'a_out' (culled readers: 'b')");
+    EXPECT_EQ(graph.physicalSlotCount(), 0);
+}
+
+TEST_F(GraphTest, SideEffectPassSurvivesWithItsInputs) {
+    graph.addPass("render", [](PassBuilder& b) { (void)b.create("color", kColor); }, logged("render"));
+    graph.addPass("readback", [](PassBuilder& b) { b.read("color"); b.sideEffect(); }, logged("readback"));
+    graph.execute(allocator);
+    EXPECT_EQ(log, (std::vector<std::string>{"acquire 1 64x64 RGBA8", "exec render", "exec readback",
+                                             "release 1"}));
+}
+
+TEST_F(GraphTest, CycleIsRejectedNamingThePasses) {
+    // Only imports can close a cycle: "first" reads an import that "second" writes later.
+    const auto history = graph.importTexture("history", kColor, 100);
+    graph.addPass("first", [&](PassBuilder& b) { b.read(history); (void)b.create("tmp", kColor); }, {});
+    graph.addPass("second", [&](PassBuilder& b) { b.read("tmp"); (void)b.write(history); b.sideEffect(); }, {});
+    graph.addPass("unrelated", [](PassBuilder& b) { b.sideEffect(); }, {});
+    expectGraphError([&] { graph.compile(); }, {"cycle", "'first'", "'second'", "'tmp'", "'history'"});
+    try {
+        graph.compile();
+    } catch (const GraphError& error) {
+        EXPECT_EQ(std::string(error.what()).find("unrelated"), std::string::npos) << error.what();
+    }
+}
+
+TEST_F(GraphTest, SecondWriterIsRejectedNamingResourceAndBothPasses) {
+    const auto target = graph.importTexture("target", kColor, 100);
+    graph.addPass("one", [&](PassBuilder& b) { (void)b.write(target); }, {});
+    expectGraphError([&] { graph.addPass("two", [&](PassBuilder& b) { (void)b.write(target); }, {}); },
+                     {"'target'", "'one'", "'two'"});
+    ResourceHandle made;
+    graph.addPass("maker", [&](PassBuilder& b) { made = b.create("made", kColor); }, {});
+    expectGraphError([&] { graph.addPass("thief", [&](PassBuilder& b) { (void)b.write(made); }, {}); },
+                     {"'made'", "'maker'", "'thief'"});
+}
+
+TEST_F(GraphTest, DuplicateNameIsRejectedNamingBothPasses) {
+    graph.addPass("first", [](PassBuilder& b) { (void)b.create("shared", kColor); }, {});
+    expectGraphError([&] { graph.addPass("second", [](PassBuilder& b) { (void)b.create("shared", kColor); }, {}); },
+                     {"'shared'", "'first'", "'second'"});
+    expectGraphError([&] { graph.importTexture("shared", kColor, 1); }, {"'shared'", "'first'"});
+    expectGraphError([&] { graph.addPass("first", {}, {}); }, {"'first'", "twice"});
+}
+
+TEST_F(GraphTest, UnknownNameReadIsRejectedNamingPassAndResource) {
+    expectGraphError([&] { graph.addPass("lit", [](PassBuilder& b) { b.read("shadow_map_sun"); }, {}); },
+                     {"'lit'", "'shadow_map_sun'"});
+}
+
+TEST_F(GraphTest, FailedSetupLeavesGraphUsable) {
+    const auto target = graph.importTexture("target", kColor, 100);
+    auto failing = [&](PassBuilder& b) {
+        (void)b.create("half_done", kColor);
+        (void)b.write(target);
+        b.read("missing");
+    };
+    EXPECT_THROW(graph.addPass("broken", failing, {}), GraphError);
+    EXPECT_FALSE(graph.find("half_done").valid());
+    // The rollback freed both the name and the import's writer.
+    graph.addPass("broken", [&](PassBuilder& b) { (void)b.create("half_done", kColor); (void)b.write(target); }, {});
+    graph.markOutput(target);
+    graph.compile();
+    EXPECT_EQ(graph.executionOrder(), (std::vector<std::string>{"broken"}));
+}
+
+TEST_F(GraphTest, ReadingOwnWriteIsRejected) {
+    expectGraphError([&] {
+        graph.addPass("loop", [](PassBuilder& b) { b.read(b.create("self", kColor)); }, {});
+    }, {"'loop'", "'self'"});
+    const auto target = graph.importTexture("target", kColor, 100);
+    expectGraphError([&] {
+        graph.addPass("rmw", [&](PassBuilder& b) { b.read(target); (void)b.write(target); }, {});
+    }, {"'rmw'", "'target'"});
+}
+
+TEST_F(GraphTest, ImportedResourceReadWithoutWriterIsValid) {
+    const auto environment = graph.importTexture("environment", kColor, 42);
+    const auto target = graph.importTexture("target", kColor, 100);
+    graph.markOutput(target);
+    std::uint32_t seen = 0, written = 0;
+    graph.addPass("sky", [&](PassBuilder& b) { b.read(environment); (void)b.write(target); },
+                  [&](PassContext& context) {
+                      seen = context.texture(environment);
+                      written = context.texture(target);
+                      EXPECT_EQ(context.desc(environment), kColor);
+                  });
+    graph.execute(allocator);
+    EXPECT_EQ(seen, 42u);
+    EXPECT_EQ(written, 100u);
+    EXPECT_TRUE(log.empty());  // imports are never acquired
+    EXPECT_EQ(graph.physicalSlot(environment), -1);
+}
+
+TEST_F(GraphTest, UndeclaredTextureAccessIsRejected) {
+    const auto other = graph.importTexture("other", kColor, 7);
+    graph.addPass("sneaky", [](PassBuilder& b) { b.sideEffect(); },
+                  [&](PassContext& context) { (void)context.texture(other); });
+    expectGraphError([&] { graph.execute(allocator); }, {"'sneaky'", "'other'"});
+}
+
+// a -> b -> c in a chain: a_out dies after b, so c_out (same desc) can take its slot, while
+// b_out overlaps both. A depth texture never shares with a color one.
+TEST_F(GraphTest, DisjointEqualDescTransientsShareOneSlotOverlappingDoNot) {
+    graph.addPass("a", [](PassBuilder& b) { (void)b.create("a_out", kColor); }, {});
+    graph.addPass("b", [](PassBuilder& b) { b.read("a_out"); (void)b.create("b_out", kColor); }, {});
+    graph.addPass("c", [](PassBuilder& b) { b.read("b_out"); (void)b.create("c_out", kColor); }, {});
+    graph.addPass("d", [](PassBuilder& b) { b.read("c_out"); (void)b.create("d_depth", kDepth); }, {});
+    graph.addPass("e", [](PassBuilder& b) { b.read("d_depth"); b.sideEffect(); }, {});
+    graph.compile();
+    const int a = graph.physicalSlot(graph.find("a_out")), bb = graph.physicalSlot(graph.find("b_out"));
+    const int c = graph.physicalSlot(graph.find("c_out")), d = graph.physicalSlot(graph.find("d_depth"));
+    EXPECT_EQ(a, c);
+    EXPECT_NE(a, bb);
+    EXPECT_NE(d, a);
+    EXPECT_NE(d, bb);
+    EXPECT_EQ(graph.physicalSlotCount(), 3);
+}
+
+TEST_F(GraphTest, ExecuteAcquiresBeforeFirstUserAndReleasesAfterLastUser) {
+    const auto target = graph.importTexture("target", kColor, 100);
+    graph.markOutput(target);
+    graph.addPass("shadow", [](PassBuilder& b) { (void)b.create("shadow_map", kDepth); }, logged("shadow"));
+    graph.addPass("gbuffer", [](PassBuilder& b) { (void)b.create("albedo", kColor); }, logged("gbuffer"));
+    graph.addPass("unused", [](PassBuilder& b) { (void)b.create("junk", kColor); }, logged("unused"));
+    graph.addPass("light", [](PassBuilder& b) { b.read("shadow_map"); b.read("albedo"); (void)b.create("hdr", kColor); }, logged("light"));
+    graph.addPass("tonemap", [&](PassBuilder& b) { b.read("hdr"); (void)b.write(target); }, logged("tonemap"));
+    graph.execute(allocator);
+    EXPECT_EQ(log, (std::vector<std::string>{
+                       "acquire 1 256x256 Depth32F", "exec shadow",
+                       "acquire 2 64x64 RGBA8", "exec gbuffer",
+                       "acquire 3 64x64 RGBA8", "exec light", "release 1", "release 2",
+                       "exec tonemap", "release 3"}));
+    EXPECT_TRUE(reportOf(graph, "unused").culled);
+}
+
+TEST_F(GraphTest, ThrowingPassReleasesWhatWasAcquired) {
+    graph.addPass("make", [](PassBuilder& b) { (void)b.create("tmp", kColor); }, logged("make"));
+    graph.addPass("boom", [](PassBuilder& b) { b.read("tmp"); b.sideEffect(); },
+                  [](PassContext&) { throw std::runtime_error("boom"); });
+    EXPECT_THROW(graph.execute(allocator), std::runtime_error);
+    EXPECT_EQ(log, (std::vector<std::string>{"acquire 1 64x64 RGBA8", "exec make", "release 1"}));
+}
+
+TEST_F(GraphTest, DrawsAndTrianglesAreCountedPerPass) {
+    graph.addPass("one", [](PassBuilder& b) { b.sideEffect(); }, [](PassContext& context) {
+        context.countDraw(12);
+        context.countDraw(30);
+    });
+    graph.addPass("two", [](PassBuilder& b) { b.sideEffect(); }, [](PassContext& context) { context.countDraw(5); });
+    for (int frame = 0; frame < 2; ++frame) graph.execute(allocator);  // counts are per execute
+    EXPECT_EQ(reportOf(graph, "one").draws, 2u);
+    EXPECT_EQ(reportOf(graph, "one").triangles, 42u);
+    EXPECT_EQ(reportOf(graph, "two").draws, 1u);
+    EXPECT_EQ(reportOf(graph, "two").triangles, 5u);
+}
+
+TEST_F(GraphTest, TimingCallsFinishAfterEachPass) {
+    graph.addPass("one", [](PassBuilder& b) { b.sideEffect(); }, logged("one"));
+    graph.addPass("two", [](PassBuilder& b) { b.sideEffect(); }, logged("two"));
+    ExecuteOptions options{.timing = true, .finish = [&] { log.push_back("finish"); }};
+    graph.execute(allocator, options);
+    EXPECT_EQ(log, (std::vector<std::string>{"exec one", "finish", "exec two", "finish"}));
+    EXPECT_GE(reportOf(graph, "one").wallMs, 0.0);
+    log.clear();
+    graph.execute(allocator, ExecuteOptions{.timing = false, .finish = options.finish});
+    EXPECT_EQ(log, (std::vector<std::string>{"exec one", "exec two"}));  // no finish without timing
+}
+
+TEST_F(GraphTest, GraphvizMarksCulledPassesDashedWithReason) {
+    const auto target = graph.importTexture("target", kColor, 100);
+    graph.markOutput(target);
+    graph.addPass("shadow_light2", [](PassBuilder& b) { (void)b.create("shadow_map_light2", kDepth); }, {});
+    graph.addPass("lit \"main\"", [&](PassBuilder& b) { (void)b.write(target); }, {});
+    graph.compile();
+    const std::string dot = graph.graphviz();
+    EXPECT_EQ(dot.rfind("digraph", 0), 0u) << dot;
+    const std::size_t culledLine = dot.find("shadow_light2\\nculled: no surviving pass reads 'shadow_map_light2'");
+    ASSERT_NE(culledLine, std::string::npos) << dot;
+    const std::size_t lineStart = dot.rfind('\n', culledLine);
+    EXPECT_NE(dot.substr(lineStart, culledLine - lineStart).find("style=dashed"), std::string::npos) << dot;
+    EXPECT_NE(dot.find("lit \\\"main\\\""), std::string::npos) << dot;  // quotes escaped
+    EXPECT_NE(dot.find("shape=ellipse"), std::string::npos) << dot;
+    EXPECT_NE(dot.find("shape=box"), std::string::npos) << dot;
+}
+
+TEST(TextureDesc, FormatsAndDescribe) {
+    EXPECT_TRUE(isDepthFormat(TextureFormat::Depth24));
+    EXPECT_FALSE(isDepthFormat(TextureFormat::R32F));
+    EXPECT_STREQ(toString(TextureFormat::SRGB8_A8), "SRGB8_A8");
+    EXPECT_EQ(toString(TextureDesc{.width = 512, .height = 512, .format = TextureFormat::Depth24, .layers = 1, .cube = true}),
+              "512x512 Depth24 cube");
+}
