@@ -28,6 +28,7 @@ uniform float uRoughness;
 uniform vec3 uEmissive;
 uniform bool uHasBaseColorTexture;
 uniform float uAlphaCutoff;  // < 0: no alpha test
+uniform bool uReceiveShadows;  // node extras "receive_shadows": false opts a mesh out
 layout(binding = 0) uniform sampler2D uBaseColorTexture;
 
 // 0: shaded color; 1: the visibility hook's shade of light uMaskLight as gray.
@@ -40,6 +41,10 @@ in vec2 vTexcoord;
 out vec4 outColor;
 
 vec2 lightVisibility(int lightSlot, vec3 eyePosition, vec3 eyeNormal);
+
+vec2 visibilityOf(int lightSlot, vec3 eyePosition, vec3 eyeNormal) {
+    return uReceiveShadows ? lightVisibility(lightSlot, eyePosition, eyeNormal) : vec2(1.0, 0.0);
+}
 
 float rangeWindow(float distance, float range) {
     if (range <= 0.0) return 1.0;
@@ -58,7 +63,7 @@ void main() {
     vec3 V = normalize(-vEyePosition);
 
     if (uOutputMode == 1) {
-        outColor = vec4(vec3(lightVisibility(uMaskLight, vEyePosition, N).x), 1.0);
+        outColor = vec4(vec3(visibilityOf(uMaskLight, vEyePosition, N).x), 1.0);
         return;
     }
 
@@ -96,7 +101,7 @@ void main() {
         vec3 specular = f0 * ((shininess + 8.0) / (8.0 * PI)) *
                         pow(max(dot(N, H), 0.0), shininess) * radiance;
 
-        vec2 visibility = lightVisibility(i, vEyePosition, N);
+        vec2 visibility = visibilityOf(i, vEyePosition, N);
         float shade = visibility.x;
         float diffuseShade = visibility.y + (1.0 - visibility.y) * shade;
         color += diffuseShade * diffuse + shade * specular;

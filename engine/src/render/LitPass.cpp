@@ -93,6 +93,7 @@ void LitPass::drawScene(const Frame& frame, const gl::Program& program, PassCont
         const glm::dmat3 normalMatrix = glm::transpose(glm::inverse(glm::dmat3(modelView)));
         program.set("uModelView", glm::mat4(modelView));
         program.set("uNormalMatrix", glm::mat3(normalMatrix));
+        program.set("uReceiveShadows", instance.receiveShadows ? 1 : 0);
         // A mirroring transform turns counter-clockwise triangles clockwise on screen.
         glFrontFace(glm::determinant(glm::dmat3(instance.world)) < 0.0 ? GL_CW : GL_CCW);
         for (const SceneGpu::Primitive& primitive : frame.gpu().primitives(instance.mesh)) {

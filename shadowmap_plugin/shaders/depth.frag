@@ -1,0 +1,3 @@
+// Depth pass: only depth is written (the framebuffer has no color attachment).
+void main() {
+}

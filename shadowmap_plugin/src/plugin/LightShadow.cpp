@@ -1,0 +1,54 @@
+#include "plugin/LightShadow.h"
+
+#include <epoxy/gl.h>
+
+namespace shadowmap {
+
+void LightShadow::ensureMap() {
+    const bool cube = type == engine::Light::Type::Point;
+    const GLenum format = glInternalFormat(settings.depthFormat);
+    if (!map.id() || map.width() != settings.resolution ||
+        static_cast<GLenum>(map.internalFormat()) != format || (map.target() == GL_TEXTURE_CUBE_MAP) != cube) {
+        map = cube ? engine::gl::Texture::createCube(format, settings.resolution)
+                   : engine::gl::Texture::create2D(format, settings.resolution, settings.resolution);
+        map.setParameter(GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+        map.setParameter(GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+        map.setParameter(GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+        map.setParameter(GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+        map.setParameter(GL_TEXTURE_WRAP_R, GL_CLAMP_TO_EDGE);
+    }
+    // GL_LINEAR on a depth-compare texture is 2x2 percentage-closer filtering.
+    const GLint filter = settings.filter == Filter::Pcf ? GL_LINEAR : GL_NEAREST;
+    map.setParameter(GL_TEXTURE_MIN_FILTER, filter);
+    map.setParameter(GL_TEXTURE_MAG_FILTER, filter);
+}
+
+nlohmann::json LightShadow::stats() const {
+    nlohmann::json out{{"light", name},
+                       {"slot", slot},
+                       {"variant", toString(settings.variant)},
+                       {"resolution", settings.resolution},
+                       {"depth_format", toString(settings.depthFormat)},
+                       {"filter", toString(settings.filter)},
+                       {"polygon_offset", {settings.effectivePolygonOffset().x,
+                                           settings.effectivePolygonOffset().y}},
+                       {"map", frame.kind == MapKind::None ? "none"
+                               : frame.kind == MapKind::Cube ? "cube"
+                                                             : "2d"},
+                       {"faces_rendered", frame.facesRendered},
+                       {"faces_skipped", frame.facesSkipped},
+                       {"draws", frame.draws},
+                       {"triangles", frame.triangles},
+                       {"casters_culled", frame.castersCulled}};
+    if (!frame.skipReason.empty()) out["skip_reason"] = frame.skipReason;
+    if (frame.kind == MapKind::Map2D) {
+        out["near"] = frame.view.nearPlane;
+        out["far"] = frame.view.farPlane;
+    } else if (frame.kind == MapKind::Cube) {
+        out["near"] = frame.pointViews.nearPlane;
+        out["far"] = frame.pointViews.farPlane;
+    }
+    return out;
+}
+
+} // namespace shadowmap

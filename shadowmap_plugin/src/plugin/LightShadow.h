@@ -1,0 +1,43 @@
+#pragma once
+// One light's shadow state across frames: its resolved settings, its depth map (a 2D
+// texture for spot and directional lights, a cube for point lights, owned here so it can
+// outlive a frame), and what the last frame did with it.
+#include "math/LightFrustum.h"
+#include "plugin/ShadowSettings.h"
+
+#include "engine/gl/Texture.h"
+#include "engine/scene/Scene.h"
+
+#include <nlohmann/json.hpp>
+
+#include <string>
+
+namespace shadowmap {
+
+enum class MapKind { None = 0, Map2D = 1, Cube = 2 };
+
+struct LightShadowFrame {
+    MapKind kind = MapKind::None;
+    int samplerIndex = -1;       // index into the hook's sampler array of its kind
+    LightView view;              // spot / directional
+    PointLightViews pointViews;  // point
+    std::string skipReason;      // why no map this frame (variant none, empty frustum...)
+    int facesRendered = 0, facesSkipped = 0;
+    std::uint64_t draws = 0, triangles = 0, castersCulled = 0;
+};
+
+struct LightShadow {
+    std::string name;
+    int slot = -1;  // index into Scene::lightInstances (the lit pass's light slot)
+    engine::Light::Type type = engine::Light::Type::Point;
+    ShadowSettings settings;
+    engine::gl::Texture map;
+    LightShadowFrame frame;
+
+    // (Re)creates the map when size, format, filter or kind changed, with the comparison
+    // state the visibility hook relies on (GL_COMPARE_REF_TO_TEXTURE, GL_LEQUAL).
+    void ensureMap();
+    nlohmann::json stats() const;
+};
+
+} // namespace shadowmap

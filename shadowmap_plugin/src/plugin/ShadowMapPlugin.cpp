@@ -1,0 +1,260 @@
+#include "plugin/ShadowMapPlugin.h"
+
+#include "math/FrustumCull.h"
+#include "math/LightFrustum.h"
+#include "math/Texgen.h"
+
+#include "engine/render/Frame.h"
+#include "engine/scene/Scene.h"
+#include "engine/util/Error.h"
+
+#include <epoxy/gl.h>
+
+#include <iostream>
+
+namespace shadowmap {
+
+namespace shaders {
+extern const char visibility_glsl[];
+}
+
+namespace {
+
+constexpr int kFirstUnit = engine::kFirstPluginTextureUnit;
+
+std::string lightName(const engine::Scene& scene, const engine::LightInstance& placed) {
+    const std::string& name = scene.lights[placed.light].name;
+    return name.empty() ? scene.nodes[placed.node].name : name;
+}
+
+// Receivers the camera can see (only they need shadows this frame) and every caster.
+ShadowBounds frameBounds(const engine::Frame& frame) {
+    const glm::dmat4 cameraViewProjection =
+        frame.camera().projection * glm::inverse(frame.camera().eyeToWorld);
+    ShadowBounds bounds;
+    for (const engine::MeshInstance& instance : frame.scene().meshInstances) {
+        if (instance.castShadows) bounds.casters.push_back(instance.worldBounds);
+        if (instance.receiveShadows && boxIntersectsFrustum(cameraViewProjection, instance.worldBounds))
+            bounds.receivers.push_back(instance.worldBounds);
+    }
+    return bounds;
+}
+
+engine::gl::Texture unusedDepthTexture(bool cube) {
+    engine::gl::Texture texture = cube ? engine::gl::Texture::createCube(GL_DEPTH_COMPONENT16, 1)
+                                       : engine::gl::Texture::create2D(GL_DEPTH_COMPONENT16, 1, 1);
+    texture.setParameter(GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+    texture.setParameter(GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    texture.setParameter(GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    return texture;
+}
+
+} // namespace
+
+bool ShadowMapPlugin::setLightOption(const std::string& light, const std::string& value) {
+    variantOverrides_[light] = parseVariant(value, "--light " + light + "=" + value, "variant");
+    return true;
+}
+
+void ShadowMapPlugin::prepareScene(const engine::Scene& scene) {
+    const std::string source = scene.sourcePath;
+    GLint maxTextureSize = 0;
+    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxTextureSize);
+    for (const auto& [name, variant] : variantOverrides_)
+        if (scene.findLightInstance(name) < 0)
+            engine::throwInputError(source, "--light " + name, "no light of that name in the scene");
+
+    lights_.clear();
+    warned_.clear();
+    for (std::size_t slot = 0; slot < scene.lightInstances.size(); ++slot) {
+        if (static_cast<int>(slot) == engine::kMaxLights) break;
+        const engine::LightInstance& placed = scene.lightInstances[slot];
+        const engine::Light& light = scene.lights[placed.light];
+        LightShadow shadow;
+        shadow.name = lightName(scene, placed);
+        shadow.slot = static_cast<int>(slot);
+        shadow.type = light.type;
+        shadow.settings = defaults_;
+        const std::string object = "light \"" + shadow.name + "\"";
+        if (light.extras.is_object() && light.extras.contains("shadow"))
+            applySettings(shadow.settings, light.extras["shadow"], source, object + ": extras.shadow");
+        if (auto found = variantOverrides_.find(shadow.name); found != variantOverrides_.end())
+            shadow.settings.variant = found->second;
+        if (shadow.settings.variant == Variant::Woo || shadow.settings.variant == Variant::Backface)
+            engine::throwInputError(source, object,
+                                    std::string("shadow variant \"") + toString(shadow.settings.variant) +
+                                        "\" is not available in this build yet (use standard or none)");
+        checkLimits(shadow.settings, maxTextureSize, source, object + ": extras.shadow");
+        lights_.push_back(std::move(shadow));
+    }
+}
+
+void ShadowMapPlugin::warnOnce(const LightShadow& light, const std::string& message) {
+    const std::string line = "shadowmap: light \"" + light.name + "\": " + message;
+    if (warned_.insert(line).second) std::cerr << "warning: " << line << "\n";
+}
+
+bool ShadowMapPlugin::planLight(LightShadow& light, const engine::Frame& frame,
+                                const ShadowBounds& bounds, int& used2D, int& usedCube) {
+    LightShadowFrame& plan = light.frame;
+    plan = {};
+    const engine::Scene& scene = frame.scene();
+    const engine::LightInstance& placed = scene.lightInstances[light.slot];
+    const engine::Light& source = scene.lights[placed.light];
+    if (light.settings.variant == Variant::None) {
+        plan.skipReason = "variant none";
+        return false;
+    }
+    if (source.intensity <= 0.0f || source.color == glm::vec3(0.0f)) {
+        plan.skipReason = "the light emits nothing";
+        return false;
+    }
+    bool valid = false, empty = true;
+    std::string invalidReason;
+    if (light.type == engine::Light::Type::Point) {
+        plan.pointViews = fitPointLight(placed, source, bounds);
+        valid = plan.pointViews.valid;
+        invalidReason = plan.pointViews.invalidReason;
+        for (const LightView& face : plan.pointViews.faces) empty = empty && face.empty;
+    } else {
+        plan.view = light.type == engine::Light::Type::Spot ? fitSpotLight(placed, source, bounds)
+                                                            : fitDirectionalLight(placed, source, bounds);
+        valid = plan.view.valid;
+        invalidReason = plan.view.invalidReason;
+        empty = plan.view.empty;
+    }
+    if (!valid) {
+        // Never upload NaN: a degenerate light loses its shadow, loudly.
+        plan.skipReason = "no shadow: " + invalidReason;
+        warnOnce(light, plan.skipReason);
+        return false;
+    }
+    if (empty) {
+        plan.skipReason = "no visible receiver in the light's frustum";
+        return false;
+    }
+    const bool cube = light.type == engine::Light::Type::Point;
+    int& used = cube ? usedCube : used2D;
+    if (used == (cube ? kMaxCubeMaps : kMax2DMaps)) {
+        plan.skipReason = "too many shadowed lights of this kind (limit " +
+                          std::to_string(cube ? kMaxCubeMaps : kMax2DMaps) + ")";
+        warnOnce(light, plan.skipReason);
+        return false;
+    }
+    plan.kind = cube ? MapKind::Cube : MapKind::Map2D;
+    plan.samplerIndex = used++;
+    return true;
+}
+
+void ShadowMapPlugin::addDepthPass(LightShadow& light, engine::Frame& frame,
+                                   engine::ResourceHandle map) {
+    frame.graph().addPass(
+        "shadow_" + light.name, [map](engine::PassBuilder& builder) { (void)builder.write(map); },
+        [this, &light, &frame](engine::PassContext& context) {
+            LightShadowFrame& plan = light.frame;
+            const auto add = [&plan](const DepthDrawCounts& counts) {
+                plan.draws += counts.draws;
+                plan.triangles += counts.triangles;
+                plan.castersCulled += counts.castersCulled;
+            };
+            if (plan.kind == MapKind::Map2D) {
+                add(depth_->render(frame, context, light.map.id(), -1, light.settings.resolution,
+                                   plan.view.viewProjection(), light.settings));
+                plan.facesRendered = 1;
+                return;
+            }
+            for (int face = 0; face < 6; ++face) {
+                const LightView& view = plan.pointViews.faces[face];
+                // A face that sees no receiver is cleared (lookups there must read "far")
+                // but draws nothing.
+                add(depth_->render(frame, context, light.map.id(), face, light.settings.resolution,
+                                   view.viewProjection(), light.settings, !view.empty));
+                (view.empty ? plan.facesSkipped : plan.facesRendered) += 1;
+            }
+        });
+}
+
+engine::LightVisibilityHook ShadowMapPlugin::makeHook(const engine::Frame& frame) {
+    const glm::dmat4& eyeToWorld = frame.camera().eyeToWorld;  // V
+    const glm::dmat4 view = glm::inverse(eyeToWorld);          // V^-1
+    std::vector<glm::vec4> params(engine::kMaxLights, glm::vec4(0.0f));
+    std::vector<glm::mat4> eyePlanes(engine::kMaxLights, glm::mat4(0.0f));
+    std::vector<glm::vec4> pointLight(engine::kMaxLights, glm::vec4(0.0f));
+    std::vector<float> pointFar(engine::kMaxLights, 1.0f);
+    std::vector<unsigned> maps2D(kMax2DMaps, unused2D_.id()), mapsCube(kMaxCubeMaps, unusedCube_.id());
+
+    for (const LightShadow& light : lights_) {
+        const LightShadowFrame& plan = light.frame;
+        if (plan.kind == MapKind::None) continue;
+        const bool outsideLit = light.type == engine::Light::Type::Directional;
+        params[light.slot] = glm::vec4(static_cast<float>(plan.kind), static_cast<float>(plan.samplerIndex),
+                                       light.settings.dimming, outsideLit ? 1.0f : 0.0f);
+        if (plan.kind == MapKind::Map2D) {
+            // Ee = Epo * V with Epo = S * P_light * L^-1, composed in double (DESIGN.md).
+            eyePlanes[light.slot] = glm::mat4(eyePlanesForCamera(plan.view.texgenPlanes(), eyeToWorld));
+            maps2D[plan.samplerIndex] = light.map.id();
+        } else {
+            const glm::dvec3 lightPosition =
+                frame.scene().lightInstances[light.slot].position();
+            pointLight[light.slot] = glm::vec4(glm::vec3(view * glm::dvec4(lightPosition, 1.0)),
+                                               static_cast<float>(plan.pointViews.nearPlane));
+            pointFar[light.slot] = static_cast<float>(plan.pointViews.farPlane);
+            mapsCube[plan.samplerIndex] = light.map.id();
+        }
+    }
+
+    engine::LightVisibilityHook hook;
+    hook.owner = name();
+    hook.glsl = "#define SHADOW_FIRST_UNIT " + std::to_string(kFirstUnit) +
+                "\n#define MAX_SHADOW_2D " + std::to_string(kMax2DMaps) +
+                "\n#define MAX_SHADOW_CUBE " + std::to_string(kMaxCubeMaps) + "\n" +
+                shaders::visibility_glsl;
+    const glm::mat3 eyeToWorldRotation = glm::mat3(glm::dmat3(eyeToWorld));
+    hook.bind = [=](const engine::gl::Program& program, const engine::PassContext&) {
+        program.set("uShadowParams", params);
+        program.set("uShadowEyePlanes", eyePlanes);
+        program.set("uShadowPointLight", pointLight);
+        program.set("uShadowPointFar", pointFar);
+        program.set("uShadowEyeToWorld", eyeToWorldRotation);
+        // Every sampler of the arrays gets a depth texture of its type, so no two sampler
+        // types ever share a unit (a draw-time error in GL).
+        for (int i = 0; i < kMax2DMaps; ++i) glBindTextureUnit(kFirstUnit + i, maps2D[i]);
+        for (int i = 0; i < kMaxCubeMaps; ++i)
+            glBindTextureUnit(kFirstUnit + kMax2DMaps + i, mapsCube[i]);
+    };
+    return hook;
+}
+
+void ShadowMapPlugin::addPasses(engine::Frame& frame) {
+    if (!depth_) {
+        depth_ = std::make_unique<DepthRenderer>();
+        unused2D_ = unusedDepthTexture(false);
+        unusedCube_ = unusedDepthTexture(true);
+        glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);  // PCF across cube face edges
+    }
+    const ShadowBounds bounds = frameBounds(frame);
+    int used2D = 0, usedCube = 0;
+    std::vector<engine::ResourceHandle> maps;
+    for (LightShadow& light : lights_) {
+        if (!planLight(light, frame, bounds, used2D, usedCube)) continue;
+        light.ensureMap();
+        const int size = light.settings.resolution;
+        const engine::TextureDesc desc{size, size, graphFormat(light.settings.depthFormat), 1,
+                                       light.type == engine::Light::Type::Point};
+        const engine::ResourceHandle map =
+            frame.graph().importTexture("shadow_map_" + light.name, desc, light.map.id());
+        addDepthPass(light, frame, map);
+        maps.push_back(map);
+    }
+    engine::LightVisibilityHook hook = makeHook(frame);
+    hook.reads = std::move(maps);
+    frame.setLightVisibility(std::move(hook));
+}
+
+nlohmann::json ShadowMapPlugin::frameStats() const {
+    nlohmann::json lights = nlohmann::json::array();
+    for (const LightShadow& light : lights_) lights.push_back(light.stats());
+    return {{"lights", lights}};
+}
+
+} // namespace shadowmap

@@ -1,0 +1,110 @@
+#include "plugin/ShadowSettings.h"
+
+#include "engine/util/Error.h"
+#include "engine/util/JsonRead.h"
+
+#include <epoxy/gl.h>
+
+#include <cmath>
+
+namespace shadowmap {
+
+namespace {
+
+template <typename Enum, std::size_t N>
+Enum parseEnum(const std::string& text, const char* const (&names)[N], const char* what,
+               const std::string& source, const std::string& object) {
+    std::string known;
+    for (std::size_t i = 0; i < N; ++i) {
+        if (text == names[i]) return static_cast<Enum>(i);
+        known += (i ? ", " : "") + std::string(names[i]);
+    }
+    engine::throwInputError(source, object,
+                            "unknown " + std::string(what) + " \"" + text + "\" (known: " + known + ")");
+}
+
+constexpr const char* kVariantNames[] = {"standard", "woo", "backface", "none"};
+constexpr const char* kFormatNames[] = {"d16", "d24", "d32f"};
+constexpr const char* kFilterNames[] = {"nearest", "pcf"};
+
+} // namespace
+
+const char* toString(Variant variant) { return kVariantNames[static_cast<int>(variant)]; }
+const char* toString(DepthFormat format) { return kFormatNames[static_cast<int>(format)]; }
+const char* toString(Filter filter) { return kFilterNames[static_cast<int>(filter)]; }
+
+Variant parseVariant(const std::string& text, const std::string& source, const std::string& object) {
+    return parseEnum<Variant>(text, kVariantNames, "variant", source, object);
+}
+
+void applySettings(ShadowSettings& settings, const nlohmann::json& json, const std::string& source,
+                   const std::string& object) {
+    namespace json_read = engine::json;
+    json_read::requireKnownKeys(json,
+                                {"variant", "resolution", "depth_format", "filter",
+                                 "polygon_offset", "dimming"},
+                                source, object);
+    const auto key = [&](const char* name) { return object + "." + name; };
+    if (json.contains("variant"))
+        settings.variant = parseVariant(json_read::readString(json["variant"], source, key("variant")),
+                                        source, key("variant"));
+    if (json.contains("resolution")) {
+        const double resolution = json_read::readNumber(json["resolution"], source, key("resolution"));
+        if (resolution < 1.0 || resolution != std::floor(resolution) || resolution > 65536.0)
+            engine::throwInputError(source, key("resolution"),
+                                    "must be a whole number of texels >= 1, got " +
+                                        json["resolution"].dump());
+        settings.resolution = static_cast<int>(resolution);
+    }
+    if (json.contains("depth_format"))
+        settings.depthFormat = parseEnum<DepthFormat>(
+            json_read::readString(json["depth_format"], source, key("depth_format")), kFormatNames,
+            "depth format", source, key("depth_format"));
+    if (json.contains("filter"))
+        settings.filter =
+            parseEnum<Filter>(json_read::readString(json["filter"], source, key("filter")),
+                              kFilterNames, "filter", source, key("filter"));
+    if (json.contains("polygon_offset")) {
+        const auto& offset = json["polygon_offset"];
+        if (!offset.is_array() || offset.size() != 2)
+            engine::throwInputError(source, key("polygon_offset"), "must be [factor, units]");
+        settings.polygonOffset = glm::vec2(
+            static_cast<float>(json_read::readNumber(offset[0], source, key("polygon_offset") + "[0]")),
+            static_cast<float>(json_read::readNumber(offset[1], source, key("polygon_offset") + "[1]")));
+    }
+    if (json.contains("dimming")) {
+        const double dimming = json_read::readNumber(json["dimming"], source, key("dimming"));
+        if (dimming < 0.0 || dimming > 1.0)
+            engine::throwInputError(source, key("dimming"), "must be in [0, 1], got " + json["dimming"].dump());
+        settings.dimming = static_cast<float>(dimming);
+    }
+}
+
+void checkLimits(const ShadowSettings& settings, int maxTextureSize, const std::string& source,
+                 const std::string& object) {
+    if (settings.variant != Variant::None && settings.resolution > maxTextureSize)
+        engine::throwInputError(source, object + ".resolution",
+                                std::to_string(settings.resolution) +
+                                    " is above this GL's GL_MAX_TEXTURE_SIZE " +
+                                    std::to_string(maxTextureSize));
+}
+
+unsigned glInternalFormat(DepthFormat format) {
+    switch (format) {
+    case DepthFormat::D16: return GL_DEPTH_COMPONENT16;
+    case DepthFormat::D24: return GL_DEPTH_COMPONENT24;
+    case DepthFormat::D32F: return GL_DEPTH_COMPONENT32F;
+    }
+    return GL_DEPTH_COMPONENT24;
+}
+
+engine::TextureFormat graphFormat(DepthFormat format) {
+    switch (format) {
+    case DepthFormat::D16: return engine::TextureFormat::Depth16;
+    case DepthFormat::D24: return engine::TextureFormat::Depth24;
+    case DepthFormat::D32F: return engine::TextureFormat::Depth32F;
+    }
+    return engine::TextureFormat::Depth24;
+}
+
+} // namespace shadowmap
