@@ -1,0 +1,46 @@
+#pragma once
+// One reader for every accessor: positions, normals, texture coordinates and indices all
+// go through forEachElement, which walks a validated accessor's elements with its stride.
+#include "GltfContext.h"
+
+#include <glm/glm.hpp>
+#include <tiny_gltf.h>
+
+#include <cstdint>
+#include <vector>
+
+namespace engine::gltf {
+
+// What a particular use of an accessor requires of it.
+struct AccessorUse {
+    enum class Components {
+        Float,              // FLOAT only (positions, normals)
+        FloatOrNormalized,  // FLOAT, or normalized UNSIGNED_BYTE/SHORT (texture coordinates)
+        UnsignedInteger,    // UNSIGNED_BYTE/SHORT/INT, not normalized (indices)
+    };
+    std::string usedAs;  // "POSITION of meshes[0].primitives[1]", for messages
+    int type = TINYGLTF_TYPE_SCALAR;
+    Components components = Components::Float;
+};
+
+// All components of the accessor (count x components per element), as float: normalized
+// integers map to [0, 1]. Refuses an accessor whose type does not fit `use`, and any value
+// that is not finite. The accessor must have passed validateBinaryLayout.
+std::vector<float> readFloatComponents(const LoadContext& context, const tinygltf::Model& model,
+                                       int accessorIndex, const AccessorUse& use);
+
+// The values of a SCALAR accessor of unsigned integers (indices).
+std::vector<std::uint32_t> readUnsignedIntegers(const LoadContext& context, const tinygltf::Model& model,
+                                                int accessorIndex, const AccessorUse& use);
+
+template <glm::length_t N>
+std::vector<glm::vec<N, float>> readFloatVectors(const LoadContext& context, const tinygltf::Model& model,
+                                                 int accessorIndex, const AccessorUse& use) {
+    const std::vector<float> flat = readFloatComponents(context, model, accessorIndex, use);
+    std::vector<glm::vec<N, float>> vectors(flat.size() / N);
+    for (std::size_t i = 0; i < vectors.size(); ++i)
+        for (glm::length_t c = 0; c < N; ++c) vectors[i][c] = flat[i * N + c];
+    return vectors;
+}
+
+} // namespace engine::gltf

@@ -1,0 +1,94 @@
+// Nodes and the assembly of the engine scene.
+#include "GltfConvert.h"
+
+#include "GltfImages.h"
+#include "GltfLights.h"
+#include "GltfMeshes.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+namespace engine::gltf {
+
+namespace {
+
+// M of the node relative to its parent: the matrix (column-major, as glTF stores it), or
+// T * R * S. Lengths, finiteness and a non-zero quaternion were checked by validation.
+glm::dmat4 localTransform(const tinygltf::Node& node) {
+    if (node.matrix.size() == 16) return glm::make_mat4(node.matrix.data());
+    glm::dmat4 local(1.0);
+    if (node.translation.size() == 3) local = glm::translate(local, glm::make_vec3(node.translation.data()));
+    if (node.rotation.size() == 4) {
+        // glTF stores (x, y, z, w); glm's constructor takes w first. Exporters write
+        // quaternions rounded to float: normalize so no scale sneaks in.
+        const glm::dquat q(node.rotation[3], node.rotation[0], node.rotation[1], node.rotation[2]);
+        local *= glm::mat4_cast(glm::normalize(q));
+    }
+    if (node.scale.size() == 3) local = glm::scale(local, glm::make_vec3(node.scale.data()));
+    return local;
+}
+
+// Node extras "cast_shadows" / "receive_shadows" (DESIGN.md): booleans, default true.
+void readShadowFlags(const LoadContext& context, const tinygltf::Node& source, const std::string& object, Node& node) {
+    if (!source.extras.IsObject()) return;
+    const auto flag = [&](const char* key, bool& target) {
+        if (!source.extras.Has(key)) return;
+        const tinygltf::Value& value = source.extras.Get(key);
+        if (!value.IsBool()) context.fail(object, std::string("extras.") + key + " is not a boolean");
+        target = value.Get<bool>();
+    };
+    flag("cast_shadows", node.castShadows);
+    flag("receive_shadows", node.receiveShadows);
+}
+
+std::vector<Node> convertNodes(const LoadContext& context, const tinygltf::Model& model) {
+    std::vector<Node> nodes(model.nodes.size());
+    for (std::size_t i = 0; i < model.nodes.size(); ++i) {
+        const tinygltf::Node& source = model.nodes[i];
+        const std::string object = indexedNamed("nodes", i, source.name);
+        Node& node = nodes[i];
+        node.name = source.name;
+        node.children = source.children;
+        node.local = localTransform(source);
+        node.mesh = source.mesh;
+        node.camera = source.camera;
+        node.light = nodeLightIndex(context, source, i);
+        readShadowFlags(context, source, object, node);
+        if (source.skin >= 0) context.warn(object, "skin is ignored (no skinning)");
+    }
+    for (std::size_t i = 0; i < nodes.size(); ++i)
+        for (int child : nodes[i].children) nodes[child].parent = static_cast<int>(i);
+    return nodes;
+}
+
+// The nodes of the scene to display: the default scene, else scene 0; a file without
+// scenes shows every root node (the glTF spec leaves that case to the application).
+std::vector<int> displayedRoots(const LoadContext& context, const tinygltf::Model& model, const std::vector<Node>& nodes) {
+    if (!model.scenes.empty()) return model.scenes[model.defaultScene >= 0 ? model.defaultScene : 0].nodes;
+    std::vector<int> roots;
+    for (std::size_t i = 0; i < nodes.size(); ++i)
+        if (nodes[i].parent == -1) roots.push_back(static_cast<int>(i));
+    if (!roots.empty()) context.warn("scenes", "none defined; showing every root node");
+    return roots;
+}
+
+} // namespace
+
+Scene convertToScene(const LoadContext& context, const ParsedGltf& parsed, std::vector<Light> lights) {
+    const tinygltf::Model& model = parsed.model;
+    Scene scene;
+    scene.sourcePath = context.file;
+    scene.nodes = convertNodes(context, model);
+    scene.roots = displayedRoots(context, model, scene.nodes);
+    scene.meshes = convertMeshes(context, model);
+    scene.materials = convertMaterials(context, model);
+    scene.images = decodeImages(context, parsed);
+    scene.cameras = convertCameras(context, model);
+    scene.lights = std::move(lights);
+    if (!model.animations.empty()) context.warn("animations", "ignored (the scene is shown at rest)");
+    scene.updateWorldTransforms();
+    return scene;
+}
+
+} // namespace engine::gltf

@@ -1,0 +1,57 @@
+// loadGltf: the order of the stages is the safety argument. Nothing reaches tinygltf
+// before the container layout, the JSON nesting depth, every URI and every buffer length
+// have been checked; nothing reads buffer bytes before the structural validation.
+#include "engine/gltf/GltfLoader.h"
+
+#include "GltfContainer.h"
+#include "GltfContext.h"
+#include "GltfConvert.h"
+#include "GltfFileAccess.h"
+#include "GltfJsonDocument.h"
+#include "GltfLights.h"
+#include "GltfParse.h"
+#include "GltfPreflight.h"
+#include "GltfValidation.h"
+
+namespace engine {
+
+namespace {
+
+gltf::LoadContext makeContext(const std::filesystem::path& path, std::vector<std::string>* warnings,
+                              const GltfLoadOptions& options) {
+    gltf::LoadContext context;
+    context.file = path.string();
+    context.options = options;
+    context.warnings = warnings;
+    std::error_code error;
+    const std::filesystem::path parent = path.parent_path().empty() ? "." : path.parent_path();
+    context.folder = std::filesystem::canonical(parent, error);
+    if (error) context.fail("", "cannot resolve the scene's folder: " + error.message());
+    return context;
+}
+
+} // namespace
+
+Scene loadGltf(const std::filesystem::path& path, std::vector<std::string>* warnings,
+               const GltfLoadOptions& options) {
+    const gltf::LoadContext context = makeContext(path, warnings, options);
+
+    std::vector<std::uint8_t> fileBytes;
+    std::string problem;
+    if (!gltf::readRegularFile(path, options.maxFileBytes, fileBytes, problem)) context.fail("", problem);
+
+    const bool looksBinary = gltf::hasGlbMagic(fileBytes) || path.extension() == ".glb";
+    const gltf::GltfContainer container = looksBinary ? gltf::splitGlb(context, fileBytes)
+                                                      : gltf::wholeFileAsJson(fileBytes);
+    gltf::checkJsonNesting(context, container.json);
+    const nlohmann::json document = gltf::parseJsonDocument(context, container.json);
+    gltf::preflightDocument(context, document, container);
+
+    // Lights come from our own parse; tinygltf 2.7.0 parses them too but checks nothing.
+    std::vector<Light> lights = gltf::readPunctualLights(context, document);
+    const gltf::ParsedGltf parsed = gltf::parseWithTinygltf(context, container, fileBytes);
+    gltf::validateModel(context, parsed.model, lights.size());
+    return gltf::convertToScene(context, parsed, std::move(lights));
+}
+
+} // namespace engine

@@ -1,0 +1,156 @@
+#include "GltfMeshes.h"
+
+#include "GltfAccessors.h"
+
+#include <limits>
+#include <numeric>
+#include <optional>
+
+namespace engine::gltf {
+
+namespace {
+
+const char* modeName(int mode) {
+    switch (mode) {
+    case TINYGLTF_MODE_POINTS: return "POINTS";
+    case TINYGLTF_MODE_LINE: return "LINES";
+    case TINYGLTF_MODE_LINE_LOOP: return "LINE_LOOP";
+    case TINYGLTF_MODE_LINE_STRIP: return "LINE_STRIP";
+    default: return "triangles";
+    }
+}
+
+// The accessor index of `semantic`, if the primitive has that attribute.
+std::optional<int> attribute(const tinygltf::Primitive& primitive, const char* semantic) {
+    const auto found = primitive.attributes.find(semantic);
+    if (found == primitive.attributes.end()) return std::nullopt;
+    return found->second;
+}
+
+class PrimitiveConverter {
+public:
+    PrimitiveConverter(const LoadContext& context, const tinygltf::Model& model, const std::string& object)
+        : context_(context), model_(model), object_(object) {}
+
+    // The engine primitive, or nothing when the primitive is not drawn as triangles.
+    std::optional<Primitive> convert(const tinygltf::Primitive& source) {
+        const int mode = source.mode == -1 ? TINYGLTF_MODE_TRIANGLES : source.mode;
+        if (mode < TINYGLTF_MODE_TRIANGLES) {
+            context_.warn(object_, std::string(modeName(mode)) + " primitive dropped (only triangles are drawn)");
+            return std::nullopt;
+        }
+        const std::optional<int> positionAccessor = attribute(source, "POSITION");
+        if (!positionAccessor) {
+            context_.warn(object_, "primitive without POSITION dropped");
+            return std::nullopt;
+        }
+
+        Primitive primitive;
+        primitive.material = source.material;
+        primitive.positions = readFloatVectors<3>(context_, model_, *positionAccessor, vectorUse("POSITION", TINYGLTF_TYPE_VEC3));
+        const std::size_t vertexCount = primitive.positions.size();
+        if (vertexCount > std::numeric_limits<std::uint32_t>::max())
+            context_.fail(object_, "has more vertices than 32-bit indices can address");
+        if (const auto normals = attribute(source, "NORMAL")) {
+            primitive.normals = readFloatVectors<3>(context_, model_, *normals, vectorUse("NORMAL", TINYGLTF_TYPE_VEC3));
+            requireVertexCount("NORMAL", primitive.normals.size(), vertexCount);
+        }
+        if (const auto texcoords = attribute(source, "TEXCOORD_0")) {
+            AccessorUse use = vectorUse("TEXCOORD_0", TINYGLTF_TYPE_VEC2);
+            use.components = AccessorUse::Components::FloatOrNormalized;
+            primitive.texcoords = readFloatVectors<2>(context_, model_, *texcoords, use);
+            requireVertexCount("TEXCOORD_0", primitive.texcoords.size(), vertexCount);
+        }
+
+        const std::vector<std::uint32_t> vertexIndices = readVertexIndices(source, vertexCount);
+        if (mode == TINYGLTF_MODE_TRIANGLES && vertexIndices.size() % 3 != 0)
+            context_.fail(object_, std::to_string(vertexIndices.size()) +
+                                       " vertices do not make whole triangles (not a multiple of 3)");
+        primitive.indices = triangleList(mode, vertexIndices);
+
+        if (primitive.normals.empty()) {
+            primitive.normals = generateNormals(primitive.positions, primitive.indices);
+            context_.warn(object_, "has no NORMAL; normals generated");
+        }
+        for (const glm::vec3& p : primitive.positions) primitive.bounds.extend(glm::dvec3(p));
+        return primitive;
+    }
+
+private:
+    AccessorUse vectorUse(const char* semantic, int type) const {
+        return {std::string(semantic) + " of " + object_, type, AccessorUse::Components::Float};
+    }
+
+    void requireVertexCount(const char* semantic, std::size_t count, std::size_t vertexCount) const {
+        if (count != vertexCount)
+            context_.fail(object_, std::string(semantic) + " has " + std::to_string(count) +
+                                       " elements, POSITION has " + std::to_string(vertexCount));
+    }
+
+    // The primitive's indices, each checked against the vertex count; 0..n-1 when the
+    // primitive is not indexed.
+    std::vector<std::uint32_t> readVertexIndices(const tinygltf::Primitive& source, std::size_t vertexCount) const {
+        if (source.indices < 0) {
+            std::vector<std::uint32_t> sequential(vertexCount);
+            std::iota(sequential.begin(), sequential.end(), 0u);
+            return sequential;
+        }
+        const AccessorUse use{"indices of " + object_, TINYGLTF_TYPE_SCALAR, AccessorUse::Components::UnsignedInteger};
+        std::vector<std::uint32_t> indices = readUnsignedIntegers(context_, model_, source.indices, use);
+        for (std::size_t i = 0; i < indices.size(); ++i)
+            if (indices[i] >= vertexCount)
+                context_.fail(indexed("accessors", source.indices),
+                              "used as " + use.usedAs + ", index " + std::to_string(indices[i]) + " (element " +
+                                  std::to_string(i) + ") is past the vertex count " + std::to_string(vertexCount));
+        return indices;
+    }
+
+    const LoadContext& context_;
+    const tinygltf::Model& model_;
+    std::string object_;
+};
+
+Mesh convertMesh(const LoadContext& context, const tinygltf::Model& model, std::size_t meshIndex) {
+    const tinygltf::Mesh& source = model.meshes[meshIndex];
+    Mesh mesh;
+    mesh.name = source.name;
+    const std::string meshObject = indexedNamed("meshes", meshIndex, source.name);
+    for (std::size_t p = 0; p < source.primitives.size(); ++p) {
+        PrimitiveConverter converter(context, model, meshObject + "." + indexed("primitives", p));
+        if (std::optional<Primitive> primitive = converter.convert(source.primitives[p])) {
+            mesh.bounds.extend(primitive->bounds);
+            mesh.primitives.push_back(std::move(*primitive));
+        }
+    }
+    mesh.closed = isClosedSurface(mesh);
+    return mesh;
+}
+
+} // namespace
+
+std::vector<std::uint32_t> triangleList(int mode, const std::vector<std::uint32_t>& indices) {
+    if (mode == TINYGLTF_MODE_TRIANGLES) return indices;
+    std::vector<std::uint32_t> triangles;
+    if (indices.size() < 3) return triangles;
+    triangles.reserve((indices.size() - 2) * 3);
+    for (std::size_t i = 0; i + 2 < indices.size(); ++i) {
+        if (mode == TINYGLTF_MODE_TRIANGLE_STRIP) {
+            // glTF: {v_i, v_{i+(1+i%2)}, v_{i+(2-i%2)}}: every other triangle swaps its last
+            // two vertices so all keep the strip's winding.
+            triangles.insert(triangles.end(), {indices[i], indices[i + 1 + i % 2], indices[i + 2 - i % 2]});
+        } else {
+            // glTF: {v_{i+1}, v_{i+2}, v_0}.
+            triangles.insert(triangles.end(), {indices[i + 1], indices[i + 2], indices[0]});
+        }
+    }
+    return triangles;
+}
+
+std::vector<Mesh> convertMeshes(const LoadContext& context, const tinygltf::Model& model) {
+    std::vector<Mesh> meshes;
+    meshes.reserve(model.meshes.size());
+    for (std::size_t m = 0; m < model.meshes.size(); ++m) meshes.push_back(convertMesh(context, model, m));
+    return meshes;
+}
+
+} // namespace engine::gltf

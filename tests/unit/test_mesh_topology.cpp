@@ -1,0 +1,115 @@
+// isClosedSurface decides whether the back-face shadow variant may use a mesh as caster;
+// generateNormals fills primitives that come without normals.
+#include "engine/scene/Scene.h"
+
+#include "gltf_test_support.h"
+
+#include <gtest/gtest.h>
+
+namespace {
+
+using engine::Mesh;
+using engine::Primitive;
+
+Primitive primitiveFrom(const gltf_test::CubeGeometry& geometry) {
+    Primitive primitive;
+    for (std::size_t i = 0; i < geometry.positions.size(); i += 3)
+        primitive.positions.emplace_back(geometry.positions[i], geometry.positions[i + 1], geometry.positions[i + 2]);
+    primitive.indices = geometry.indices;
+    return primitive;
+}
+
+Mesh meshOf(std::vector<Primitive> primitives) {
+    Mesh mesh;
+    mesh.primitives = std::move(primitives);
+    return mesh;
+}
+
+TEST(MeshTopology, CubeWithSplitVerticesIsClosed) {
+    const Primitive cube = primitiveFrom(gltf_test::splitVertexCube());
+    ASSERT_EQ(cube.positions.size(), 24u);  // what an index-only check would call open
+    EXPECT_TRUE(engine::isClosedSurface(meshOf({cube})));
+}
+
+TEST(MeshTopology, OpenBoxIsNotClosed) {
+    Primitive box = primitiveFrom(gltf_test::splitVertexCube());
+    box.indices.resize(box.indices.size() - 6);  // drop the last face
+    EXPECT_FALSE(engine::isClosedSurface(meshOf({box})));
+}
+
+TEST(MeshTopology, CubeWithOneFlippedTriangleIsNotClosed) {
+    Primitive cube = primitiveFrom(gltf_test::splitVertexCube());
+    std::swap(cube.indices[1], cube.indices[2]);
+    EXPECT_FALSE(engine::isClosedSurface(meshOf({cube})));
+}
+
+TEST(MeshTopology, TwoSeparateCubesInOneMeshAreClosed) {
+    const Primitive left = primitiveFrom(gltf_test::splitVertexCube(-3, 0, 0));
+    const Primitive right = primitiveFrom(gltf_test::splitVertexCube(3, 0, 0));
+    EXPECT_TRUE(engine::isClosedSurface(meshOf({left, right})));
+}
+
+TEST(MeshTopology, VerticesAreWeldedAcrossPrimitives) {
+    // One cube whose faces are split over two primitives (two materials, say).
+    const Primitive cube = primitiveFrom(gltf_test::splitVertexCube());
+    Primitive first = cube, second = cube;
+    first.indices.assign(cube.indices.begin(), cube.indices.begin() + 18);
+    second.indices.assign(cube.indices.begin() + 18, cube.indices.end());
+    EXPECT_TRUE(engine::isClosedSurface(meshOf({first, second})));
+}
+
+TEST(MeshTopology, CubesTouchingAlongAnEdgeAreNotClosed) {
+    // The shared edge is used by four triangles: not a manifold surface.
+    const Primitive a = primitiveFrom(gltf_test::splitVertexCube(0, 0, 0));
+    const Primitive b = primitiveFrom(gltf_test::splitVertexCube(2, 2, 0));
+    EXPECT_FALSE(engine::isClosedSurface(meshOf({a, b})));
+}
+
+TEST(MeshTopology, DegenerateTrianglesAreIgnored) {
+    Primitive cube = primitiveFrom(gltf_test::splitVertexCube());
+    cube.indices.insert(cube.indices.end(), {0, 0, 1, 5, 5, 5});
+    EXPECT_TRUE(engine::isClosedSurface(meshOf({cube})));
+}
+
+TEST(MeshTopology, NegativeZeroWeldsWithPositiveZero) {
+    gltf_test::CubeGeometry geometry = gltf_test::splitVertexCube(0, 0, 0, 1);
+    Primitive cube = primitiveFrom(geometry);
+    // Move the whole cube so some coordinates become 0, then write one of them as -0.
+    for (glm::vec3& p : cube.positions) p += glm::vec3(1.0f);
+    for (glm::vec3& p : cube.positions)
+        if (p.x == 0.0f) { p.x = -0.0f; break; }
+    EXPECT_TRUE(engine::isClosedSurface(meshOf({cube})));
+}
+
+TEST(MeshTopology, EmptyMeshIsNotClosed) {
+    EXPECT_FALSE(engine::isClosedSurface(Mesh{}));
+}
+
+TEST(MeshTopology, GeneratedNormalsOfAFlatQuadFaceItsWinding) {
+    const std::vector<glm::vec3> positions{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+    const std::vector<glm::vec3> normals = engine::generateNormals(positions, {0, 1, 2, 0, 2, 3});
+    ASSERT_EQ(normals.size(), 4u);
+    for (const glm::vec3& n : normals) {
+        EXPECT_NEAR(n.x, 0.0f, 1e-6f);
+        EXPECT_NEAR(n.y, 0.0f, 1e-6f);
+        EXPECT_NEAR(n.z, 1.0f, 1e-6f);
+    }
+}
+
+TEST(MeshTopology, GeneratedNormalsAreAreaWeighted) {
+    // Vertex 0 is shared by a big triangle facing +z (area 50) and a small one facing +x
+    // (area 0.5): the normal leans 100:1 toward +z.
+    const std::vector<glm::vec3> positions{{0, 0, 0}, {10, 0, 0}, {0, 10, 0}, {0, 1, 0}, {0, 0, 1}};
+    const std::vector<glm::vec3> normals = engine::generateNormals(positions, {0, 1, 2, 0, 3, 4});
+    const glm::vec3 expected = glm::normalize(glm::vec3(1.0f, 0.0f, 100.0f));
+    EXPECT_NEAR(normals[0].x, expected.x, 1e-6f);
+    EXPECT_NEAR(normals[0].z, expected.z, 1e-6f);
+}
+
+TEST(MeshTopology, VertexWithoutAreaGetsAUnitNormal) {
+    const std::vector<glm::vec3> positions{{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {5, 5, 5}};
+    const std::vector<glm::vec3> normals = engine::generateNormals(positions, {0, 1, 2});
+    for (const glm::vec3& n : normals) EXPECT_NEAR(glm::length(n), 1.0f, 1e-6f);
+}
+
+} // namespace
