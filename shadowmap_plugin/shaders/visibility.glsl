@@ -15,7 +15,10 @@
 #define SHADOW_2D 1
 #define SHADOW_CUBE 2
 
-uniform vec4 uShadowParams[MAX_LIGHTS];      // kind, sampler index, dimming, lit outside map
+// x: kind, y: sampler index, z: dimming, w: the shade outside the map (2D maps) or of
+// every point (SHADOW_NONE: 1 for lights without shadows, 0 for a spot light whose
+// frustum holds nothing the camera sees, i.e. every visible point is outside its cone).
+uniform vec4 uShadowParams[MAX_LIGHTS];
 uniform mat4 uShadowEyePlanes[MAX_LIGHTS];   // Ee, rows s,t,r,q (2D maps)
 uniform vec4 uShadowPointLight[MAX_LIGHTS];  // eye-space light position, near (cube maps)
 uniform float uShadowPointFar[MAX_LIGHTS];   // far (cube maps)
@@ -73,5 +76,5 @@ vec2 lightVisibility(int lightSlot, vec3 eyePosition, vec3 eyeNormal) {
     int index = int(params.y + 0.5);
     if (kind == SHADOW_2D) return vec2(shadowMap2D(lightSlot, index, eyePosition), params.z);
     if (kind == SHADOW_CUBE) return vec2(shadowMapCube(lightSlot, index, eyePosition), params.z);
-    return vec2(1.0, 0.0);
+    return vec2(params.w, params.z);
 }

@@ -22,6 +22,7 @@ struct LightShadowFrame {
     LightView view;              // spot / directional
     PointLightViews pointViews;  // point
     std::string skipReason;      // why no map this frame (variant none, empty frustum...)
+    bool emptyFrustum = false;   // skipped because no visible receiver is inside it
     int facesRendered = 0, facesSkipped = 0;
     std::uint64_t draws = 0, triangles = 0, castersCulled = 0;
 };

@@ -131,6 +131,7 @@ bool ShadowMapPlugin::planLight(LightShadow& light, const engine::Frame& frame,
     }
     if (empty) {
         plan.skipReason = "no visible receiver in the light's frustum";
+        plan.emptyFrustum = true;
         return false;
     }
     const bool cube = light.type == engine::Light::Type::Point;
@@ -177,7 +178,8 @@ void ShadowMapPlugin::addDepthPass(LightShadow& light, engine::Frame& frame,
 engine::LightVisibilityHook ShadowMapPlugin::makeHook(const engine::Frame& frame) {
     const glm::dmat4& eyeToWorld = frame.camera().eyeToWorld;  // V
     const glm::dmat4 view = glm::inverse(eyeToWorld);          // V^-1
-    std::vector<glm::vec4> params(engine::kMaxLights, glm::vec4(0.0f));
+    // Lights without a map this frame: fully visible, nothing dimmed.
+    std::vector<glm::vec4> params(engine::kMaxLights, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
     std::vector<glm::mat4> eyePlanes(engine::kMaxLights, glm::mat4(0.0f));
     std::vector<glm::vec4> pointLight(engine::kMaxLights, glm::vec4(0.0f));
     std::vector<float> pointFar(engine::kMaxLights, 1.0f);
@@ -185,10 +187,15 @@ engine::LightVisibilityHook ShadowMapPlugin::makeHook(const engine::Frame& frame
 
     for (const LightShadow& light : lights_) {
         const LightShadowFrame& plan = light.frame;
-        if (plan.kind == MapKind::None) continue;
-        const bool outsideLit = light.type == engine::Light::Type::Directional;
+        // Outside a spot light's frustum is outside its cone: never lit by it. Directional
+        // frusta hold every visible receiver, so what lies outside has nothing to fear.
+        const float outsideShade = light.type == engine::Light::Type::Spot ? 0.0f : 1.0f;
+        if (plan.kind == MapKind::None) {
+            if (plan.emptyFrustum) params[light.slot] = glm::vec4(0.0f, 0.0f, 0.0f, outsideShade);
+            continue;
+        }
         params[light.slot] = glm::vec4(static_cast<float>(plan.kind), static_cast<float>(plan.samplerIndex),
-                                       light.settings.dimming, outsideLit ? 1.0f : 0.0f);
+                                       light.settings.dimming, outsideShade);
         if (plan.kind == MapKind::Map2D) {
             // Ee = Epo * V with Epo = S * P_light * L^-1, composed in double (DESIGN.md).
             eyePlanes[light.slot] = glm::mat4(eyePlanesForCamera(plan.view.texgenPlanes(), eyeToWorld));
