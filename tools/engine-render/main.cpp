@@ -81,13 +81,14 @@ nlohmann::json statsJson(const RenderOptions& options, const std::vector<double>
     return stats;
 }
 
-int run(const RenderOptions& options) {
+// `host` lives in main(), outside the try block that reports errors: an exception thrown by
+// plugin code must be read before the plugin is unloaded.
+int run(const RenderOptions& options, engine::PluginHost& host) {
     engine::tuneAllocatorForRendering();
     const engine::EngineConfig config = engine::loadEngineConfig(options.config);
     auto context = engine::createEglContext();
     context->makeCurrent();
 
-    engine::PluginHost host;
     host.loadAll(config);
     const auto plugins = host.renderPlugins();
     for (const auto& [light, variant] : options.lightVariants) {
@@ -168,8 +169,9 @@ int main(int argc, char** argv) {
         std::fputs(kRenderUsage, stdout);
         return 0;
     }
+    engine::PluginHost host;
     try {
-        return run(options);
+        return run(options, host);
     } catch (const std::exception& error) {
         std::fprintf(stderr, "engine-render: %s\n", error.what());
         return 1;

@@ -50,10 +50,14 @@ void applySettings(ShadowSettings& settings, const nlohmann::json& json, const s
                                         source, key("variant"));
     if (json.contains("resolution")) {
         const double resolution = json_read::readNumber(json["resolution"], source, key("resolution"));
-        if (resolution < 1.0 || resolution != std::floor(resolution) || resolution > 65536.0)
+        if (resolution < 1.0 || resolution != std::floor(resolution))
             engine::throwInputError(source, key("resolution"),
                                     "must be a whole number of texels >= 1, got " +
                                         json["resolution"].dump());
+        // Beyond any GL's texture size; checkLimits() compares with this GL's own limit.
+        if (resolution > 1 << 20)
+            engine::throwInputError(source, key("resolution"),
+                                    json["resolution"].dump() + " texels is beyond any GL_MAX_TEXTURE_SIZE");
         settings.resolution = static_cast<int>(resolution);
     }
     if (json.contains("depth_format"))

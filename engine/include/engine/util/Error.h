@@ -10,6 +10,11 @@ namespace engine {
 class InputError : public std::runtime_error {
 public:
     using std::runtime_error::runtime_error;
+    // Out of line (Error.cpp) on purpose: this key function makes libengine the one home
+    // of InputError's vtable and type info. Were it inline, an InputError thrown by a
+    // plugin would point into the plugin's code, and reading it after the plugin is
+    // unloaded (the host unwinds first) would crash.
+    ~InputError() override;
 };
 
 // "file: object: reason" — the one format every bad-input message follows.

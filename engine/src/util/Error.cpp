@@ -1,0 +1,7 @@
+#include "engine/util/Error.h"
+
+namespace engine {
+
+InputError::~InputError() = default;
+
+} // namespace engine

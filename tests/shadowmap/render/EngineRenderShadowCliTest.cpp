@@ -1,0 +1,181 @@
+// engine-render with the shadow plugin, end to end: per-light choices from glTF, config and
+// command line; bad settings end in exit code 1 and one line naming the light and the key.
+#include "engine/util/OutputFile.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct CommandResult {
+    int exitCode = -1;
+    std::string output;  // stdout + stderr
+};
+
+CommandResult runEngineRender(const std::string& arguments) {
+    const std::string command = std::string(ENGINE_RENDER_BIN) + " " + arguments + " 2>&1";
+    CommandResult result;
+    FILE* pipe = popen(command.c_str(), "r");
+    std::array<char, 4096> buffer{};
+    while (pipe && fgets(buffer.data(), buffer.size(), pipe)) result.output += buffer.data();
+    const int status = pipe ? pclose(pipe) : -1;
+    result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return result;
+}
+
+class EngineRenderShadows : public ::testing::Test {
+protected:
+    void SetUp() override {
+        dir_ = fs::temp_directory_path() /
+               ("engine_render_cli_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+        fs::create_directories(dir_);
+        fs::copy_file(fs::path(CONTENT_DIR) / "scenes/showcase.bin", dir_ / "showcase.bin",
+                      fs::copy_options::overwrite_existing);
+        std::ifstream in(fs::path(CONTENT_DIR) / "scenes/showcase.gltf");
+        scene_ = nlohmann::json::parse(in);
+    }
+    void TearDown() override { fs::remove_all(dir_); }
+
+    nlohmann::json& light(const std::string& name) {
+        for (auto& light : scene_["extensions"]["KHR_lights_punctual"]["lights"])
+            if (light["name"] == name) return light;
+        throw std::runtime_error("no light " + name);
+    }
+
+    // Writes the (edited) scene and renders it small.
+    CommandResult render(const std::string& extra = "", const std::string& config = "engine.json") {
+        std::ofstream(dir_ / "scene.gltf") << scene_.dump();
+        return runEngineRender("--config " + std::string(CONTENT_DIR) + "/" + config + " --scene " +
+                   (dir_ / "scene.gltf").string() + " --out " + (dir_ / "out.png").string() +
+                   " --width 96 --height 64 --stats " + (dir_ / "stats.json").string() + " " + extra);
+    }
+
+    nlohmann::json stats() {
+        std::ifstream in(dir_ / "stats.json");
+        return nlohmann::json::parse(in);
+    }
+
+    bool ranPass(const std::string& name) {
+        const nlohmann::json all = stats();  // kept: a range-for over stats()[...] would dangle
+        for (const auto& pass : all["passes"])
+            if (pass["name"] == name) return !pass["culled"].get<bool>();
+        return false;
+    }
+
+    void expectError(const CommandResult& result, std::initializer_list<const char*> fragments) {
+        EXPECT_EQ(result.exitCode, 1) << result.output;
+        for (const char* fragment : fragments)
+            EXPECT_NE(result.output.find(fragment), std::string::npos)
+                << "missing \"" << fragment << "\" in: " << result.output;
+        EXPECT_FALSE(fs::exists(dir_ / "out.png")) << "a failed run must not leave an image";
+    }
+
+    fs::path dir_;
+    nlohmann::json scene_;
+};
+
+} // namespace
+
+TEST_F(EngineRenderShadows, EveryLightTypeGetsItsDepthPass) {
+    const CommandResult result = render();
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    EXPECT_TRUE(ranPass("shadow_spot_light"));
+    EXPECT_TRUE(ranPass("shadow_sun"));
+    EXPECT_TRUE(ranPass("shadow_point_light"));
+    int width = 0, height = 0;
+    EXPECT_EQ(engine::readPng(dir_ / "out.png", 4, width, height).size(), 96u * 64u * 4u);
+}
+
+TEST_F(EngineRenderShadows, VariantNoneCostsNoPassFromGltfAndFromTheCommandLine) {
+    light("sun")["extras"]["shadow"]["variant"] = "none";
+    const CommandResult result = render("--light point_light=none");
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    EXPECT_TRUE(ranPass("shadow_spot_light"));
+    EXPECT_FALSE(ranPass("shadow_sun"));
+    EXPECT_FALSE(ranPass("shadow_point_light"));
+    const nlohmann::json all = stats();
+    for (const auto& entry : all["plugins"]["shadowmap"]["lights"])
+        if (entry["light"] != "spot_light") EXPECT_EQ(entry["skip_reason"], "variant none");
+}
+
+TEST_F(EngineRenderShadows, ConfigDefaultsApplyWhereTheLightIsSilent) {
+    light("sun")["extras"]["shadow"].erase("resolution");
+    const CommandResult result = render();
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    const nlohmann::json all = stats();
+    for (const auto& entry : all["plugins"]["shadowmap"]["lights"]) {
+        if (entry["light"] == "sun") EXPECT_EQ(entry["resolution"], 2048);         // config
+        if (entry["light"] == "point_light") EXPECT_EQ(entry["resolution"], 1024);  // glTF
+    }
+}
+
+TEST_F(EngineRenderShadows, ShadowMaskWorksForEveryLightType) {
+    const CommandResult result = render("--shadow-mask spot_light=" + (dir_ / "spot.png").string() +
+                              " --shadow-mask sun=" + (dir_ / "sun.png").string() +
+                              " --shadow-mask point_light=" + (dir_ / "point.png").string());
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    for (const char* file : {"spot.png", "sun.png", "point.png"}) {
+        int width = 0, height = 0;
+        const auto mask = engine::readPng(dir_ / file, 1, width, height);
+        ASSERT_EQ(mask.size(), 96u * 64u) << file;
+        int shadowed = 0, lit = 0;
+        for (std::uint8_t value : mask) (value == 0 ? shadowed : lit) += (value == 0 || value == 255);
+        EXPECT_GT(shadowed, 50) << file;  // every light casts some shadow in the showcase
+        EXPECT_GT(lit, 500) << file;
+    }
+}
+
+TEST_F(EngineRenderShadows, UnknownVariantNamesTheLight) {
+    light("sun")["extras"]["shadow"]["variant"] = "wooo";
+    expectError(render(), {"light \"sun\"", "extras.shadow.variant", "unknown variant \"wooo\""});
+}
+
+TEST_F(EngineRenderShadows, UnknownKeyNamesTheLightAndTheKey) {
+    light("spot_light")["extras"]["shadow"]["bias"] = 0.1;
+    expectError(render(), {"light \"spot_light\"", "extras.shadow.bias", "unknown key"});
+}
+
+TEST_F(EngineRenderShadows, ZeroResolutionIsRefused) {
+    light("sun")["extras"]["shadow"]["resolution"] = 0;
+    expectError(render(), {"light \"sun\"", "resolution", ">= 1"});
+}
+
+TEST_F(EngineRenderShadows, ResolutionAboveTheGlLimitIsRefused) {
+    light("sun")["extras"]["shadow"]["resolution"] = 262144;
+    expectError(render(), {"light \"sun\"", "resolution", "GL_MAX_TEXTURE_SIZE"});
+}
+
+TEST_F(EngineRenderShadows, DimmingOutOfRangeIsRefused) {
+    light("point_light")["extras"]["shadow"]["dimming"] = 1.5;
+    expectError(render(), {"light \"point_light\"", "dimming", "[0, 1]"});
+}
+
+TEST_F(EngineRenderShadows, ConeAngleOutOfRangeIsRefused) {
+    light("spot_light")["spot"]["outerConeAngle"] = 2.0;
+    expectError(render(), {"scene.gltf", "spot_light", "outerConeAngle"});
+}
+
+TEST_F(EngineRenderShadows, CommandLineLightMustExistAndVariantMustBeKnown) {
+    expectError(render("--light nosuchlight=standard"), {"nosuchlight", "no light of that name"});
+    expectError(render("--light sun=fuzzy"), {"sun=fuzzy", "unknown variant \"fuzzy\""});
+}
+
+TEST_F(EngineRenderShadows, MissingPluginLibraryIsNamed) {
+    std::ofstream(dir_ / "bad.json") << R"({"plugins":[{"library":"no_such_shadow_plugin"}]})";
+    const CommandResult result = runEngineRender("--config " + (dir_ / "bad.json").string() + " --scene " +
+                           (fs::path(CONTENT_DIR) / "scenes/showcase.gltf").string() + " --out " +
+                           (dir_ / "out.png").string());
+    expectError(result, {"bad.json", "no_such_shadow_plugin.so", "not found"});
+}
+
+TEST_F(EngineRenderShadows, ShadowMaskWithoutAShadowPluginIsAClearError) {
+    expectError(render("--shadow-mask sun=" + (dir_ / "sun.png").string(), "engine-unshadowed.json"),
+                {"--shadow-mask", "no loaded plugin provides a shadow term"});
+}
