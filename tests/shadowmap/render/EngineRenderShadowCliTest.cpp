@@ -102,7 +102,9 @@ TEST_F(EngineRenderShadows, VariantNoneCostsNoPassFromGltfAndFromTheCommandLine)
     EXPECT_FALSE(ranPass("shadow_point_light"));
     const nlohmann::json all = stats();
     for (const auto& entry : all["plugins"]["shadowmap"]["lights"])
-        if (entry["light"] != "spot_light") EXPECT_EQ(entry["skip_reason"], "variant none");
+        if (entry["light"] != "spot_light") {
+            EXPECT_EQ(entry["skip_reason"], "variant none");
+        }
 }
 
 TEST_F(EngineRenderShadows, ConfigDefaultsApplyWhereTheLightIsSilent) {
@@ -111,8 +113,11 @@ TEST_F(EngineRenderShadows, ConfigDefaultsApplyWhereTheLightIsSilent) {
     ASSERT_EQ(result.exitCode, 0) << result.output;
     const nlohmann::json all = stats();
     for (const auto& entry : all["plugins"]["shadowmap"]["lights"]) {
-        if (entry["light"] == "sun") EXPECT_EQ(entry["resolution"], 2048);         // config
-        if (entry["light"] == "point_light") EXPECT_EQ(entry["resolution"], 1024);  // glTF
+        if (entry["light"] == "sun") {
+            EXPECT_EQ(entry["resolution"], 2048);  // from the config
+        } else if (entry["light"] == "point_light") {
+            EXPECT_EQ(entry["resolution"], 1024);  // from the glTF
+        }
     }
 }
 
