@@ -1,3 +1,30 @@
 // Depth pass: only depth is written (the framebuffer has no color attachment).
+// With PEEL (Woo's midpoint shadow map, pass 2) fragments at or in front of the nearest
+// layer z1 (pass 1: same triangles, same transform, `invariant gl_Position`) are discarded,
+// and the rest write the midpoint (z + z1) / 2. z1 went through the depth format (d16/d24
+// round to a fixed-point step), so "at z1" means within uPeelEpsilon: two steps of the
+// format (d32f: four float steps near 1). Without it, the first layer's own fragments
+// survived the peel where rounding put them a step behind z1, and the map held z1 + tiny:
+// acne on most lit surfaces of the showcase.
+// The depth test then keeps the nearest remaining layer z2, since the midpoint grows with
+// z. Texels with no second layer keep the clear value 1 (far): nothing behind the first
+// surface, so it is lit.
+#ifdef PEEL
+#ifdef PEEL_ARRAY
+layout(binding = 0) uniform sampler2DArray uFirstLayer;  // one layer per cube face
+uniform int uFirstLayerIndex;
+#define FIRST_LAYER_DEPTH texelFetch(uFirstLayer, ivec3(gl_FragCoord.xy, uFirstLayerIndex), 0).r
+#else
+layout(binding = 0) uniform sampler2D uFirstLayer;
+#define FIRST_LAYER_DEPTH texelFetch(uFirstLayer, ivec2(gl_FragCoord.xy), 0).r
+#endif
+uniform float uPeelEpsilon;
+#endif
+
 void main() {
+#ifdef PEEL
+    float z1 = FIRST_LAYER_DEPTH;
+    if (gl_FragCoord.z <= z1 + uPeelEpsilon) discard;
+    gl_FragDepth = 0.5 * (gl_FragCoord.z + z1);
+#endif
 }

@@ -26,9 +26,11 @@ std::uint32_t GlTexturePool::acquire(const TextureDesc& desc) {
             entry.inUse = true;
             return entry.texture.id();
         }
-    Entry entry{desc, desc.cube ? gl::Texture::createCube(internalFormatFor(desc.format), desc.width)
-                                : gl::Texture::create2D(internalFormatFor(desc.format), desc.width,
-                                                        desc.height),
+    const GLenum format = internalFormatFor(desc.format);
+    Entry entry{desc,
+                desc.cube        ? gl::Texture::createCube(format, desc.width)
+                : desc.layers > 1 ? gl::Texture::create2DArray(format, desc.width, desc.height, desc.layers)
+                                  : gl::Texture::create2D(format, desc.width, desc.height),
                 true};
     // Complete for sampling without mipmaps; shadow lookups override this with samplers.
     entry.texture.setParameter(GL_TEXTURE_MIN_FILTER, GL_NEAREST);

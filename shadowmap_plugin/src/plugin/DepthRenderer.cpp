@@ -13,18 +13,38 @@ extern const char depth_vert[];
 extern const char depth_frag[];
 }
 
+namespace {
+
+// One source per stage; variants by #define (as bgfx's shadow examples do).
+engine::gl::Program compileDepthProgram(const std::string& name, const std::string& defines) {
+    const std::string header = "#version 450 core\n" + defines;
+    return engine::gl::Program::compile(name, {{GL_VERTEX_SHADER, header + shaders::depth_vert},
+                                               {GL_FRAGMENT_SHADER, header + shaders::depth_frag}});
+}
+
+void setPolygonOffset(const glm::vec2& offset) {
+    if (offset == glm::vec2(0.0f)) {
+        glDisable(GL_POLYGON_OFFSET_FILL);
+        return;
+    }
+    glEnable(GL_POLYGON_OFFSET_FILL);
+    glPolygonOffset(offset.x, offset.y);
+}
+
+} // namespace
+
 DepthRenderer::DepthRenderer()
-    : program_(engine::gl::Program::compile(
-          "shadow depth", {{GL_VERTEX_SHADER, std::string("#version 450 core\n") + shaders::depth_vert},
-                           {GL_FRAGMENT_SHADER, std::string("#version 450 core\n") + shaders::depth_frag}})) {}
+    : plain_(compileDepthProgram("shadow depth", "")),
+      peel2D_(compileDepthProgram("shadow depth peel", "#define PEEL\n")),
+      peelArray_(compileDepthProgram("shadow depth peel (cube)", "#define PEEL\n#define PEEL_ARRAY\n")) {}
 
 DepthDrawCounts DepthRenderer::render(const engine::Frame& frame, engine::PassContext& context,
-                                      unsigned map, int layer, int resolution,
-                                      const glm::dmat4& viewProjection,
-                                      const ShadowSettings& settings, bool drawCasters) {
+                                      unsigned target, int layer, int resolution,
+                                      const glm::dmat4& viewProjection, const DepthPassStyle& style,
+                                      bool drawCasters) {
     engine::gl::Framebuffer framebuffer = engine::gl::Framebuffer::create();
-    if (layer < 0) glNamedFramebufferTexture(framebuffer.id(), GL_DEPTH_ATTACHMENT, map, 0);
-    else glNamedFramebufferTextureLayer(framebuffer.id(), GL_DEPTH_ATTACHMENT, map, 0, layer);
+    if (layer < 0) glNamedFramebufferTexture(framebuffer.id(), GL_DEPTH_ATTACHMENT, target, 0);
+    else glNamedFramebufferTextureLayer(framebuffer.id(), GL_DEPTH_ATTACHMENT, target, 0, layer);
     glNamedFramebufferDrawBuffer(framebuffer.id(), GL_NONE);  // depth only: no color writes
     glNamedFramebufferReadBuffer(framebuffer.id(), GL_NONE);
     framebuffer.requireComplete("shadow map framebuffer");
@@ -41,12 +61,16 @@ DepthDrawCounts DepthRenderer::render(const engine::Frame& frame, engine::PassCo
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glDepthMask(GL_TRUE);
-    // Both faces: open casters must cast too; the offset keeps lit front faces from acne.
-    glDisable(GL_CULL_FACE);
-    glEnable(GL_POLYGON_OFFSET_FILL);
-    const glm::vec2 offset = settings.effectivePolygonOffset();
-    glPolygonOffset(offset.x, offset.y);
-    program_.use();
+    glCullFace(GL_FRONT);  // used only for closed casters under backFacesOnly
+
+    const engine::gl::Program& program =
+        !style.firstLayer ? plain_ : style.firstLayerIsArray ? peelArray_ : peel2D_;
+    program.use();
+    if (style.firstLayer) {
+        glBindTextureUnit(0, style.firstLayer);
+        if (style.firstLayerIsArray) program.set("uFirstLayerIndex", std::max(layer, 0));
+        program.set("uPeelEpsilon", style.peelEpsilon);
+    }
 
     const engine::Scene& scene = frame.scene();
     for (const engine::MeshInstance& instance : scene.meshInstances) {
@@ -55,8 +79,15 @@ DepthDrawCounts DepthRenderer::render(const engine::Frame& frame, engine::PassCo
             ++counts.castersCulled;
             continue;
         }
+        const bool backOnly = style.backFacesOnly && style.closedMeshes &&
+                              (*style.closedMeshes)[instance.mesh];
+        if (backOnly) glEnable(GL_CULL_FACE);
+        else glDisable(GL_CULL_FACE);
+        setPolygonOffset(style.backFacesOnly && !backOnly ? style.openCasterOffset : style.polygonOffset);
+        // A mirroring transform turns counter-clockwise triangles clockwise.
+        glFrontFace(glm::determinant(glm::dmat3(instance.world)) < 0.0 ? GL_CW : GL_CCW);
         // P_light * L^-1 * M in double: only the light-relative product is rounded.
-        program_.set("uLightModelViewProjection", glm::mat4(viewProjection * instance.world));
+        program.set("uLightModelViewProjection", glm::mat4(viewProjection * instance.world));
         for (const auto& primitive : frame.gpu().primitives(instance.mesh)) {
             const std::uint64_t triangles = frame.gpu().draw(primitive);
             context.countDraw(triangles);
@@ -65,7 +96,10 @@ DepthDrawCounts DepthRenderer::render(const engine::Frame& frame, engine::PassCo
         }
     }
     glDisable(GL_POLYGON_OFFSET_FILL);
+    glCullFace(GL_BACK);
+    glFrontFace(GL_CCW);
     glEnable(GL_CULL_FACE);
+    if (style.firstLayer) glBindTextureUnit(0, 0);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     return counts;
 }

@@ -1,14 +1,30 @@
 #pragma once
 // Renders depth from one light view into one layer of a shadow map: the depth pass every
 // variant and light type shares (spot and directional: the 2D map; point: one cube face).
-#include "plugin/ShadowSettings.h"
-
+// What differs between variants is a DepthPassStyle, not another renderer.
 #include "engine/gl/Program.h"
 #include "engine/render/Frame.h"
 
 #include <glm/glm.hpp>
 
+#include <vector>
+
 namespace shadowmap {
+
+struct DepthPassStyle {
+    // standard and woo: every face (open casters must cast too). backface: only faces
+    // turned away from the light, for casters that are closed; open ones are drawn with
+    // both faces (and openCasterOffset) so their shadow stays right.
+    bool backFacesOnly = false;
+    glm::vec2 polygonOffset{0.0f};      // for every draw (standard), or none
+    glm::vec2 openCasterOffset{0.0f};   // backface: the offset for two-sided open casters
+    const std::vector<bool>* closedMeshes = nullptr;  // backface: per Scene::meshes
+    // Woo pass 2: the nearest-layer depth to peel against (0: not peeling). A 2D texture,
+    // or a 2D array with one layer per cube face when firstLayerIsArray.
+    unsigned firstLayer = 0;
+    bool firstLayerIsArray = false;
+    float peelEpsilon = 0.0f;  // depth within which a fragment counts as the first layer
+};
 
 struct DepthDrawCounts {
     std::uint64_t draws = 0, triangles = 0, castersCulled = 0;
@@ -18,17 +34,16 @@ class DepthRenderer {
 public:
     DepthRenderer();
 
-    // Clears `layer` of `map` (-1: a 2D map) to the far depth and, when drawCasters, draws
-    // every shadow caster of the frame's scene whose bounds meet viewProjection =
-    // P_light * L^-1, with the settings' polygon offset. Counts draws in `context` (the
-    // graph's per-pass report). A cube face that sees no receiver is only cleared.
+    // Clears `layer` of `target` (-1: a 2D texture) to the far depth and, when drawCasters,
+    // draws every shadow caster of the frame's scene whose bounds meet viewProjection =
+    // P_light * L^-1. Counts draws in `context` (the graph's per-pass report).
     DepthDrawCounts render(const engine::Frame& frame, engine::PassContext& context,
-                           unsigned map, int layer, int resolution,
-                           const glm::dmat4& viewProjection, const ShadowSettings& settings,
+                           unsigned target, int layer, int resolution,
+                           const glm::dmat4& viewProjection, const DepthPassStyle& style,
                            bool drawCasters = true);
 
 private:
-    engine::gl::Program program_;
+    engine::gl::Program plain_, peel2D_, peelArray_;
 };
 
 } // namespace shadowmap

@@ -41,6 +41,7 @@ nlohmann::json LightShadow::stats() const {
                        {"triangles", frame.triangles},
                        {"casters_culled", frame.castersCulled}};
     if (!frame.skipReason.empty()) out["skip_reason"] = frame.skipReason;
+    if (settings.variant == Variant::Backface) out["open_casters"] = frame.openCasters;
     if (frame.kind == MapKind::Map2D) {
         out["near"] = frame.view.nearPlane;
         out["far"] = frame.view.farPlane;

@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include <string>
+#include <vector>
 
 namespace shadowmap {
 
@@ -25,6 +26,7 @@ struct LightShadowFrame {
     bool emptyFrustum = false;   // skipped because no visible receiver is inside it
     int facesRendered = 0, facesSkipped = 0;
     std::uint64_t draws = 0, triangles = 0, castersCulled = 0;
+    std::vector<std::string> openCasters;  // backface: casters drawn two-sided
 };
 
 struct LightShadow {

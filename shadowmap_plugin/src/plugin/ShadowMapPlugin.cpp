@@ -66,6 +66,15 @@ void ShadowMapPlugin::prepareScene(const engine::Scene& scene) {
 
     lights_.clear();
     warned_.clear();
+    // The backface variant may cull front faces only of closed casters; a double-sided
+    // material means the surface is meant to be seen (and to cast) from both sides.
+    closedMeshes_.assign(scene.meshes.size(), false);
+    for (std::size_t mesh = 0; mesh < scene.meshes.size(); ++mesh) {
+        bool closed = scene.meshes[mesh].closed;
+        for (const engine::Primitive& primitive : scene.meshes[mesh].primitives)
+            closed = closed && !(primitive.material >= 0 && scene.materials[primitive.material].doubleSided);
+        closedMeshes_[mesh] = closed;
+    }
     for (std::size_t slot = 0; slot < scene.lightInstances.size(); ++slot) {
         if (static_cast<int>(slot) == engine::kMaxLights) break;
         const engine::LightInstance& placed = scene.lightInstances[slot];
@@ -80,10 +89,6 @@ void ShadowMapPlugin::prepareScene(const engine::Scene& scene) {
             applySettings(shadow.settings, light.extras["shadow"], source, object + ": extras.shadow");
         if (auto found = variantOverrides_.find(shadow.name); found != variantOverrides_.end())
             shadow.settings.variant = found->second;
-        if (shadow.settings.variant == Variant::Woo || shadow.settings.variant == Variant::Backface)
-            engine::throwInputError(source, object,
-                                    std::string("shadow variant \"") + toString(shadow.settings.variant) +
-                                        "\" is not available in this build yet (use standard or none)");
         checkLimits(shadow.settings, maxTextureSize, source, object + ": extras.shadow");
         lights_.push_back(std::move(shadow));
     }
@@ -147,32 +152,94 @@ bool ShadowMapPlugin::planLight(LightShadow& light, const engine::Frame& frame,
     return true;
 }
 
-void ShadowMapPlugin::addDepthPass(LightShadow& light, engine::Frame& frame,
-                                   engine::ResourceHandle map) {
+void ShadowMapPlugin::renderMap(LightShadow& light, const engine::Frame& frame,
+                                engine::PassContext& context, unsigned target, bool targetIsArray,
+                                const DepthPassStyle& style) {
+    LightShadowFrame& plan = light.frame;
+    const auto add = [&plan](const DepthDrawCounts& counts) {
+        plan.draws += counts.draws;
+        plan.triangles += counts.triangles;
+        plan.castersCulled += counts.castersCulled;
+    };
+    const int size = light.settings.resolution;
+    if (plan.kind == MapKind::Map2D) {
+        add(depth_->render(frame, context, target, targetIsArray ? 0 : -1, size,
+                           plan.view.viewProjection(), style));
+        return;
+    }
+    for (int face = 0; face < 6; ++face) {
+        const LightView& view = plan.pointViews.faces[face];
+        // A face that sees no receiver is cleared (lookups there must read "far") but
+        // draws nothing.
+        add(depth_->render(frame, context, target, face, size, view.viewProjection(), style,
+                           !view.empty));
+    }
+}
+
+void ShadowMapPlugin::addDepthPasses(LightShadow& light, engine::Frame& frame,
+                                     engine::ResourceHandle map) {
+    const ShadowSettings& settings = light.settings;
+    const bool cube = light.frame.kind == MapKind::Cube;
+    light.frame.facesRendered = cube ? 0 : 1;
+    if (cube)
+        for (const LightView& view : light.frame.pointViews.faces)
+            (view.empty ? light.frame.facesSkipped : light.frame.facesRendered) += 1;
+
+    DepthPassStyle style;
+    style.polygonOffset = settings.effectivePolygonOffset();
+    if (settings.variant == Variant::Backface) {
+        style.backFacesOnly = true;
+        style.openCasterOffset = settings.standardPolygonOffset();
+        style.closedMeshes = &closedMeshes_;
+        reportOpenCasters(light, frame);
+    }
+    if (settings.variant != Variant::Woo) {
+        frame.graph().addPass(
+            "shadow_" + light.name, [map](engine::PassBuilder& builder) { (void)builder.write(map); },
+            [this, &light, &frame, map, style](engine::PassContext& context) {
+                renderMap(light, frame, context, context.texture(map), false, style);
+            });
+        return;
+    }
+    // Woo: the nearest layer first (a transient: one 2D layer, or one per cube face), then
+    // the midpoint pass peeling it into the light's map.
+    auto firstLayer = std::make_shared<engine::ResourceHandle>();
+    const engine::TextureDesc firstLayerDesc{settings.resolution, settings.resolution,
+                                             graphFormat(settings.depthFormat), cube ? 6 : 1, false};
     frame.graph().addPass(
-        "shadow_" + light.name, [map](engine::PassBuilder& builder) { (void)builder.write(map); },
-        [this, &light, &frame](engine::PassContext& context) {
-            LightShadowFrame& plan = light.frame;
-            const auto add = [&plan](const DepthDrawCounts& counts) {
-                plan.draws += counts.draws;
-                plan.triangles += counts.triangles;
-                plan.castersCulled += counts.castersCulled;
-            };
-            if (plan.kind == MapKind::Map2D) {
-                add(depth_->render(frame, context, light.map.id(), -1, light.settings.resolution,
-                                   plan.view.viewProjection(), light.settings));
-                plan.facesRendered = 1;
-                return;
-            }
-            for (int face = 0; face < 6; ++face) {
-                const LightView& view = plan.pointViews.faces[face];
-                // A face that sees no receiver is cleared (lookups there must read "far")
-                // but draws nothing.
-                add(depth_->render(frame, context, light.map.id(), face, light.settings.resolution,
-                                   view.viewProjection(), light.settings, !view.empty));
-                (view.empty ? plan.facesSkipped : plan.facesRendered) += 1;
-            }
+        "shadow_" + light.name + "_first_layer",
+        [&](engine::PassBuilder& builder) {
+            *firstLayer = builder.create("shadow_first_layer_" + light.name, firstLayerDesc);
+        },
+        [this, &light, &frame, firstLayer, cube](engine::PassContext& context) {
+            renderMap(light, frame, context, context.texture(*firstLayer), cube, DepthPassStyle{});
         });
+    frame.graph().addPass(
+        "shadow_" + light.name,
+        [map, firstLayer](engine::PassBuilder& builder) {
+            builder.read(*firstLayer);
+            (void)builder.write(map);
+        },
+        [this, &light, &frame, map, firstLayer, cube, style](engine::PassContext& context) {
+            DepthPassStyle peel = style;
+            peel.firstLayer = context.texture(*firstLayer);
+            peel.firstLayerIsArray = cube;
+            const double step = depthStep(light.settings.depthFormat);
+            peel.peelEpsilon = static_cast<float>(
+                light.settings.depthFormat == DepthFormat::D32F ? 4.0 * step : 2.0 * step);
+            renderMap(light, frame, context, context.texture(map), false, peel);
+        });
+}
+
+void ShadowMapPlugin::reportOpenCasters(LightShadow& light, const engine::Frame& frame) {
+    const engine::Scene& scene = frame.scene();
+    for (const engine::MeshInstance& instance : scene.meshInstances) {
+        if (!instance.castShadows || closedMeshes_[instance.mesh]) continue;
+        const std::string& node = scene.nodes[instance.node].name;
+        light.frame.openCasters.push_back(node);
+        warnOnce(light, "backface variant: caster \"" + node +
+                            "\" is not a closed mesh; drawn two-sided with polygon offset");
+    }
 }
 
 engine::LightVisibilityHook ShadowMapPlugin::makeHook(const engine::Frame& frame) {
@@ -250,7 +317,7 @@ void ShadowMapPlugin::addPasses(engine::Frame& frame) {
                                        light.type == engine::Light::Type::Point};
         const engine::ResourceHandle map =
             frame.graph().importTexture("shadow_map_" + light.name, desc, light.map.id());
-        addDepthPass(light, frame, map);
+        addDepthPasses(light, frame, map);
         maps.push_back(map);
     }
     engine::LightVisibilityHook hook = makeHook(frame);

@@ -32,13 +32,18 @@ public:
 private:
     bool planLight(LightShadow& light, const engine::Frame& frame, const ShadowBounds& bounds,
                    int& used2D, int& usedCube);
-    void addDepthPass(LightShadow& light, engine::Frame& frame, engine::ResourceHandle map);
+    void addDepthPasses(LightShadow& light, engine::Frame& frame, engine::ResourceHandle map);
+    // Renders the light's views (one 2D view or six cube faces) into `target` with `style`.
+    void renderMap(LightShadow& light, const engine::Frame& frame, engine::PassContext& context,
+                   unsigned target, bool targetIsArray, const DepthPassStyle& style);
+    void reportOpenCasters(LightShadow& light, const engine::Frame& frame);
     engine::LightVisibilityHook makeHook(const engine::Frame& frame);
     void warnOnce(const LightShadow& light, const std::string& message);
 
     ShadowSettings defaults_;
     std::map<std::string, Variant> variantOverrides_;  // --light NAME=VARIANT
     std::vector<LightShadow> lights_;                  // one per lit-pass light slot
+    std::vector<bool> closedMeshes_;                   // per mesh: closed, not double-sided
     std::unique_ptr<DepthRenderer> depth_;             // created with the first frame (needs GL)
     engine::gl::Texture unused2D_, unusedCube_;        // bound to sampler slots no light uses
     std::set<std::string> warned_;

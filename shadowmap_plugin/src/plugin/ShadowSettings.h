@@ -11,8 +11,11 @@
 //   resolution      1 .. GL_MAX_TEXTURE_SIZE (texels/side)     2048
 //   depth_format    "d16" | "d24" | "d32f"                     "d24"
 //   filter          "nearest" (1 tap) | "pcf" (2x2 bilinear)   "pcf"
-//   polygon_offset  [factor, units] (standard variant)         [1.0, 8.0] nearest,
-//                                                              [2.0, 8.0] pcf
+//   polygon_offset  [factor, units] of the depth pass           standard: [1.0, 8.0]
+//                                                              nearest, [2.0, 8.0] pcf;
+//                                                              woo, backface: none
+// woo and backface need no tuned offset (that is their point); backface still draws open
+// casters two-sided, with the standard offset.
 // The default offset departs from the seeds' (1, 4), for measured reasons:
 //  - units 8, not 4: the comparison's reference r/q is computed in float32, whose spacing
 //    near depth 1 is 2^-24, one d24 unit; with 4 units a floor facing a spot light head-on
@@ -47,10 +50,17 @@ struct ShadowSettings {
     int resolution = 2048;
     DepthFormat depthFormat = DepthFormat::D24;
     Filter filter = Filter::Pcf;
-    std::optional<glm::vec2> polygonOffset;  // unset: the filter's default
-    glm::vec2 effectivePolygonOffset() const {
+    std::optional<glm::vec2> polygonOffset;  // unset: the variant's default
+
+    // The offset a two-sided depth draw needs: the explicit one, else the filter's default.
+    glm::vec2 standardPolygonOffset() const {
         return polygonOffset ? *polygonOffset
                              : glm::vec2(filter == Filter::Pcf ? 2.0f : 1.0f, 8.0f);
+    }
+    // The offset of this light's depth pass.
+    glm::vec2 effectivePolygonOffset() const {
+        if (variant == Variant::Standard) return standardPolygonOffset();
+        return polygonOffset ? *polygonOffset : glm::vec2(0.0f);
     }
     float dimming = 0.4f;
 
@@ -69,6 +79,8 @@ void checkLimits(const ShadowSettings& settings, int maxTextureSize, const std::
                  const std::string& object);
 
 unsigned glInternalFormat(DepthFormat format);
+// The depth step of a format near 1 (fixed point: 1/(2^bits - 1); d32f: 2^-24).
+double depthStep(DepthFormat format);
 engine::TextureFormat graphFormat(DepthFormat format);
 
 } // namespace shadowmap
