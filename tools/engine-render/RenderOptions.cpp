@@ -7,7 +7,7 @@
 const char* const kRenderUsage =
     "usage: engine-render --config CONFIG.json --scene SCENE.gltf|.glb --out OUT.png\n"
     "  [--width W] [--height H] [--camera NAME]\n"
-    "  [--light NAME=VARIANT]... [--shadow-mask NAME=MASK.png]...\n"
+    "  [--light NAME=VARIANT]... [--shadow-mask NAME=MASK.png]... [--shadow-map NAME=MAP.png]...\n"
     "  [--frames N] [--stats STATS.json] [--graph-dot GRAPH.dot]\n";
 
 namespace {
@@ -52,6 +52,7 @@ RenderOptions parseRenderOptions(int argc, char** argv) {
         else if (flag == "--camera") options.camera = value;
         else if (flag == "--light") options.lightVariants.push_back(parseAssignment(flag, value));
         else if (flag == "--shadow-mask") options.shadowMasks.push_back(parseAssignment(flag, value));
+        else if (flag == "--shadow-map") options.shadowMaps.push_back(parseAssignment(flag, value));
         else if (flag == "--frames") options.frames = parsePositive(flag, value, 100000);
         else if (flag == "--stats") options.stats = value;
         else if (flag == "--graph-dot") options.graphDot = value;

@@ -12,6 +12,7 @@ struct RenderOptions {
     std::string camera;                                       // empty: first glTF camera
     std::vector<std::pair<std::string, std::string>> lightVariants;  // --light NAME=VARIANT
     std::vector<std::pair<std::string, std::string>> shadowMasks;    // --shadow-mask NAME=FILE
+    std::vector<std::pair<std::string, std::string>> shadowMaps;     // --shadow-map NAME=FILE
     int frames = 1;
     std::string stats;      // JSON
     std::string graphDot;   // graphviz of the last frame's compiled graph

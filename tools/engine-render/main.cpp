@@ -1,5 +1,6 @@
 // engine-render: renders one glTF scene headless (EGL surfaceless) and writes a PNG,
 // optionally per-light shadow masks, per-pass statistics and the compiled frame graph.
+#include "DepthImage.h"
 #include "RenderOptions.h"
 
 #include "engine/config/EngineConfig.h"
@@ -114,6 +115,12 @@ int run(const RenderOptions& options, engine::PluginHost& host) {
     for (const auto& [light, file] : options.shadowMasks)
         request.shadowMaskSlots.push_back(lightSlot(scene, options.scene, light));
 
+    // The shadow plugin publishes each light's map as "shadow_map_<light>" in the frame graph.
+    for (const auto& [light, file] : options.shadowMaps) {
+        lightSlot(scene, options.scene, light);  // the light must exist
+        request.depthReadbacks.push_back("shadow_map_" + light);
+    }
+
     std::vector<double> frameMs;
     std::vector<std::string> order;
     std::map<std::string, PassSummary> passes;
@@ -136,6 +143,15 @@ int run(const RenderOptions& options, engine::PluginHost& host) {
     for (std::size_t i = 0; i < options.shadowMasks.size(); ++i)
         engine::writePngAtomically(options.shadowMasks[i].second, options.width, options.height, 1,
                                    renderer.readShadowMask(request.shadowMaskSlots[i]));
+    for (const auto& [light, file] : options.shadowMaps) {
+        const auto found = last.depthReadbacks.find("shadow_map_" + light);
+        if (found == last.depthReadbacks.end())
+            throw engine::InputError("--shadow-map " + light + ": the light has no shadow map this frame "
+                                     "(variant none, nothing in its frustum, or no shadow plugin)");
+        int width = 0, height = 0;
+        const auto gray = depthToGray(found->second, width, height);
+        engine::writePngAtomically(file, width, height, 1, gray);
+    }
     if (!options.stats.empty())
         engine::writeFileAtomically(options.stats,
                                     statsJson(options, frameMs, order, passes, last).dump(2));

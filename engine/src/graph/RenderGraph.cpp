@@ -82,6 +82,16 @@ ResourceHandle RenderGraph::find(const std::string& name) const {
     return it == resourceByName_.end() ? ResourceHandle{} : ResourceHandle{it->second};
 }
 
+std::uint32_t RenderGraph::importedPhysical(ResourceHandle resource) const {
+    if (!resource.valid() || resource.index >= static_cast<int>(resources_.size())) return 0;
+    const Resource& found = resources_[resource.index];
+    return found.imported ? found.physical : 0;
+}
+
+const TextureDesc& RenderGraph::descOf(ResourceHandle resource) const {
+    return resources_.at(resource.index).desc;
+}
+
 ResourceHandle PassBuilder::create(const std::string& name, const TextureDesc& desc) {
     RenderGraph::Resource resource{.name = name, .desc = desc};
     const int index = graph_.addResource(std::move(resource), pass_);

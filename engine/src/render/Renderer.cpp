@@ -60,6 +60,17 @@ FrameResult Renderer::renderFrame(const FrameRequest& request) {
     glFinish();
 
     FrameResult result;
+    for (const std::string& name : request.depthReadbacks) {
+        const ResourceHandle resource = graph.find(name);
+        const std::uint32_t texture = graph.importedPhysical(resource);
+        if (!texture || !isDepthFormat(graph.descOf(resource).format)) continue;
+        const TextureDesc& desc = graph.descOf(resource);
+        DepthReadback& readback = result.depthReadbacks[name];
+        readback.width = desc.width;
+        readback.height = desc.height;
+        readback.layers = desc.cube ? 6 : desc.layers;
+        readback.depth = readDepthLayersTopDown(texture, desc.width, desc.height, readback.layers);
+    }
     result.passes = graph.reports();
     result.graphviz = graph.graphviz();
     result.shadowTermProvided = frame.lightVisibility().has_value();

@@ -7,16 +7,19 @@ namespace engine {
 namespace {
 
 template <typename T>
-std::vector<T> readTopDown(const gl::Texture& texture, GLenum format, GLenum type, int channels) {
-    const int width = texture.width(), height = texture.height();
+std::vector<T> readTopDown(unsigned texture, int width, int height, int layers, GLenum format,
+                           GLenum type, int channels) {
     const std::size_t rowElements = static_cast<std::size_t>(width) * channels;
-    std::vector<T> pixels(rowElements * height);
+    std::vector<T> pixels(rowElements * height * layers);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glGetTextureImage(texture.id(), 0, format, type, static_cast<GLsizei>(pixels.size() * sizeof(T)),
+    glGetTextureImage(texture, 0, format, type, static_cast<GLsizei>(pixels.size() * sizeof(T)),
                       pixels.data());
-    for (int row = 0; row < height / 2; ++row)
-        std::swap_ranges(pixels.begin() + row * rowElements, pixels.begin() + (row + 1) * rowElements,
-                         pixels.begin() + (height - 1 - row) * rowElements);
+    for (int layer = 0; layer < layers; ++layer) {
+        const auto first = pixels.begin() + layer * rowElements * height;
+        for (int row = 0; row < height / 2; ++row)
+            std::swap_ranges(first + row * rowElements, first + (row + 1) * rowElements,
+                             first + (height - 1 - row) * rowElements);
+    }
     return pixels;
 }
 
@@ -32,11 +35,17 @@ GLenum formatForChannels(int channels) {
 } // namespace
 
 std::vector<std::uint8_t> readTextureRGBA8TopDown(const gl::Texture& texture) {
-    return readTopDown<std::uint8_t>(texture, GL_RGBA, GL_UNSIGNED_BYTE, 4);
+    return readTopDown<std::uint8_t>(texture.id(), texture.width(), texture.height(), 1, GL_RGBA,
+                                     GL_UNSIGNED_BYTE, 4);
 }
 
 std::vector<float> readTextureFloatTopDown(const gl::Texture& texture, int channels) {
-    return readTopDown<float>(texture, formatForChannels(channels), GL_FLOAT, channels);
+    return readTopDown<float>(texture.id(), texture.width(), texture.height(), 1,
+                              formatForChannels(channels), GL_FLOAT, channels);
+}
+
+std::vector<float> readDepthLayersTopDown(unsigned texture, int width, int height, int layers) {
+    return readTopDown<float>(texture, width, height, layers, GL_DEPTH_COMPONENT, GL_FLOAT, 1);
 }
 
 } // namespace engine

@@ -45,6 +45,11 @@ nlohmann::json LightShadow::stats() const {
     if (frame.kind == MapKind::Map2D) {
         out["near"] = frame.view.nearPlane;
         out["far"] = frame.view.farPlane;
+        // L (light -> world), column-major, so tools can reproduce the map's depths.
+        std::vector<double> lightToWorld;
+        for (int column = 0; column < 4; ++column)
+            for (int row = 0; row < 4; ++row) lightToWorld.push_back(frame.view.lightToWorld[column][row]);
+        out["light_to_world"] = lightToWorld;
     } else if (frame.kind == MapKind::Cube) {
         out["near"] = frame.pointViews.nearPlane;
         out["far"] = frame.pointViews.farPlane;

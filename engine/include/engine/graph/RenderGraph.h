@@ -119,6 +119,10 @@ public:
 
     // Introspection (valid after compile()).
     ResourceHandle find(const std::string& name) const;  // invalid handle when unknown
+    // An import's physical handle and description (for reading a map back after the frame,
+    // e.g. a debug view); 0 for transients, whose textures go back to the allocator.
+    std::uint32_t importedPhysical(ResourceHandle resource) const;
+    const TextureDesc& descOf(ResourceHandle resource) const;
     std::vector<std::string> executionOrder() const;      // surviving pass names
     int physicalSlotCount() const { return slotCount_; }  // textures the aliasing plan needs
     int physicalSlot(ResourceHandle resource) const;      // -1 for imports and unused transients

@@ -13,6 +13,8 @@
 #include <nlohmann/json.hpp>
 
 #include <cstdint>
+#include <map>
+#include <string>
 #include <memory>
 #include <vector>
 
@@ -22,6 +24,14 @@ struct FrameRequest {
     FrameCamera camera;
     std::vector<int> shadowMaskSlots;  // lights (slots) whose shade is also rendered
     bool timing = false;               // close every pass with glFinish and time it
+    // Imported depth textures to read back after the frame, by graph name (the shadow
+    // plugin publishes each light's map as "shadow_map_<light>"). Unknown names are skipped.
+    std::vector<std::string> depthReadbacks;
+};
+
+struct DepthReadback {
+    int width = 0, height = 0, layers = 1;  // layers: 6 for a cube (GL face order)
+    std::vector<float> depth;               // layer after layer, each top row first
 };
 
 struct FrameResult {
@@ -30,6 +40,7 @@ struct FrameResult {
     nlohmann::json pluginStats = nlohmann::json::object();
     std::string graphviz;
     bool shadowTermProvided = false;  // a plugin installed the lit pass's visibility hook
+    std::map<std::string, DepthReadback> depthReadbacks;
 };
 
 class Renderer {

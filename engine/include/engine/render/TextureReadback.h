@@ -10,5 +10,7 @@ namespace engine {
 
 std::vector<std::uint8_t> readTextureRGBA8TopDown(const gl::Texture& texture);
 std::vector<float> readTextureFloatTopDown(const gl::Texture& texture, int channels);
+// Every layer (cube faces in GL order, array layers) of a depth texture, each top row first.
+std::vector<float> readDepthLayersTopDown(unsigned texture, int width, int height, int layers);
 
 } // namespace engine
