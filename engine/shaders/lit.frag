@@ -4,7 +4,9 @@
 // DESIGN.md with the plugin's per-light visibility term:
 //   diffuseShade = d + (1 - d) * shade
 //   color = emissive + ambient * albedo + sum(diffuseShade * diffuse + shade * specular)
-// The engine prepends "#version 450 core", MAX_LIGHTS and then appends the visibility hook.
+// The engine prepends "#version 450 core", MAX_LIGHTS and LIGHT_COUNT (the scene's lights:
+// a compile-time count lets the compiler unroll the loop, so each iteration calls the
+// hook with a constant slot and its per-slot dispatch folds away), then appends the hook.
 const int LIGHT_DIRECTIONAL = 0;
 const int LIGHT_SPOT = 1;
 const int LIGHT_POINT = 2;
@@ -19,7 +21,6 @@ struct LightData {
 layout(std140, binding = 0) uniform Lights {
     LightData uLights[MAX_LIGHTS];
 };
-uniform int uLightCount;
 uniform vec3 uAmbient;
 
 uniform vec4 uBaseColorFactor;
@@ -73,7 +74,7 @@ void main() {
     float shininess = min(2.0 / (alpha * alpha) - 2.0, 2048.0);
 
     vec3 color = uEmissive + uAmbient * albedo.rgb;
-    for (int i = 0; i < uLightCount; ++i) {
+    for (int i = 0; i < LIGHT_COUNT; ++i) {
         LightData light = uLights[i];
         int type = int(light.directionType.w);
         vec3 L;

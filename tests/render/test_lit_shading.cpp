@@ -34,8 +34,10 @@ engine::Scene planeScene(float roughness) {
     plane.normals.assign(4, glm::vec3(0, 0, 1));
     plane.indices = {0, 1, 2, 0, 2, 3};
     plane.material = 0;
+    for (const glm::vec3& p : plane.positions) plane.bounds.extend(glm::dvec3(p));
     engine::Mesh mesh;
     mesh.primitives.push_back(plane);
+    mesh.bounds = plane.bounds;  // the renderer culls by bounds
     scene.meshes.push_back(mesh);
     engine::Material material;
     material.baseColorFactor = glm::vec4(glm::vec3(kAlbedo), 1.0f);

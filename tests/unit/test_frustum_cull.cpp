@@ -1,6 +1,6 @@
 // Box-versus-frustum culling from a view-projection matrix: exact answers for clear cases,
 // never a false "outside" (checked against sampled points), and unchanged 10^6 from the origin.
-#include "math/FrustumCull.h"
+#include "engine/scene/FrustumCull.h"
 
 #include <gtest/gtest.h>
 
@@ -10,7 +10,7 @@
 namespace {
 
 using engine::Aabb;
-using shadowmap::boxIntersectsFrustum;
+using engine::boxIntersectsFrustum;
 
 Aabb box(glm::dvec3 a, glm::dvec3 b) {
     Aabb out;

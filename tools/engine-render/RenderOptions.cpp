@@ -8,7 +8,8 @@ const char* const kRenderUsage =
     "usage: engine-render --config CONFIG.json --scene SCENE.gltf|.glb --out OUT.png\n"
     "  [--width W] [--height H] [--camera NAME]\n"
     "  [--light NAME=VARIANT]... [--shadow-mask NAME=MASK.png]... [--shadow-map NAME=MAP.png]...\n"
-    "  [--frames N] [--stats STATS.json] [--graph-dot GRAPH.dot]\n";
+    "  [--frames N] [--stats STATS.json] [--graph-dot GRAPH.dot]\n"
+    "  [--key-light spot|point|directional] [--orbit-light NAME] [--orbit-camera]\n";
 
 namespace {
 
@@ -42,6 +43,10 @@ RenderOptions parseRenderOptions(int argc, char** argv) {
             return options;
         }
         if (flag.rfind("--", 0) != 0) throw std::invalid_argument("unexpected argument \"" + flag + "\"");
+        if (flag == "--orbit-camera") {
+            options.orbitCamera = true;
+            continue;
+        }
         if (i + 1 >= argc) throw std::invalid_argument(flag + ": missing value");
         const std::string value = argv[++i];
         if (flag == "--config") options.config = value;
@@ -56,6 +61,11 @@ RenderOptions parseRenderOptions(int argc, char** argv) {
         else if (flag == "--frames") options.frames = parsePositive(flag, value, 100000);
         else if (flag == "--stats") options.stats = value;
         else if (flag == "--graph-dot") options.graphDot = value;
+        else if (flag == "--key-light") {
+            if (value != "spot" && value != "point" && value != "directional")
+                throw std::invalid_argument("--key-light: \"" + value + "\" is not spot, point or directional");
+            options.keyLight = value;
+        } else if (flag == "--orbit-light") options.orbitLight = value;
         else throw std::invalid_argument("unknown option " + flag);
     }
     if (!sawScene) throw std::invalid_argument("--scene is required");

@@ -14,6 +14,9 @@ struct RenderOptions {
     std::vector<std::pair<std::string, std::string>> shadowMasks;    // --shadow-mask NAME=FILE
     std::vector<std::pair<std::string, std::string>> shadowMaps;     // --shadow-map NAME=FILE
     int frames = 1;
+    std::string keyLight;     // --key-light spot|point|directional: add a light from the bounds
+    std::string orbitLight;   // --orbit-light NAME: turn that light 2 degrees per frame
+    bool orbitCamera = false; // --orbit-camera: turn the camera 2 degrees per frame
     std::string stats;      // JSON
     std::string graphDot;   // graphviz of the last frame's compiled graph
     bool help = false;

@@ -2,6 +2,7 @@
 
 #include "engine/gl/Framebuffer.h"
 #include "engine/render/SceneGpu.h"
+#include "engine/scene/FrustumCull.h"
 #include "engine/scene/Scene.h"
 
 #include <glm/gtc/type_ptr.hpp>
@@ -47,15 +48,16 @@ LitPass::LitPass(const RendererConfig& config)
       lightBuffer_(gl::Buffer::create(sizeof(LightData) * kMaxLights, nullptr,
                                       GL_DYNAMIC_STORAGE_BIT)) {}
 
-const gl::Program& LitPass::programFor(const std::string& visibilityGlsl) {
-    auto found = programs_.find(visibilityGlsl);
+const gl::Program& LitPass::programFor(const std::string& visibilityGlsl, int lightCount) {
+    const std::string header = "#version 450 core\n#define MAX_LIGHTS " + std::to_string(kMaxLights) +
+                               "\n#define LIGHT_COUNT " + std::to_string(lightCount) + "\n";
+    const std::string key = header + visibilityGlsl;
+    auto found = programs_.find(key);
     if (found != programs_.end()) return *found->second;
-    const std::string header =
-        "#version 450 core\n#define MAX_LIGHTS " + std::to_string(kMaxLights) + "\n";
     auto program = std::make_unique<gl::Program>(gl::Program::compile(
         "lit", {{GL_VERTEX_SHADER, header + shaders::lit_vert},
                 {GL_FRAGMENT_SHADER, header + shaders::lit_frag + "\n" + visibilityGlsl}}));
-    return *programs_.emplace(visibilityGlsl, std::move(program)).first->second;
+    return *programs_.emplace(key, std::move(program)).first->second;
 }
 
 void LitPass::uploadLights(const Scene& scene, const FrameCamera& camera) {
@@ -82,12 +84,18 @@ void LitPass::drawScene(const Frame& frame, const gl::Program& program, PassCont
     const Scene& scene = frame.scene();
     const glm::dmat4 view = glm::inverse(frame.camera().eyeToWorld);
     program.set("uProjection", glm::mat4(frame.camera().projection));
-    program.set("uLightCount", lightCount_);
     program.set("uAmbient", config_.ambient);
     glBindBufferBase(GL_UNIFORM_BUFFER, 0, lightBuffer_.id());
 
     static const Material kDefaultMaterial{};
+    const glm::dmat4 viewProjection = frame.camera().projection * view;
+    culledInstances_ = 0;
     for (const MeshInstance& instance : scene.meshInstances) {
+        // Camera culling: a mesh whose bounds miss the view frustum costs no draw.
+        if (!boxIntersectsFrustum(viewProjection, instance.worldBounds)) {
+            ++culledInstances_;
+            continue;
+        }
         // Compose in double so only the camera-relative result is rounded to float.
         const glm::dmat4 modelView = view * instance.world;
         const glm::dmat3 normalMatrix = glm::transpose(glm::inverse(glm::dmat3(modelView)));
@@ -120,7 +128,9 @@ void LitPass::drawScene(const Frame& frame, const gl::Program& program, PassCont
 void LitPass::addPass(Frame& frame, const std::string& name, ResourceHandle target, Output output,
                       int maskSlot) {
     const auto& hook = frame.lightVisibility();
-    const gl::Program& program = programFor(hook ? hook->glsl : kNoShadowsGlsl);
+    const int lightCount =
+        std::min(static_cast<int>(frame.scene().lightInstances.size()), kMaxLights);
+    const gl::Program& program = programFor(hook ? hook->glsl : kNoShadowsGlsl, lightCount);
     // Setup runs inside addPass, after both callbacks were built: share the handles it
     // declares with the execute callback through one small heap object.
     struct Handles { ResourceHandle target, depth; };

@@ -74,6 +74,7 @@ FrameResult Renderer::renderFrame(const FrameRequest& request) {
     result.passes = graph.reports();
     result.graphviz = graph.graphviz();
     result.shadowTermProvided = frame.lightVisibility().has_value();
+    result.litInstancesCulled = litPass_->culledInstances();
     for (RenderPlugin* plugin : plugins_) result.pluginStats[plugin->name()] = plugin->frameStats();
     result.frameMs =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();

@@ -1,8 +1,8 @@
-#include "math/FrustumCull.h"
+#include "engine/scene/FrustumCull.h"
 
 #include <glm/gtc/matrix_access.hpp>
 
-namespace shadowmap {
+namespace engine {
 
 std::array<glm::dvec4, 6> frustumPlanes(const glm::dmat4& m) {
     // Clip-space point c = m * x is inside when -w <= x,y,z <= w; each inequality is a
@@ -12,7 +12,7 @@ std::array<glm::dvec4, 6> frustumPlanes(const glm::dmat4& m) {
     return {r3 + r0, r3 - r0, r3 + r1, r3 - r1, r3 + r2, r3 - r2};
 }
 
-bool boxIntersectsFrustum(const glm::dmat4& viewProjection, const engine::Aabb& box) {
+bool boxIntersectsFrustum(const glm::dmat4& viewProjection, const Aabb& box) {
     if (box.empty()) return false;
     for (const glm::dvec4& plane : frustumPlanes(viewProjection)) {
         // The box corner farthest along the plane normal; if even it is outside, all are.
@@ -24,4 +24,4 @@ bool boxIntersectsFrustum(const glm::dmat4& viewProjection, const engine::Aabb& 
     return true;
 }
 
-}  // namespace shadowmap
+}  // namespace engine

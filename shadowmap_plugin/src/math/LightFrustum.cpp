@@ -1,6 +1,6 @@
 #include "math/LightFrustum.h"
 
-#include "math/FrustumCull.h"
+#include "engine/scene/FrustumCull.h"
 #include "math/Texgen.h"
 
 #include <algorithm>
@@ -386,7 +386,7 @@ PointLightViews fitPointLight(const engine::LightInstance& instance, const engin
 
 bool PointLightViews::faceSeesBox(int face, const engine::Aabb& worldBox) const {
     if (!valid || face < 0 || face >= 6) return false;
-    return boxIntersectsFrustum(faces[face].viewProjection(), worldBox);
+    return engine::boxIntersectsFrustum(faces[face].viewProjection(), worldBox);
 }
 
 }  // namespace shadowmap

@@ -1,6 +1,6 @@
 #include "plugin/DepthRenderer.h"
 
-#include "math/FrustumCull.h"
+#include "engine/scene/FrustumCull.h"
 
 #include "engine/gl/Framebuffer.h"
 #include "engine/render/SceneGpu.h"
@@ -75,7 +75,7 @@ DepthDrawCounts DepthRenderer::render(const engine::Frame& frame, engine::PassCo
     const engine::Scene& scene = frame.scene();
     for (const engine::MeshInstance& instance : scene.meshInstances) {
         if (!instance.castShadows) continue;
-        if (!boxIntersectsFrustum(viewProjection, instance.worldBounds)) {
+        if (!engine::boxIntersectsFrustum(viewProjection, instance.worldBounds)) {
             ++counts.castersCulled;
             continue;
         }

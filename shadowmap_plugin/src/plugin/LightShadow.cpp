@@ -16,6 +16,7 @@ void LightShadow::ensureMap() {
         map.setParameter(GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
         map.setParameter(GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
         map.setParameter(GL_TEXTURE_WRAP_R, GL_CLAMP_TO_EDGE);
+        renderedKey = 0;  // a new texture holds nothing yet
     }
     // GL_LINEAR on a depth-compare texture is 2x2 percentage-closer filtering.
     const GLint filter = settings.filter == Filter::Pcf ? GL_LINEAR : GL_NEAREST;
@@ -42,6 +43,7 @@ nlohmann::json LightShadow::stats() const {
                        {"casters_culled", frame.castersCulled}};
     if (!frame.skipReason.empty()) out["skip_reason"] = frame.skipReason;
     if (settings.variant == Variant::Backface) out["open_casters"] = frame.openCasters;
+    if (frame.kind != MapKind::None) out["cache"] = frame.cacheHit ? "hit" : "miss";
     if (frame.kind == MapKind::Map2D) {
         out["near"] = frame.view.nearPlane;
         out["far"] = frame.view.farPlane;

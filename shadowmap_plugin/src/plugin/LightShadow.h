@@ -19,7 +19,6 @@ enum class MapKind { None = 0, Map2D = 1, Cube = 2 };
 
 struct LightShadowFrame {
     MapKind kind = MapKind::None;
-    int samplerIndex = -1;       // index into the hook's sampler array of its kind
     LightView view;              // spot / directional
     PointLightViews pointViews;  // point
     std::string skipReason;      // why no map this frame (variant none, empty frustum...)
@@ -27,6 +26,7 @@ struct LightShadowFrame {
     int facesRendered = 0, facesSkipped = 0;
     std::uint64_t draws = 0, triangles = 0, castersCulled = 0;
     std::vector<std::string> openCasters;  // backface: casters drawn two-sided
+    bool cacheHit = false;                 // the map was still right: no depth pass
 };
 
 struct LightShadow {
@@ -36,6 +36,8 @@ struct LightShadow {
     ShadowSettings settings;
     engine::gl::Texture map;
     LightShadowFrame frame;
+    // Key of the inputs the map was last rendered from (MapCacheKey.h); 0 = none.
+    std::uint64_t renderedKey = 0;
 
     // (Re)creates the map when size, format, filter or kind changed, with the comparison
     // state the visibility hook relies on (GL_COMPARE_REF_TO_TEXTURE, GL_LEQUAL).

@@ -2,14 +2,25 @@
 // built-in ones overridden by the "settings" of the engine config (unknown keys refused).
 #include "plugin/ShadowMapPlugin.h"
 
+#include "engine/util/JsonRead.h"
+
 #include <engine_plugin/PluginAbi.h>
 
 namespace {
 
+// Plugin-wide keys besides the per-light defaults of ShadowSettings.h:
+//   "cache_maps": true (default) keeps a light's map across frames while nothing it
+//   depends on changed; false re-renders every map every frame (for timing the passes).
 void registerShadowMap(engine::PluginRegistry* registry, const char* settingsJson) {
+    nlohmann::json settings = nlohmann::json::parse(settingsJson);
+    bool cacheMaps = true;
+    if (settings.contains("cache_maps")) {
+        cacheMaps = engine::json::readBool(settings["cache_maps"], "", "settings.cache_maps");
+        settings.erase("cache_maps");
+    }
     shadowmap::ShadowSettings defaults;
-    shadowmap::applySettings(defaults, nlohmann::json::parse(settingsJson), "", "settings");
-    registry->addRenderPlugin(std::make_unique<shadowmap::ShadowMapPlugin>(defaults));
+    shadowmap::applySettings(defaults, settings, "", "settings");
+    registry->addRenderPlugin(std::make_unique<shadowmap::ShadowMapPlugin>(defaults, cacheMaps));
 }
 
 } // namespace

@@ -1,6 +1,8 @@
 #include "plugin/ShadowMapPlugin.h"
 
-#include "math/FrustumCull.h"
+#include "plugin/MapCacheKey.h"
+
+#include "engine/scene/FrustumCull.h"
 #include "math/LightFrustum.h"
 #include "math/Texgen.h"
 
@@ -34,19 +36,10 @@ ShadowBounds frameBounds(const engine::Frame& frame) {
     ShadowBounds bounds;
     for (const engine::MeshInstance& instance : frame.scene().meshInstances) {
         if (instance.castShadows) bounds.casters.push_back(instance.worldBounds);
-        if (instance.receiveShadows && boxIntersectsFrustum(cameraViewProjection, instance.worldBounds))
+        if (instance.receiveShadows && engine::boxIntersectsFrustum(cameraViewProjection, instance.worldBounds))
             bounds.receivers.push_back(instance.worldBounds);
     }
     return bounds;
-}
-
-engine::gl::Texture unusedDepthTexture(bool cube) {
-    engine::gl::Texture texture = cube ? engine::gl::Texture::createCube(GL_DEPTH_COMPONENT16, 1)
-                                       : engine::gl::Texture::create2D(GL_DEPTH_COMPONENT16, 1, 1);
-    texture.setParameter(GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
-    texture.setParameter(GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    texture.setParameter(GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    return texture;
 }
 
 } // namespace
@@ -60,12 +53,15 @@ void ShadowMapPlugin::prepareScene(const engine::Scene& scene) {
     const std::string source = scene.sourcePath;
     GLint maxTextureSize = 0;
     glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxTextureSize);
+    glGetIntegerv(GL_MAX_TEXTURE_IMAGE_UNITS, &maxTextureUnits_);
     for (const auto& [name, variant] : variantOverrides_)
         if (scene.findLightInstance(name) < 0)
             engine::throwInputError(source, "--light " + name, "no light of that name in the scene");
 
     lights_.clear();
     warned_.clear();
+    ++sceneGeneration_;
+    cacheHits_ = cacheMisses_ = 0;
     // The backface variant may cull front faces only of closed casters; a double-sided
     // material means the surface is meant to be seen (and to cast) from both sides.
     closedMeshes_.assign(scene.meshes.size(), false);
@@ -100,7 +96,7 @@ void ShadowMapPlugin::warnOnce(const LightShadow& light, const std::string& mess
 }
 
 bool ShadowMapPlugin::planLight(LightShadow& light, const engine::Frame& frame,
-                                const ShadowBounds& bounds, int& used2D, int& usedCube) {
+                                const ShadowBounds& bounds) {
     LightShadowFrame& plan = light.frame;
     plan = {};
     const engine::Scene& scene = frame.scene();
@@ -139,16 +135,14 @@ bool ShadowMapPlugin::planLight(LightShadow& light, const engine::Frame& frame,
         plan.emptyFrustum = true;
         return false;
     }
-    const bool cube = light.type == engine::Light::Type::Point;
-    int& used = cube ? usedCube : used2D;
-    if (used == (cube ? kMaxCubeMaps : kMax2DMaps)) {
-        plan.skipReason = "too many shadowed lights of this kind (limit " +
-                          std::to_string(cube ? kMaxCubeMaps : kMax2DMaps) + ")";
+    // Each shadowed light samples its map on unit kFirstUnit + slot.
+    if (kFirstUnit + light.slot >= maxTextureUnits_) {
+        plan.skipReason = "no texture unit left for its map (GL_MAX_TEXTURE_IMAGE_UNITS " +
+                          std::to_string(maxTextureUnits_) + ")";
         warnOnce(light, plan.skipReason);
         return false;
     }
-    plan.kind = cube ? MapKind::Cube : MapKind::Map2D;
-    plan.samplerIndex = used++;
+    plan.kind = light.type == engine::Light::Type::Point ? MapKind::Cube : MapKind::Map2D;
     return true;
 }
 
@@ -177,7 +171,7 @@ void ShadowMapPlugin::renderMap(LightShadow& light, const engine::Frame& frame,
 }
 
 void ShadowMapPlugin::addDepthPasses(LightShadow& light, engine::Frame& frame,
-                                     engine::ResourceHandle map) {
+                                     engine::ResourceHandle map, std::uint64_t key) {
     const ShadowSettings& settings = light.settings;
     const bool cube = light.frame.kind == MapKind::Cube;
     light.frame.facesRendered = cube ? 0 : 1;
@@ -196,8 +190,9 @@ void ShadowMapPlugin::addDepthPasses(LightShadow& light, engine::Frame& frame,
     if (settings.variant != Variant::Woo) {
         frame.graph().addPass(
             "shadow_" + light.name, [map](engine::PassBuilder& builder) { (void)builder.write(map); },
-            [this, &light, &frame, map, style](engine::PassContext& context) {
+            [this, &light, &frame, map, style, key](engine::PassContext& context) {
                 renderMap(light, frame, context, context.texture(map), false, style);
+                light.renderedKey = key;  // only now does the map hold what the key says
             });
         return;
     }
@@ -220,7 +215,7 @@ void ShadowMapPlugin::addDepthPasses(LightShadow& light, engine::Frame& frame,
             builder.read(*firstLayer);
             (void)builder.write(map);
         },
-        [this, &light, &frame, map, firstLayer, cube, style](engine::PassContext& context) {
+        [this, &light, &frame, map, firstLayer, cube, style, key](engine::PassContext& context) {
             DepthPassStyle peel = style;
             peel.firstLayer = context.texture(*firstLayer);
             peel.firstLayerIsArray = cube;
@@ -228,6 +223,7 @@ void ShadowMapPlugin::addDepthPasses(LightShadow& light, engine::Frame& frame,
             peel.peelEpsilon = static_cast<float>(
                 light.settings.depthFormat == DepthFormat::D32F ? 4.0 * step : 2.0 * step);
             renderMap(light, frame, context, context.texture(map), false, peel);
+            light.renderedKey = key;
         });
 }
 
@@ -250,8 +246,11 @@ engine::LightVisibilityHook ShadowMapPlugin::makeHook(const engine::Frame& frame
     std::vector<glm::mat4> eyePlanes(engine::kMaxLights, glm::mat4(0.0f));
     std::vector<glm::vec4> pointLight(engine::kMaxLights, glm::vec4(0.0f));
     std::vector<float> pointFar(engine::kMaxLights, 1.0f);
-    std::vector<unsigned> maps2D(kMax2DMaps, unused2D_.id()), mapsCube(kMaxCubeMaps, unusedCube_.id());
+    std::vector<std::pair<int, unsigned>> units;  // texture unit, map
 
+    // The generated part of the hook: one sampler per shadowed light and a dispatch on the
+    // slot with constant arguments (see visibility.glsl for why).
+    std::string samplers, dispatch;
     for (const LightShadow& light : lights_) {
         const LightShadowFrame& plan = light.frame;
         // Outside a spot light's frustum is outside its cone: never lit by it. Directional
@@ -261,28 +260,32 @@ engine::LightVisibilityHook ShadowMapPlugin::makeHook(const engine::Frame& frame
             if (plan.emptyFrustum) params[light.slot] = glm::vec4(0.0f, 0.0f, 0.0f, outsideShade);
             continue;
         }
-        params[light.slot] = glm::vec4(static_cast<float>(plan.kind), static_cast<float>(plan.samplerIndex),
-                                       light.settings.dimming, outsideShade);
+        params[light.slot] = glm::vec4(0.0f, 0.0f, light.settings.dimming, outsideShade);
+        const std::string slot = std::to_string(light.slot);
+        const std::string unit = std::to_string(kFirstUnit + light.slot);
+        units.emplace_back(kFirstUnit + light.slot, light.map.id());
         if (plan.kind == MapKind::Map2D) {
             // Ee = Epo * V with Epo = S * P_light * L^-1, composed in double (DESIGN.md).
             eyePlanes[light.slot] = glm::mat4(eyePlanesForCamera(plan.view.texgenPlanes(), eyeToWorld));
-            maps2D[plan.samplerIndex] = light.map.id();
+            samplers += "layout(binding = " + unit + ") uniform sampler2DShadow uShadowMap" + slot + ";\n";
+            dispatch += "    if (lightSlot == " + slot + ") return vec2(shadowMap2D(" + slot +
+                        ", eyePosition, uShadowMap" + slot + "), uShadowParams[" + slot + "].z);\n";
         } else {
-            const glm::dvec3 lightPosition =
-                frame.scene().lightInstances[light.slot].position();
+            const glm::dvec3 lightPosition = frame.scene().lightInstances[light.slot].position();
             pointLight[light.slot] = glm::vec4(glm::vec3(view * glm::dvec4(lightPosition, 1.0)),
                                                static_cast<float>(plan.pointViews.nearPlane));
             pointFar[light.slot] = static_cast<float>(plan.pointViews.farPlane);
-            mapsCube[plan.samplerIndex] = light.map.id();
+            samplers += "layout(binding = " + unit + ") uniform samplerCubeShadow uShadowMap" + slot + ";\n";
+            dispatch += "    if (lightSlot == " + slot + ") return vec2(shadowMapCube(" + slot +
+                        ", eyePosition, uShadowMap" + slot + "), uShadowParams[" + slot + "].z);\n";
         }
     }
 
     engine::LightVisibilityHook hook;
     hook.owner = name();
-    hook.glsl = "#define SHADOW_FIRST_UNIT " + std::to_string(kFirstUnit) +
-                "\n#define MAX_SHADOW_2D " + std::to_string(kMax2DMaps) +
-                "\n#define MAX_SHADOW_CUBE " + std::to_string(kMaxCubeMaps) + "\n" +
-                shaders::visibility_glsl;
+    hook.glsl = std::string(shaders::visibility_glsl) + samplers +
+                "vec2 lightVisibility(int lightSlot, vec3 eyePosition, vec3 eyeNormal) {\n" + dispatch +
+                "    return uShadowParams[lightSlot].wz;\n}\n";
     const glm::mat3 eyeToWorldRotation = glm::mat3(glm::dmat3(eyeToWorld));
     hook.bind = [=](const engine::gl::Program& program, const engine::PassContext&) {
         program.set("uShadowParams", params);
@@ -290,11 +293,7 @@ engine::LightVisibilityHook ShadowMapPlugin::makeHook(const engine::Frame& frame
         program.set("uShadowPointLight", pointLight);
         program.set("uShadowPointFar", pointFar);
         program.set("uShadowEyeToWorld", eyeToWorldRotation);
-        // Every sampler of the arrays gets a depth texture of its type, so no two sampler
-        // types ever share a unit (a draw-time error in GL).
-        for (int i = 0; i < kMax2DMaps; ++i) glBindTextureUnit(kFirstUnit + i, maps2D[i]);
-        for (int i = 0; i < kMaxCubeMaps; ++i)
-            glBindTextureUnit(kFirstUnit + kMax2DMaps + i, mapsCube[i]);
+        for (const auto& [unit, map] : units) glBindTextureUnit(unit, map);
     };
     return hook;
 }
@@ -302,22 +301,27 @@ engine::LightVisibilityHook ShadowMapPlugin::makeHook(const engine::Frame& frame
 void ShadowMapPlugin::addPasses(engine::Frame& frame) {
     if (!depth_) {
         depth_ = std::make_unique<DepthRenderer>();
-        unused2D_ = unusedDepthTexture(false);
-        unusedCube_ = unusedDepthTexture(true);
         glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);  // PCF across cube face edges
     }
     const ShadowBounds bounds = frameBounds(frame);
-    int used2D = 0, usedCube = 0;
     std::vector<engine::ResourceHandle> maps;
     for (LightShadow& light : lights_) {
-        if (!planLight(light, frame, bounds, used2D, usedCube)) continue;
+        if (!planLight(light, frame, bounds)) continue;
         light.ensureMap();
+        const std::uint64_t key = mapCacheKey(light, frame.scene(), sceneGeneration_);
+        light.frame.cacheHit = cacheMaps_ && key == light.renderedKey;
         const int size = light.settings.resolution;
         const engine::TextureDesc desc{size, size, graphFormat(light.settings.depthFormat), 1,
                                        light.type == engine::Light::Type::Point};
         const engine::ResourceHandle map =
             frame.graph().importTexture("shadow_map_" + light.name, desc, light.map.id());
-        addDepthPasses(light, frame, map);
+        if (light.frame.cacheHit) {
+            ++cacheHits_;  // the map is an input nobody writes this frame: no depth pass
+        } else {
+            ++cacheMisses_;
+            light.renderedKey = 0;  // set again once the passes have run
+            addDepthPasses(light, frame, map, key);
+        }
         maps.push_back(map);
     }
     engine::LightVisibilityHook hook = makeHook(frame);
@@ -328,7 +332,8 @@ void ShadowMapPlugin::addPasses(engine::Frame& frame) {
 nlohmann::json ShadowMapPlugin::frameStats() const {
     nlohmann::json lights = nlohmann::json::array();
     for (const LightShadow& light : lights_) lights.push_back(light.stats());
-    return {{"lights", lights}};
+    return {{"lights", lights}, {"cache_hits", cacheHits_}, {"cache_misses", cacheMisses_},
+            {"cache_maps", cacheMaps_}};
 }
 
 } // namespace shadowmap

@@ -17,7 +17,9 @@ namespace shadowmap {
 
 class ShadowMapPlugin final : public engine::RenderPlugin {
 public:
-    explicit ShadowMapPlugin(const ShadowSettings& defaults) : defaults_(defaults) {}
+    // cacheMaps: keep a light's map across frames while its inputs are unchanged.
+    ShadowMapPlugin(const ShadowSettings& defaults, bool cacheMaps)
+        : defaults_(defaults), cacheMaps_(cacheMaps) {}
 
     std::string name() const override { return "shadowmap"; }
     bool setLightOption(const std::string& light, const std::string& value) override;
@@ -25,14 +27,11 @@ public:
     void addPasses(engine::Frame& frame) override;
     nlohmann::json frameStats() const override;
 
-    // At most this many shadowed lights of each map kind per frame (texture units).
-    static constexpr int kMax2DMaps = 8;
-    static constexpr int kMaxCubeMaps = 4;
-
 private:
-    bool planLight(LightShadow& light, const engine::Frame& frame, const ShadowBounds& bounds,
-                   int& used2D, int& usedCube);
-    void addDepthPasses(LightShadow& light, engine::Frame& frame, engine::ResourceHandle map);
+    bool planLight(LightShadow& light, const engine::Frame& frame, const ShadowBounds& bounds);
+    // Adds the light's depth pass(es); the last one records `key` once it has run.
+    void addDepthPasses(LightShadow& light, engine::Frame& frame, engine::ResourceHandle map,
+                        std::uint64_t key);
     // Renders the light's views (one 2D view or six cube faces) into `target` with `style`.
     void renderMap(LightShadow& light, const engine::Frame& frame, engine::PassContext& context,
                    unsigned target, bool targetIsArray, const DepthPassStyle& style);
@@ -45,8 +44,11 @@ private:
     std::vector<LightShadow> lights_;                  // one per lit-pass light slot
     std::vector<bool> closedMeshes_;                   // per mesh: closed, not double-sided
     std::unique_ptr<DepthRenderer> depth_;             // created with the first frame (needs GL)
-    engine::gl::Texture unused2D_, unusedCube_;        // bound to sampler slots no light uses
+    int maxTextureUnits_ = 16;                         // GL_MAX_TEXTURE_IMAGE_UNITS
     std::set<std::string> warned_;
+    bool cacheMaps_ = true;
+    std::uint64_t sceneGeneration_ = 0;
+    std::uint64_t cacheHits_ = 0, cacheMisses_ = 0;  // since the scene was prepared
 };
 
 } // namespace shadowmap

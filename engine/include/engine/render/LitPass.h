@@ -20,6 +20,9 @@ public:
 
     // Adds the lit pass writing `colorTarget` (an imported texture) to the frame's graph.
     void addTo(Frame& frame, ResourceHandle colorTarget);
+    // Mesh instances the last drawn pass skipped because they lie outside the view.
+    int culledInstances() const { return culledInstances_; }
+
     // Adds a pass writing light `slot`'s shade into `maskTarget` (an imported RGBA8 texture).
     void addMaskTo(Frame& frame, int slot, ResourceHandle maskTarget);
 
@@ -27,14 +30,16 @@ private:
     enum class Output { Color = 0, ShadowMask = 1 };
     void addPass(Frame& frame, const std::string& name, ResourceHandle target, Output output,
                  int maskSlot);
-    const gl::Program& programFor(const std::string& visibilityGlsl);
+    // One program per hook source and light count, compiled on first use.
+    const gl::Program& programFor(const std::string& visibilityGlsl, int lightCount);
     void uploadLights(const Scene& scene, const FrameCamera& camera);
     void drawScene(const Frame& frame, const gl::Program& program, PassContext& context);
 
     RendererConfig config_;
-    std::map<std::string, std::unique_ptr<gl::Program>> programs_;  // by hook source
+    std::map<std::string, std::unique_ptr<gl::Program>> programs_;  // by full header + hook
     gl::Buffer lightBuffer_;
     int lightCount_ = 0;
+    int culledInstances_ = 0;
 };
 
 } // namespace engine

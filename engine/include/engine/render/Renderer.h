@@ -40,6 +40,7 @@ struct FrameResult {
     nlohmann::json pluginStats = nlohmann::json::object();
     std::string graphviz;
     bool shadowTermProvided = false;  // a plugin installed the lit pass's visibility hook
+    int litInstancesCulled = 0;       // mesh instances outside the camera frustum (not drawn)
     std::map<std::string, DepthReadback> depthReadbacks;
 };
 

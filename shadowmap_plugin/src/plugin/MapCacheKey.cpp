@@ -1,0 +1,71 @@
+#include "plugin/MapCacheKey.h"
+
+#include "engine/scene/FrustumCull.h"
+
+#include <cstring>
+
+namespace shadowmap {
+
+namespace {
+
+// FNV-1a over the bytes of what is fed in: simple, and the inputs are few.
+class Hasher {
+public:
+    template <typename T>
+    void add(const T& value) {
+        unsigned char bytes[sizeof(T)];
+        std::memcpy(bytes, &value, sizeof(T));
+        for (unsigned char byte : bytes) hash_ = (hash_ ^ byte) * 1099511628211ull;
+    }
+    void add(const glm::dmat4& m) {
+        for (int c = 0; c < 4; ++c)
+            for (int r = 0; r < 4; ++r) add(m[c][r]);
+    }
+    std::uint64_t value() const { return hash_; }
+
+private:
+    std::uint64_t hash_ = 14695981039346656037ull;
+};
+
+} // namespace
+
+std::uint64_t mapCacheKey(const LightShadow& light, const engine::Scene& scene,
+                          std::uint64_t sceneGeneration) {
+    Hasher hasher;
+    hasher.add(sceneGeneration);
+    const ShadowSettings& s = light.settings;
+    hasher.add(static_cast<int>(s.variant));
+    hasher.add(s.resolution);
+    hasher.add(static_cast<int>(s.depthFormat));
+    hasher.add(s.effectivePolygonOffset().x);
+    hasher.add(s.effectivePolygonOffset().y);
+    hasher.add(s.standardPolygonOffset().x);
+    hasher.add(s.standardPolygonOffset().y);
+    hasher.add(static_cast<int>(light.frame.kind));
+
+    std::vector<glm::dmat4> views;  // the view-projections the depth passes draw with
+    if (light.frame.kind == MapKind::Map2D) {
+        views.push_back(light.frame.view.viewProjection());
+    } else {
+        for (const LightView& face : light.frame.pointViews.faces) {
+            hasher.add(face.empty);
+            if (!face.empty) views.push_back(face.viewProjection());
+        }
+    }
+    for (const glm::dmat4& view : views) hasher.add(view);
+
+    for (std::size_t i = 0; i < scene.meshInstances.size(); ++i) {
+        const engine::MeshInstance& instance = scene.meshInstances[i];
+        if (!instance.castShadows) continue;
+        bool inside = false;
+        for (const glm::dmat4& view : views)
+            inside = inside || engine::boxIntersectsFrustum(view, instance.worldBounds);
+        if (!inside) continue;
+        hasher.add(i);
+        hasher.add(instance.mesh);
+        hasher.add(instance.world);
+    }
+    return hasher.value();
+}
+
+} // namespace shadowmap

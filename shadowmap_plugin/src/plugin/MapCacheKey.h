@@ -1,0 +1,20 @@
+#pragma once
+// The inputs a shadow map depends on, hashed: if a light's key is unchanged since its map
+// was last rendered, the map is still right and its depth passes are skipped.
+// Covered: the scene (a generation bumped on every prepareScene: geometry, materials and
+// closedness only change there), the light's settings and map kind, the fitted view(s)
+// (so a moved light, a moved camera that changes a directional fit, or a changed near/far
+// all miss), and every caster inside the frustum: which mesh, its world transform.
+// Casters outside the frustum do not draw into the map, so moving them keeps the hit.
+#include "plugin/LightShadow.h"
+
+#include "engine/scene/Scene.h"
+
+#include <cstdint>
+
+namespace shadowmap {
+
+std::uint64_t mapCacheKey(const LightShadow& light, const engine::Scene& scene,
+                          std::uint64_t sceneGeneration);
+
+} // namespace shadowmap

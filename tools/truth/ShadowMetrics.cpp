@@ -1,0 +1,77 @@
+#include "truth/ShadowMetrics.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace truth {
+
+std::vector<std::uint8_t> truthEdges(int width, int height, std::span<const std::uint8_t> truth,
+                                     std::span<const std::uint8_t> covered) {
+    const std::size_t count = static_cast<std::size_t>(width) * height;
+    if (truth.size() != count || covered.size() != count)
+        throw std::invalid_argument("truthEdges: image sizes differ from width*height");
+    std::vector<std::uint8_t> edges(count, 0);
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            const std::size_t i = static_cast<std::size_t>(y) * width + x;
+            if (!covered[i]) continue;
+            const bool lit = truth[i] != 0;
+            for (int dy = -1; dy <= 1 && !edges[i]; ++dy)
+                for (int dx = -1; dx <= 1; ++dx) {
+                    const int nx = x + dx, ny = y + dy;
+                    if (nx < 0 || ny < 0 || nx >= width || ny >= height) continue;
+                    const std::size_t n = static_cast<std::size_t>(ny) * width + nx;
+                    if (covered[n] && (truth[n] != 0) != lit) {
+                        edges[i] = 1;
+                        break;
+                    }
+                }
+        }
+    return edges;
+}
+
+ShadowErrors shadowErrors(int width, int height, std::span<const std::uint8_t> truth,
+                          std::span<const float> shade, std::span<const std::uint8_t> evaluation,
+                          std::span<const std::uint8_t> covered) {
+    const std::size_t count = static_cast<std::size_t>(width) * height;
+    if (shade.size() != count || evaluation.size() != count)
+        throw std::invalid_argument("shadowErrors: image sizes differ from width*height");
+    const std::vector<std::uint8_t> edges = truthEdges(width, height, truth, covered);
+
+    // Sums in double: a 4K image has 8 M pixels, float sums would lose the small errors.
+    double acne = 0.0, leak = 0.0, acneNoEdge = 0.0, leakNoEdge = 0.0;
+    ShadowErrors errors;
+    for (std::size_t i = 0; i < count; ++i) {
+        if (!evaluation[i]) continue;
+        const double s = std::clamp(static_cast<double>(shade[i]), 0.0, 1.0);
+        const double a = truth[i] ? 1.0 - s : 0.0;
+        const double l = truth[i] ? 0.0 : s;
+        acne += a;
+        leak += l;
+        ++errors.evaluated;
+        if (edges[i]) continue;
+        acneNoEdge += a;
+        leakNoEdge += l;
+        ++errors.evaluatedNoEdge;
+    }
+    if (errors.evaluated > 0) {
+        errors.acne = acne / errors.evaluated;
+        errors.leak = leak / errors.evaluated;
+        errors.error = errors.acne + errors.leak;
+    }
+    if (errors.evaluatedNoEdge > 0) {
+        errors.acneNoEdge = acneNoEdge / errors.evaluatedNoEdge;
+        errors.leakNoEdge = leakNoEdge / errors.evaluatedNoEdge;
+        errors.errorNoEdge = errors.acneNoEdge + errors.leakNoEdge;
+    }
+    return errors;
+}
+
+std::vector<float> shadeFromMask8(std::span<const std::uint8_t> mask) {
+    std::vector<float> shade(mask.size());
+    std::transform(mask.begin(), mask.end(), shade.begin(),
+                   [](std::uint8_t v) { return static_cast<float>(v) / 255.0f; });
+    return shade;
+}
+
+} // namespace truth
