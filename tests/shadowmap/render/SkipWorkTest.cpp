@@ -1,0 +1,137 @@
+// Work the plugin and the renderer must skip: cached maps, lights and faces that light no
+// visible receiver, draws outside the light's or the camera's frustum. Checked through the
+// frame graph's reports and the plugin's per-light stats, over several frames.
+#include "../../gl/GlTestContext.h"
+#include "AnalyticShadows.h"
+
+#include "engine/scene/SceneEdit.h"
+
+namespace {
+
+using engine::Light;
+using engine::test::SceneBuilder;
+
+struct Frames {
+    std::vector<engine::FrameResult> results;
+
+    // How many frames ran the pass `name` (not culled).
+    int passRuns(const std::string& name) const {
+        int runs = 0;
+        for (const auto& frame : results)
+            for (const auto& pass : frame.passes) runs += pass.name == name && !pass.culled;
+        return runs;
+    }
+    const nlohmann::json& lastLight(int index) const {
+        return results.back().pluginStats["shadowmap"]["lights"][index];
+    }
+};
+
+class SkipWork : public engine::test::ShadowPluginTest {
+protected:
+    static void SetUpTestSuite() { loadPlugin({{"resolution", 256}}); }
+
+    // Renders `count` frames, calling `change(frame)` before each frame after the first.
+    template <typename Change>
+    Frames render(engine::Scene& scene, int count, Change change,
+                  engine::FrameCamera camera = engine::test::cameraLooking({0, 12, 10}, {0, 0, 0}, 64, 48)) {
+        engine::Renderer renderer({}, plugins());
+        renderer.setScene(scene);
+        Frames frames;
+        for (int frame = 0; frame < count; ++frame) {
+            if (frame > 0) change(frame);
+            engine::FrameRequest request;
+            request.camera = camera;
+            frames.results.push_back(renderer.renderFrame(request));
+        }
+        return frames;
+    }
+};
+
+SceneBuilder boxOverFloor() {
+    SceneBuilder builder;
+    builder.addBox("floor", {-10, -0.2, -10}, {10, 0, 10});
+    builder.addBox("box", {-1, 1, -1}, {1, 2, 1});
+    return builder;
+}
+
+} // namespace
+
+TEST_F(SkipWork, StaticSceneRendersEachMapOnce) {
+    SceneBuilder builder = boxOverFloor();
+    builder.addLight("spot", Light::Type::Spot, {-3, 8, -2}, {0, 0, 0});
+    builder.addLight("sun", Light::Type::Directional, {4, 9, 3}, {0, 0, 0});
+    builder.addLight("bulb", Light::Type::Point, {1, 4, 2}, {1, 0, 2});
+    engine::Scene scene = builder.build();
+    const Frames frames = render(scene, 5, [](int) {});
+    EXPECT_EQ(frames.passRuns("shadow_spot"), 1);
+    EXPECT_EQ(frames.passRuns("shadow_sun"), 1);
+    EXPECT_EQ(frames.passRuns("shadow_bulb"), 1);
+    EXPECT_EQ(frames.results.back().pluginStats["shadowmap"]["cache_hits"], 12);
+    EXPECT_EQ(frames.lastLight(0)["cache"], "hit");
+}
+
+TEST_F(SkipWork, MovingALightRerendersOnlyItsMap) {
+    SceneBuilder builder = boxOverFloor();
+    builder.addLight("spot", Light::Type::Spot, {-3, 8, -2}, {0, 0, 0});
+    const int sun = builder.addLight("sun", Light::Type::Directional, {4, 9, 3}, {0, 0, 0});
+    engine::Scene scene = builder.build();
+    const Frames frames = render(scene, 4, [&](int) { engine::orbitNode(scene, sun, {0, 0, 0}, 0.05); });
+    EXPECT_EQ(frames.passRuns("shadow_spot"), 1);
+    EXPECT_EQ(frames.passRuns("shadow_sun"), 4);
+}
+
+TEST_F(SkipWork, MovingACasterOutsideTheFrustumKeepsTheMapMovingOneInsideDoesNot) {
+    SceneBuilder builder = boxOverFloor();
+    const int far = builder.addBox("far_box", {30, 0, 30}, {31, 1, 31});  // outside the cone
+    builder.addLight("spot", Light::Type::Spot, {0, 8, 0}, {0, 0, 0}, {}, 0.5);
+    engine::Scene scene = builder.build();
+    const auto moveFar = [&](int) {
+        scene.nodes[far].local[3].x += 1.0;
+        scene.updateWorldTransforms();
+    };
+    EXPECT_EQ(render(scene, 3, moveFar).passRuns("shadow_spot"), 1);
+
+    const int box = 1;  // the box under the light
+    const auto moveBox = [&](int) {
+        scene.nodes[box].local[3].x += 0.1;
+        scene.updateWorldTransforms();
+    };
+    EXPECT_EQ(render(scene, 3, moveBox).passRuns("shadow_spot"), 3);
+}
+
+TEST_F(SkipWork, LightsThatCastNoShadowAddNoPass) {
+    SceneBuilder builder = boxOverFloor();
+    builder.addLight("off", Light::Type::Spot, {-3, 8, -2}, {0, 0, 0}, {{"variant", "none"}});
+    const int dark = builder.addLight("dark", Light::Type::Spot, {3, 8, 2}, {0, 0, 0});
+    builder.addLight("away", Light::Type::Spot, {0, 8, 0}, {0, 20, 0});  // sees no receiver
+    builder.scene.lights[builder.scene.nodes[dark].light].intensity = 0.0f;
+    engine::Scene scene = builder.build();
+    const Frames frames = render(scene, 1, [](int) {});
+    for (const char* pass : {"shadow_off", "shadow_dark", "shadow_away"})
+        EXPECT_EQ(frames.passRuns(pass), 0) << pass;
+    EXPECT_EQ(frames.lastLight(0)["skip_reason"], "variant none");
+    EXPECT_EQ(frames.lastLight(1)["skip_reason"], "the light emits nothing");
+    EXPECT_EQ(frames.lastLight(2)["skip_reason"], "no visible receiver in the light's frustum");
+}
+
+TEST_F(SkipWork, PointLightSkipsFacesThatSeeNoReceiver) {
+    SceneBuilder builder;
+    builder.addBox("floor", {-10, -0.2, -10}, {10, 0, 10});
+    builder.addLight("bulb", Light::Type::Point, {0, 3, 0}, {0, 0, 0});
+    engine::Scene scene = builder.build();
+    const Frames frames = render(scene, 1, [](int) {});
+    const auto& light = frames.lastLight(0);
+    EXPECT_GE(light["faces_skipped"].get<int>(), 1);  // +Y looks at nothing
+    EXPECT_EQ(light["faces_rendered"].get<int>() + light["faces_skipped"].get<int>(), 6);
+}
+
+TEST_F(SkipWork, CastersOutsideTheLightAndMeshesOutsideTheViewAreNotDrawn) {
+    SceneBuilder builder = boxOverFloor();
+    builder.addBox("far_box", {30, 0, 30}, {31, 1, 31});
+    builder.addLight("spot", Light::Type::Spot, {0, 8, 0}, {0, 0, 0}, {}, 0.5);
+    engine::Scene scene = builder.build();
+    const Frames frames = render(scene, 1, [](int) {});
+    EXPECT_EQ(frames.lastLight(0)["casters_culled"], 1);  // far_box is outside the cone
+    EXPECT_EQ(frames.lastLight(0)["draws"], 2);            // floor and box
+    EXPECT_EQ(frames.results.back().litInstancesCulled, 1);  // far_box is outside the view
+}
