@@ -2,6 +2,7 @@
 
 #include "engine/render/TextureReadback.h"
 #include "engine/scene/Scene.h"
+#include "engine/util/Error.h"
 
 #include <chrono>
 
@@ -39,7 +40,17 @@ FrameResult Renderer::renderFrame(const FrameRequest& request) {
     Frame frame(*scene_, *gpu_, graph, request.camera, frameIndex_++);
     const ResourceHandle color =
         graph.importTexture("scene_color", {width, height, TextureFormat::SRGB8_A8}, color_.id());
-    for (RenderPlugin* plugin : plugins_) plugin->addPasses(frame);
+    for (RenderPlugin* plugin : plugins_) {
+        // A plugin's bad pass declaration (unknown resource, second writer...) is the
+        // plugin's error: say which plugin, not only which pass.
+        try {
+            plugin->addPasses(frame);
+        } catch (const InputError&) {
+            throw;
+        } catch (const std::exception& error) {
+            throw InputError("plugin \"" + plugin->name() + "\": " + error.what());
+        }
+    }
     litPass_->addTo(frame, color);
     graph.markOutput(color);
     for (int slot : request.shadowMaskSlots)
