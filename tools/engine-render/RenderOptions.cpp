@@ -9,7 +9,9 @@ const char* const kRenderUsage =
     "  [--width W] [--height H] [--camera NAME]\n"
     "  [--light NAME=VARIANT]... [--shadow-mask NAME=MASK.png]... [--shadow-map NAME=MAP.png]...\n"
     "  [--frames N] [--stats STATS.json] [--graph-dot GRAPH.dot]\n"
-    "  [--key-light spot|point|directional] [--orbit-light NAME] [--orbit-camera]\n";
+    "  [--key-light spot|point|directional] [--orbit-light NAME] [--orbit-camera]\n"
+    "  [--truth]   (per light: map time, and acne/leak against ray-traced shadows)\n"
+    "  [--warmup N] (untimed frames first, default 1) [--set PLUGIN.KEY=JSON]...\n";
 
 namespace {
 
@@ -43,8 +45,8 @@ RenderOptions parseRenderOptions(int argc, char** argv) {
             return options;
         }
         if (flag.rfind("--", 0) != 0) throw std::invalid_argument("unexpected argument \"" + flag + "\"");
-        if (flag == "--orbit-camera") {
-            options.orbitCamera = true;
+        if (flag == "--orbit-camera" || flag == "--truth") {
+            (flag == "--truth" ? options.truth : options.orbitCamera) = true;
             continue;
         }
         if (i + 1 >= argc) throw std::invalid_argument(flag + ": missing value");
@@ -59,6 +61,8 @@ RenderOptions parseRenderOptions(int argc, char** argv) {
         else if (flag == "--shadow-mask") options.shadowMasks.push_back(parseAssignment(flag, value));
         else if (flag == "--shadow-map") options.shadowMaps.push_back(parseAssignment(flag, value));
         else if (flag == "--frames") options.frames = parsePositive(flag, value, 100000);
+        else if (flag == "--warmup") options.warmup = value == "0" ? 0 : parsePositive(flag, value, 1000);
+        else if (flag == "--set") options.pluginSettings.push_back(parseAssignment(flag, value));
         else if (flag == "--stats") options.stats = value;
         else if (flag == "--graph-dot") options.graphDot = value;
         else if (flag == "--key-light") {

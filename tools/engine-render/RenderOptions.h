@@ -14,9 +14,13 @@ struct RenderOptions {
     std::vector<std::pair<std::string, std::string>> shadowMasks;    // --shadow-mask NAME=FILE
     std::vector<std::pair<std::string, std::string>> shadowMaps;     // --shadow-map NAME=FILE
     int frames = 1;
+    int warmup = 1;  // untimed frames first: llvmpipe compiles shaders at their first draw
+    // --set PLUGIN.KEY=JSON: overrides one of a plugin's config settings
+    std::vector<std::pair<std::string, std::string>> pluginSettings;
     std::string keyLight;     // --key-light spot|point|directional: add a light from the bounds
     std::string orbitLight;   // --orbit-light NAME: turn that light 2 degrees per frame
     bool orbitCamera = false; // --orbit-camera: turn the camera 2 degrees per frame
+    bool truth = false;       // --truth: per-light error against ray-traced shadows
     std::string stats;      // JSON
     std::string graphDot;   // graphviz of the last frame's compiled graph
     bool help = false;

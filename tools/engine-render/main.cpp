@@ -3,6 +3,8 @@
 #include "DepthImage.h"
 #include "RenderOptions.h"
 
+#include "ShadowEvaluation.h"
+
 #include "engine/config/EngineConfig.h"
 #include "engine/context/GlContext.h"
 #include "engine/gltf/GltfLoader.h"
@@ -88,9 +90,61 @@ nlohmann::json statsJson(const RenderOptions& options, const std::vector<double>
 
 // `host` lives in main(), outside the try block that reports errors: an exception thrown by
 // plugin code must be read before the plugin is unloaded.
+// Per shadowed light: the median time of its map passes and its errors against ray-traced
+// truth (DESIGN.md metrics, percent of the evaluation set), printed and returned for --stats.
+nlohmann::json printLightErrors(engine::Renderer& renderer, const engine::Scene& scene,
+                                const engine::FrameCamera& camera,
+                                const std::map<std::string, PassSummary>& passes) {
+    evaluation::ShadowEvaluator evaluator(renderer, scene);
+    const evaluation::ViewResult view = evaluator.evaluate(camera, 0);
+    std::printf("  %-20s %-9s %6s %9s %8s %8s %8s %12s\n", "light", "variant", "map", "map ms",
+                "acne %", "leak %", "error %", "error-edge %");
+    nlohmann::json lights = nlohmann::json::array();
+    for (const evaluation::LightResult& light : view.lights) {
+        double mapMs = 0.0;
+        for (const char* suffix : {"", "_first_layer"}) {
+            const auto found = passes.find("shadow_" + light.light + suffix);
+            if (found != passes.end()) mapMs += median(found->second.wallMs);
+        }
+        const truth::ShadowErrors& e = light.errors;
+        std::printf("  %-20s %-9s %6s %9.2f %8.3f %8.3f %8.3f %12.3f\n", light.light.c_str(),
+                    light.stats["variant"].get<std::string>().c_str(),
+                    light.stats.value("map", "none").c_str(), mapMs, 100 * e.acne, 100 * e.leak,
+                    100 * e.error, 100 * e.errorNoEdge);
+        lights.push_back({{"light", light.light}, {"variant", light.stats["variant"]},
+                          {"map_ms", mapMs}, {"acne", 100 * e.acne}, {"leak", 100 * e.leak},
+                          {"error", 100 * e.error}, {"error_noedge", 100 * e.errorNoEdge},
+                          {"evaluated_pixels", e.evaluated}});
+    }
+    return lights;
+}
+
+// --set PLUGIN.KEY=JSON: the plugin named by its library in the config; the value is JSON
+// (a bare word counts as a string), checked by the plugin like any config setting.
+void applySettingOverrides(engine::EngineConfig& config, const RenderOptions& options) {
+    for (const auto& [target, value] : options.pluginSettings) {
+        const auto dot = target.find('.');
+        if (dot == std::string::npos || dot == 0 || dot + 1 == target.size())
+            throw engine::InputError("--set " + target + "=" + value + ": expected PLUGIN.KEY=VALUE");
+        const std::string library = target.substr(0, dot), key = target.substr(dot + 1);
+        nlohmann::json parsed = nlohmann::json::parse(value, nullptr, false);
+        if (parsed.is_discarded()) parsed = value;
+        bool found = false;
+        for (engine::PluginConfig& plugin : config.plugins)
+            if (plugin.library == library) {
+                plugin.settings[key] = parsed;
+                found = true;
+            }
+        if (!found)
+            throw engine::InputError("--set " + target + ": the config " + options.config +
+                                     " loads no plugin \"" + library + "\"");
+    }
+}
+
 int run(const RenderOptions& options, engine::PluginHost& host) {
     engine::tuneAllocatorForRendering();
-    const engine::EngineConfig config = engine::loadEngineConfig(options.config);
+    engine::EngineConfig config = engine::loadEngineConfig(options.config);
+    applySettingOverrides(config, options);
     auto context = engine::createEglContext();
     context->makeCurrent();
 
@@ -137,6 +191,7 @@ int run(const RenderOptions& options, engine::PluginHost& host) {
     std::vector<std::string> order;
     std::map<std::string, PassSummary> passes;
     engine::FrameResult last;
+    for (int frame = 0; frame < options.warmup; ++frame) renderer.renderFrame(request);
     for (int frame = 0; frame < options.frames; ++frame) {
         if (frame > 0 && orbitingLight >= 0) engine::orbitNode(scene, orbitingLight, orbitCenter, kOrbitStep);
         if (frame > 0 && options.orbitCamera)
@@ -168,10 +223,6 @@ int run(const RenderOptions& options, engine::PluginHost& host) {
         const auto gray = depthToGray(found->second, width, height);
         engine::writePngAtomically(file, width, height, 1, gray);
     }
-    if (!options.stats.empty())
-        engine::writeFileAtomically(options.stats,
-                                    statsJson(options, frameMs, order, passes, last).dump(2));
-    if (!options.graphDot.empty()) engine::writeFileAtomically(options.graphDot, last.graphviz);
 
     std::printf("%s: %dx%d, %d frame(s), median frame %.2f ms (%s)\n", options.scene.c_str(),
                 options.width, options.height, options.frames, median(frameMs),
@@ -186,6 +237,10 @@ int run(const RenderOptions& options, engine::PluginHost& host) {
                     static_cast<unsigned long long>(pass.last.draws),
                     static_cast<unsigned long long>(pass.last.triangles), state.c_str());
     }
+    nlohmann::json stats = statsJson(options, frameMs, order, passes, last);
+    if (options.truth) stats["lights"] = printLightErrors(renderer, scene, request.camera, passes);
+    if (!options.stats.empty()) engine::writeFileAtomically(options.stats, stats.dump(2));
+    if (!options.graphDot.empty()) engine::writeFileAtomically(options.graphDot, last.graphviz);
     return 0;
 }
 

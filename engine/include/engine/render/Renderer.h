@@ -55,6 +55,9 @@ public:
 
     FrameResult renderFrame(const FrameRequest& request);
 
+    // The scene's GPU copy (for tools that draw it their own way, e.g. a surface capture).
+    const SceneGpu& gpu() const { return *gpu_; }
+
     // The last frame's image as 8-bit RGBA (sRGB encoded), top row first.
     std::vector<std::uint8_t> readColor() const;
     // The last frame's shade of light `slot` as 8-bit gray (255 = lit), top row first.

@@ -1,0 +1,54 @@
+#pragma once
+// Time and error of every shadowed light of one view, as the main job, the bench and the
+// stress tool report them: frames rendered with per-pass timing (each pass closed by
+// glFinish), then one more frame with every light's shadow mask, compared with the
+// ray-traced truth (truth/RayTracedVisibility.h) on DESIGN.md's evaluation set.
+#include "truth/RayTracedVisibility.h"
+#include "truth/ShadowMetrics.h"
+#include "truth/SurfaceCapture.h"
+
+#include "engine/render/Renderer.h"
+
+#include <nlohmann/json.hpp>
+
+#include <string>
+#include <vector>
+
+namespace evaluation {
+
+struct LightResult {
+    std::string light;
+    int slot = -1;
+    nlohmann::json stats;     // the plugin's per-light stats (variant, resolution, ...)
+    double shadowMs = 0.0;    // median wall time of its shadow passes, over frames they ran
+    int framesRendered = 0;   // frames in which its map was rendered (not cached)
+    truth::ShadowErrors errors;
+    std::size_t nonFinitePixels = 0;  // NaN/Inf anywhere in its shade (must stay 0)
+};
+
+struct ViewResult {
+    double frameMs = 0.0;  // median over the timed frames
+    std::vector<LightResult> lights;
+    std::vector<std::uint8_t> image;  // the last timed frame, RGBA8, top row first
+};
+
+// Holds the Embree scene (built once) and the surface capture program; the renderer must
+// have `scene` set and a GL context must be current.
+class ShadowEvaluator {
+public:
+    ShadowEvaluator(engine::Renderer& renderer, const engine::Scene& scene);
+
+    // Renders `frames` timed frames of `camera` (0: none, errors only), then evaluates every
+    // light that has a shadow (variant other than none).
+    ViewResult evaluate(const engine::FrameCamera& camera, int frames);
+
+private:
+    engine::Renderer& renderer_;
+    const engine::Scene& scene_;
+    truth::SurfaceCapture capture_;
+    truth::RayTracedVisibility visibility_;
+};
+
+double median(std::vector<double> values);
+
+} // namespace evaluation
