@@ -54,7 +54,8 @@ protected:
         std::ofstream(dir_ / "scene.gltf") << scene_.dump();
         return runEngineRender("--config " + std::string(CONTENT_DIR) + "/" + config + " --scene " +
                    (dir_ / "scene.gltf").string() + " --out " + (dir_ / "out.png").string() +
-                   " --width 96 --height 64 --stats " + (dir_ / "stats.json").string() + " " + extra);
+                   " --width 96 --height 64 --warmup 0 --stats " + (dir_ / "stats.json").string() + " " +
+                   extra);
     }
 
     nlohmann::json stats() {
@@ -183,4 +184,20 @@ TEST_F(EngineRenderShadows, MissingPluginLibraryIsNamed) {
 TEST_F(EngineRenderShadows, ShadowMaskWithoutAShadowPluginIsAClearError) {
     expectError(render("--shadow-mask sun=" + (dir_ / "sun.png").string(), "engine-unshadowed.json"),
                 {"--shadow-mask", "no loaded plugin provides a shadow term"});
+}
+
+TEST_F(EngineRenderShadows, TruthReportsTimeAndErrorPerShadowedLight) {
+    light("sun")["extras"]["shadow"]["variant"] = "woo";
+    const CommandResult result = render("--truth");
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    const nlohmann::json all = stats();
+    ASSERT_EQ(all["lights"].size(), 3u) << all.dump();
+    for (const auto& entry : all["lights"]) {
+        EXPECT_GT(entry["evaluated_pixels"].get<int>(), 100) << entry;
+        EXPECT_GE(entry["map_ms"].get<double>(), 0.0) << entry;
+        // Small image (96x64): a few edge pixels weigh a lot; the showcase stays well under.
+        EXPECT_LT(entry["error"].get<double>(), 5.0) << entry;
+        EXPECT_NE(result.output.find(entry["light"].get<std::string>()), std::string::npos);
+    }
+    EXPECT_EQ(all["lights"][1]["variant"], "woo");
 }
