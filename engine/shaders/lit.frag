@@ -32,7 +32,9 @@ uniform float uAlphaCutoff;  // < 0: no alpha test
 uniform bool uReceiveShadows;  // node extras "receive_shadows": false opts a mesh out
 layout(binding = 0) uniform sampler2D uBaseColorTexture;
 
-// 0: shaded color; 1: the visibility hook's shade of light uMaskLight as gray.
+// 0: shaded color; 1: the visibility hook's shade of light uMaskLight as gray;
+// with LIGHT_DEBUG_VIEW defined: the hook's debug picture of that light (the seeds'
+// comparison view).
 uniform int uOutputMode;
 uniform int uMaskLight;
 
@@ -42,6 +44,7 @@ in vec2 vTexcoord;
 out vec4 outColor;
 
 vec2 lightVisibility(int lightSlot, vec3 eyePosition, vec3 eyeNormal);
+vec4 lightDebugColor(int lightSlot, vec3 eyePosition, vec3 eyeNormal);
 
 vec2 visibilityOf(int lightSlot, vec3 eyePosition, vec3 eyeNormal) {
     return uReceiveShadows ? lightVisibility(lightSlot, eyePosition, eyeNormal) : vec2(1.0, 0.0);
@@ -63,6 +66,11 @@ void main() {
     if (!gl_FrontFacing) N = -N;  // double-sided materials light their back side
     vec3 V = normalize(-vEyePosition);
 
+#ifdef LIGHT_DEBUG_VIEW
+    // Its own program variant: the debug lookups never weigh on the shaded passes.
+    outColor = lightDebugColor(uMaskLight, vEyePosition, N);
+    return;
+#endif
     if (uOutputMode == 1) {
         outColor = vec4(vec3(visibilityOf(uMaskLight, vEyePosition, N).x), 1.0);
         return;

@@ -38,6 +38,38 @@ float shadowMap2D(int slot, vec3 eyePosition, sampler2DShadow map) {
     return coord.w <= 0.0 ? 0.0 : shade;
 }
 
+// The seeds' comparison view, for engine-render --shadow-compare: green where the
+// reference depth r and the map's depth agree (the surface is the one the light sees
+// first: lit), red where the map holds something nearer (shadowed), blue where it holds
+// something farther (r in front of the map: polygon offset or peeling at work), grey where
+// the map has no say (behind the light, outside its frustum).
+// In window depth: about the polygon offset of a moderately sloped surface at 2048 texels
+// (2 x one texel of slope + 8 units), so an offset lit surface shows green and only
+// grazing ones, where the offset grows with the slope, turn blue.
+const float kDepthAgreement = 1e-3;
+
+vec4 comparisonColor(float reference, float stored) {
+    if (abs(reference - stored) <= kDepthAgreement) return vec4(0.1, 0.8, 0.1, 1.0);
+    return reference > stored ? vec4(0.85, 0.1, 0.1, 1.0) : vec4(0.1, 0.2, 0.9, 1.0);
+}
+
+vec4 comparison2D(int slot, vec3 eyePosition, sampler2D depth) {
+    vec4 coord = uShadowEyePlanes[slot] * vec4(eyePosition, 1.0);
+    vec3 p = coord.xyz / coord.w;
+    if (coord.w <= 0.0 || any(lessThan(p, vec3(0.0))) || any(greaterThan(p, vec3(1.0))))
+        return vec4(0.4, 0.4, 0.4, 1.0);
+    return comparisonColor(p.z, texture(depth, p.xy).r);
+}
+
+vec4 comparisonCube(int slot, vec3 eyePosition, samplerCube depth) {
+    vec3 toPoint = uShadowEyeToWorld * (eyePosition - uShadowPointLight[slot].xyz);
+    float major = max(max(abs(toPoint.x), abs(toPoint.y)), abs(toPoint.z));
+    float n = uShadowPointLight[slot].w, f = uShadowPointFar[slot];
+    float reference = 0.5 * ((f + n) / (f - n) - 2.0 * f * n / ((f - n) * major)) + 0.5;
+    if (major < n || reference > 1.0) return vec4(0.4, 0.4, 0.4, 1.0);
+    return comparisonColor(reference, texture(depth, toPoint).r);
+}
+
 float shadowMapCube(int slot, vec3 eyePosition, samplerCubeShadow map) {
     vec3 toPoint = uShadowEyeToWorld * (eyePosition - uShadowPointLight[slot].xyz);
     float major = max(max(abs(toPoint.x), abs(toPoint.y)), abs(toPoint.z));

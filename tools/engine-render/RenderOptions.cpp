@@ -8,6 +8,7 @@ const char* const kRenderUsage =
     "usage: engine-render --config CONFIG.json --scene SCENE.gltf|.glb --out OUT.png\n"
     "  [--width W] [--height H] [--camera NAME]\n"
     "  [--light NAME=VARIANT]... [--shadow-mask NAME=MASK.png]... [--shadow-map NAME=MAP.png]...\n"
+    "  [--shadow-compare NAME=VIEW.png]...  (green: r agrees with the map, red: shadowed)\n"
     "  [--frames N] [--stats STATS.json] [--graph-dot GRAPH.dot]\n"
     "  [--key-light spot|point|directional] [--orbit-light NAME] [--orbit-camera]\n"
     "  [--truth]   (per light: map time, and acne/leak against ray-traced shadows)\n"
@@ -60,6 +61,7 @@ RenderOptions parseRenderOptions(int argc, char** argv) {
         else if (flag == "--light") options.lightVariants.push_back(parseAssignment(flag, value));
         else if (flag == "--shadow-mask") options.shadowMasks.push_back(parseAssignment(flag, value));
         else if (flag == "--shadow-map") options.shadowMaps.push_back(parseAssignment(flag, value));
+        else if (flag == "--shadow-compare") options.comparisons.push_back(parseAssignment(flag, value));
         else if (flag == "--frames") options.frames = parsePositive(flag, value, 100000);
         else if (flag == "--warmup") options.warmup = value == "0" ? 0 : parsePositive(flag, value, 1000);
         else if (flag == "--set") options.pluginSettings.push_back(parseAssignment(flag, value));

@@ -13,6 +13,7 @@ struct RenderOptions {
     std::vector<std::pair<std::string, std::string>> lightVariants;  // --light NAME=VARIANT
     std::vector<std::pair<std::string, std::string>> shadowMasks;    // --shadow-mask NAME=FILE
     std::vector<std::pair<std::string, std::string>> shadowMaps;     // --shadow-map NAME=FILE
+    std::vector<std::pair<std::string, std::string>> comparisons;    // --shadow-compare NAME=FILE
     int frames = 1;
     int warmup = 1;  // untimed frames first: llvmpipe compiles shaders at their first draw
     // --set PLUGIN.KEY=JSON: overrides one of a plugin's config settings

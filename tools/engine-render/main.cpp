@@ -88,8 +88,6 @@ nlohmann::json statsJson(const RenderOptions& options, const std::vector<double>
     return stats;
 }
 
-// `host` lives in main(), outside the try block that reports errors: an exception thrown by
-// plugin code must be read before the plugin is unloaded.
 // Per shadowed light: the median time of its map passes and its errors against ray-traced
 // truth (DESIGN.md metrics, percent of the evaluation set), printed and returned for --stats.
 nlohmann::json printLightErrors(engine::Renderer& renderer, const engine::Scene& scene,
@@ -141,11 +139,15 @@ void applySettingOverrides(engine::EngineConfig& config, const RenderOptions& op
     }
 }
 
-int run(const RenderOptions& options, engine::PluginHost& host) {
+// `context` and `host` live in main(), outside the try block that reports errors: an
+// exception thrown by plugin code must be read before the plugin is unloaded, and the
+// plugin's GL objects must be deleted while the context still exists (host first).
+int run(const RenderOptions& options, std::unique_ptr<engine::GlContext>& context,
+        engine::PluginHost& host) {
     engine::tuneAllocatorForRendering();
     engine::EngineConfig config = engine::loadEngineConfig(options.config);
     applySettingOverrides(config, options);
-    auto context = engine::createEglContext();
+    context = engine::createEglContext();
     context->makeCurrent();
 
     host.loadAll(config);
@@ -180,6 +182,8 @@ int run(const RenderOptions& options, engine::PluginHost& host) {
     request.timing = true;
     for (const auto& [light, file] : options.shadowMasks)
         request.shadowMaskSlots.push_back(lightSlot(scene, options.scene, light));
+    for (const auto& [light, file] : options.comparisons)
+        request.comparisonSlots.push_back(lightSlot(scene, options.scene, light));
 
     // The shadow plugin publishes each light's map as "shadow_map_<light>" in the frame graph.
     for (const auto& [light, file] : options.shadowMaps) {
@@ -206,14 +210,17 @@ int run(const RenderOptions& options, engine::PluginHost& host) {
             it->second.last = report;
         }
     }
-    if (!options.shadowMasks.empty() && !last.shadowTermProvided)
-        throw engine::InputError("--shadow-mask: no loaded plugin provides a shadow term (config " +
-                                 options.config + ")");
+    if ((!options.shadowMasks.empty() || !options.comparisons.empty()) && !last.shadowTermProvided)
+        throw engine::InputError(std::string(options.shadowMasks.empty() ? "--shadow-compare" : "--shadow-mask") +
+                                 ": no loaded plugin provides a shadow term (config " + options.config + ")");
 
     engine::writePngAtomically(options.out, options.width, options.height, 4, renderer.readColor());
     for (std::size_t i = 0; i < options.shadowMasks.size(); ++i)
         engine::writePngAtomically(options.shadowMasks[i].second, options.width, options.height, 1,
                                    renderer.readShadowMask(request.shadowMaskSlots[i]));
+    for (std::size_t i = 0; i < options.comparisons.size(); ++i)
+        engine::writePngAtomically(options.comparisons[i].second, options.width, options.height, 4,
+                                   renderer.readComparison(request.comparisonSlots[i]));
     for (const auto& [light, file] : options.shadowMaps) {
         const auto found = last.depthReadbacks.find("shadow_map_" + light);
         if (found == last.depthReadbacks.end())
@@ -258,9 +265,10 @@ int main(int argc, char** argv) {
         std::fputs(kRenderUsage, stdout);
         return 0;
     }
+    std::unique_ptr<engine::GlContext> context;  // destroyed after the host (declared first)
     engine::PluginHost host;
     try {
-        return run(options, host);
+        return run(options, context, host);
     } catch (const std::exception& error) {
         std::fprintf(stderr, "engine-render: %s\n", error.what());
         return 1;

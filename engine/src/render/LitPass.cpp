@@ -22,6 +22,9 @@ namespace {
 constexpr const char* kNoShadowsGlsl =
     "vec2 lightVisibility(int lightSlot, vec3 eyePosition, vec3 eyeNormal) {\n"
     "    return vec2(1.0, 0.0);\n"
+    "}\n"
+    "vec4 lightDebugColor(int lightSlot, vec3 eyePosition, vec3 eyeNormal) {\n"
+    "    return vec4(0.3, 0.3, 0.3, 1.0);\n"
     "}\n";
 
 // std140 layout of lit.frag's LightData.
@@ -48,9 +51,11 @@ LitPass::LitPass(const RendererConfig& config)
       lightBuffer_(gl::Buffer::create(sizeof(LightData) * kMaxLights, nullptr,
                                       GL_DYNAMIC_STORAGE_BIT)) {}
 
-const gl::Program& LitPass::programFor(const std::string& visibilityGlsl, int lightCount) {
+const gl::Program& LitPass::programFor(const std::string& visibilityGlsl, int lightCount,
+                                      bool debugView) {
     const std::string header = "#version 450 core\n#define MAX_LIGHTS " + std::to_string(kMaxLights) +
-                               "\n#define LIGHT_COUNT " + std::to_string(lightCount) + "\n";
+                               "\n#define LIGHT_COUNT " + std::to_string(lightCount) + "\n" +
+                               (debugView ? "#define LIGHT_DEBUG_VIEW\n" : "");
     const std::string key = header + visibilityGlsl;
     auto found = programs_.find(key);
     if (found != programs_.end()) return *found->second;
@@ -130,7 +135,8 @@ void LitPass::addPass(Frame& frame, const std::string& name, ResourceHandle targ
     const auto& hook = frame.lightVisibility();
     const int lightCount =
         std::min(static_cast<int>(frame.scene().lightInstances.size()), kMaxLights);
-    const gl::Program& program = programFor(hook ? hook->glsl : kNoShadowsGlsl, lightCount);
+    const gl::Program& program =
+        programFor(hook ? hook->glsl : kNoShadowsGlsl, lightCount, output == Output::Comparison);
     // Setup runs inside addPass, after both callbacks were built: share the handles it
     // declares with the execute callback through one small heap object.
     struct Handles { ResourceHandle target, depth; };
@@ -158,7 +164,7 @@ void LitPass::addPass(Frame& frame, const std::string& name, ResourceHandle targ
             glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.id());
             glViewport(0, 0, frame.camera().width, frame.camera().height);
             if (color) glEnable(GL_FRAMEBUFFER_SRGB);
-            const glm::vec4 clear = color ? glm::vec4(config_.clearColor, 1.0f) : glm::vec4(0.0f);
+            const glm::vec4 clear = color ? glm::vec4(config_.clearColor, 1.0f) : glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
             glClearNamedFramebufferfv(framebuffer.id(), GL_COLOR, 0, &clear[0]);
             const float farDepth = 1.0f;
             glClearNamedFramebufferfv(framebuffer.id(), GL_DEPTH, 0, &farDepth);
@@ -179,8 +185,10 @@ void LitPass::addTo(Frame& frame, ResourceHandle colorTarget) {
     addPass(frame, "lit", colorTarget, Output::Color, -1);
 }
 
-void LitPass::addMaskTo(Frame& frame, int slot, ResourceHandle maskTarget) {
-    addPass(frame, "shadow_mask_" + std::to_string(slot), maskTarget, Output::ShadowMask, slot);
+void LitPass::addLightViewTo(Frame& frame, int slot, LightView view, ResourceHandle target) {
+    const bool mask = view == LightView::ShadowMask;
+    addPass(frame, (mask ? "shadow_mask_" : "shadow_compare_") + std::to_string(slot), target,
+            mask ? Output::ShadowMask : Output::Comparison, slot);
 }
 
 } // namespace engine

@@ -19,22 +19,18 @@ void Renderer::setScene(const Scene& scene) {
     for (RenderPlugin* plugin : plugins_) plugin->prepareScene(scene);
 }
 
-void Renderer::ensureTargets(int width, int height, const std::vector<int>& maskSlots) {
-    if (!color_.id() || color_.width() != width || color_.height() != height) {
-        color_ = gl::Texture::create2D(GL_SRGB8_ALPHA8, width, height);
-        masks_.clear();
-    }
-    for (int slot : maskSlots) {
-        bool present = false;
-        for (const auto& mask : masks_) present = present || mask.first == slot;
-        if (!present) masks_.emplace_back(slot, gl::Texture::create2D(GL_RGBA8, width, height));
-    }
+const gl::Texture& Renderer::lightViewTarget(LitPass::LightView view, int slot, int width, int height) {
+    gl::Texture& texture = lightViews_[{view, slot}];
+    if (!texture.id() || texture.width() != width || texture.height() != height)
+        texture = gl::Texture::create2D(GL_RGBA8, width, height);
+    return texture;
 }
 
 FrameResult Renderer::renderFrame(const FrameRequest& request) {
     const auto start = std::chrono::steady_clock::now();
     const int width = request.camera.width, height = request.camera.height;
-    ensureTargets(width, height, request.shadowMaskSlots);
+    if (!color_.id() || color_.width() != width || color_.height() != height)
+        color_ = gl::Texture::create2D(GL_SRGB8_ALPHA8, width, height);
 
     RenderGraph graph;
     Frame frame(*scene_, *gpu_, graph, request.camera, frameIndex_++);
@@ -53,15 +49,19 @@ FrameResult Renderer::renderFrame(const FrameRequest& request) {
     }
     litPass_->addTo(frame, color);
     graph.markOutput(color);
-    for (int slot : request.shadowMaskSlots)
-        for (const auto& [maskSlot, texture] : masks_)
-            if (maskSlot == slot) {
-                const ResourceHandle mask = graph.importTexture(
-                    "shadow_mask_target_" + std::to_string(slot),
-                    {width, height, TextureFormat::RGBA8}, texture.id());
-                litPass_->addMaskTo(frame, slot, mask);
-                graph.markOutput(mask);
-            }
+    const auto addLightViews = [&](const std::vector<int>& slots, LitPass::LightView view) {
+        for (int slot : slots) {
+            const gl::Texture& texture = lightViewTarget(view, slot, width, height);
+            const std::string kind = view == LitPass::LightView::ShadowMask ? "mask" : "compare";
+            const ResourceHandle target =
+                graph.importTexture("shadow_" + kind + "_target_" + std::to_string(slot),
+                                    {width, height, TextureFormat::RGBA8}, texture.id());
+            litPass_->addLightViewTo(frame, slot, view, target);
+            graph.markOutput(target);
+        }
+    };
+    addLightViews(request.shadowMaskSlots, LitPass::LightView::ShadowMask);
+    addLightViews(request.comparisonSlots, LitPass::LightView::Comparison);
 
     graph.compile();
     ExecuteOptions options;
@@ -97,14 +97,17 @@ std::vector<std::uint8_t> Renderer::readColor() const {
 }
 
 std::vector<std::uint8_t> Renderer::readShadowMask(int slot) const {
-    for (const auto& [maskSlot, texture] : masks_)
-        if (maskSlot == slot) {
-            const std::vector<std::uint8_t> rgba = readTextureRGBA8TopDown(texture);
-            std::vector<std::uint8_t> gray(rgba.size() / 4);
-            for (std::size_t i = 0; i < gray.size(); ++i) gray[i] = rgba[i * 4];
-            return gray;
-        }
-    return {};
+    const auto found = lightViews_.find({LitPass::LightView::ShadowMask, slot});
+    if (found == lightViews_.end()) return {};
+    const std::vector<std::uint8_t> rgba = readTextureRGBA8TopDown(found->second);
+    std::vector<std::uint8_t> gray(rgba.size() / 4);
+    for (std::size_t i = 0; i < gray.size(); ++i) gray[i] = rgba[i * 4];
+    return gray;
+}
+
+std::vector<std::uint8_t> Renderer::readComparison(int slot) const {
+    const auto found = lightViews_.find({LitPass::LightView::Comparison, slot});
+    return found == lightViews_.end() ? std::vector<std::uint8_t>{} : readTextureRGBA8TopDown(found->second);
 }
 
 } // namespace engine

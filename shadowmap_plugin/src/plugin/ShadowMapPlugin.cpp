@@ -246,11 +246,12 @@ engine::LightVisibilityHook ShadowMapPlugin::makeHook(const engine::Frame& frame
     std::vector<glm::mat4> eyePlanes(engine::kMaxLights, glm::mat4(0.0f));
     std::vector<glm::vec4> pointLight(engine::kMaxLights, glm::vec4(0.0f));
     std::vector<float> pointFar(engine::kMaxLights, 1.0f);
-    std::vector<std::pair<int, unsigned>> units;  // texture unit, map
+    std::vector<std::pair<int, unsigned>> units;      // texture unit, map (comparing)
+    std::vector<std::pair<int, unsigned>> rawUnits;   // texture unit, map (raw depth, debug)
 
     // The generated part of the hook: one sampler per shadowed light and a dispatch on the
     // slot with constant arguments (see visibility.glsl for why).
-    std::string samplers, dispatch;
+    std::string samplers, dispatch, debugDispatch;
     for (const LightShadow& light : lights_) {
         const LightShadowFrame& plan = light.frame;
         // Outside a spot light's frustum is outside its cone: never lit by it. Directional
@@ -264,6 +265,19 @@ engine::LightVisibilityHook ShadowMapPlugin::makeHook(const engine::Frame& frame
         const std::string slot = std::to_string(light.slot);
         const std::string unit = std::to_string(kFirstUnit + light.slot);
         units.emplace_back(kFirstUnit + light.slot, light.map.id());
+        // The comparison view reads the same map's raw depth on a second unit, through a
+        // sampler object with comparison off (when the GL has units to spare).
+        const int rawUnit = kFirstUnit + engine::kMaxLights + light.slot;
+        const bool debuggable = rawUnit < maxTextureUnits_;
+        if (debuggable) rawUnits.emplace_back(rawUnit, light.map.id());
+        const bool cube = plan.kind == MapKind::Cube;
+        if (debuggable) {
+            samplers += "layout(binding = " + std::to_string(rawUnit) + ") uniform " +
+                        (cube ? "samplerCube" : "sampler2D") + " uShadowDepth" + slot + ";\n";
+            debugDispatch += "    if (lightSlot == " + slot + ") return " +
+                             (cube ? "comparisonCube(" : "comparison2D(") + slot +
+                             ", eyePosition, uShadowDepth" + slot + ");\n";
+        }
         if (plan.kind == MapKind::Map2D) {
             // Ee = Epo * V with Epo = S * P_light * L^-1, composed in double (DESIGN.md).
             eyePlanes[light.slot] = glm::mat4(eyePlanesForCamera(plan.view.texgenPlanes(), eyeToWorld));
@@ -285,7 +299,10 @@ engine::LightVisibilityHook ShadowMapPlugin::makeHook(const engine::Frame& frame
     hook.owner = name();
     hook.glsl = std::string(shaders::visibility_glsl) + samplers +
                 "vec2 lightVisibility(int lightSlot, vec3 eyePosition, vec3 eyeNormal) {\n" + dispatch +
-                "    return uShadowParams[lightSlot].wz;\n}\n";
+                "    return uShadowParams[lightSlot].wz;\n}\n" +
+                "vec4 lightDebugColor(int lightSlot, vec3 eyePosition, vec3 eyeNormal) {\n" +
+                debugDispatch + "    return vec4(0.4, 0.4, 0.4, 1.0);\n}\n";
+    const unsigned rawSampler = rawDepthSampler().id();
     const glm::mat3 eyeToWorldRotation = glm::mat3(glm::dmat3(eyeToWorld));
     hook.bind = [=](const engine::gl::Program& program, const engine::PassContext&) {
         program.set("uShadowParams", params);
@@ -294,8 +311,24 @@ engine::LightVisibilityHook ShadowMapPlugin::makeHook(const engine::Frame& frame
         program.set("uShadowPointFar", pointFar);
         program.set("uShadowEyeToWorld", eyeToWorldRotation);
         for (const auto& [unit, map] : units) glBindTextureUnit(unit, map);
+        for (const auto& [unit, map] : rawUnits) {
+            glBindTextureUnit(unit, map);
+            glBindSampler(unit, rawSampler);
+        }
     };
     return hook;
+}
+
+const engine::gl::Sampler& ShadowMapPlugin::rawDepthSampler() {
+    if (!rawDepthSampler_.id()) {
+        rawDepthSampler_ = engine::gl::Sampler::create();
+        rawDepthSampler_.set(GL_TEXTURE_COMPARE_MODE, GL_NONE);
+        rawDepthSampler_.set(GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        rawDepthSampler_.set(GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+        rawDepthSampler_.set(GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+        rawDepthSampler_.set(GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    }
+    return rawDepthSampler_;
 }
 
 void ShadowMapPlugin::addPasses(engine::Frame& frame) {

@@ -5,6 +5,7 @@
 #include "plugin/LightShadow.h"
 #include "plugin/ShadowSettings.h"
 
+#include "engine/gl/Sampler.h"
 #include "engine/plugin/RenderPlugin.h"
 
 #include <map>
@@ -38,6 +39,7 @@ private:
     void reportOpenCasters(LightShadow& light, const engine::Frame& frame);
     engine::LightVisibilityHook makeHook(const engine::Frame& frame);
     void warnOnce(const LightShadow& light, const std::string& message);
+    const engine::gl::Sampler& rawDepthSampler();  // comparison off: reads a map's depth
 
     ShadowSettings defaults_;
     std::map<std::string, Variant> variantOverrides_;  // --light NAME=VARIANT
@@ -45,6 +47,7 @@ private:
     std::vector<bool> closedMeshes_;                   // per mesh: closed, not double-sided
     std::unique_ptr<DepthRenderer> depth_;             // created with the first frame (needs GL)
     int maxTextureUnits_ = 16;                         // GL_MAX_TEXTURE_IMAGE_UNITS
+    engine::gl::Sampler rawDepthSampler_;
     std::set<std::string> warned_;
     bool cacheMaps_ = true;
     std::uint64_t sceneGeneration_ = 0;

@@ -35,7 +35,9 @@ struct FrameCamera {
 // `glsl` is inserted into the lit fragment shader (GLSL 4.50 core, after the engine's own
 // declarations) and must define
 //     vec2 lightVisibility(int lightSlot, vec3 eyePosition, vec3 eyeNormal);
-// returning (shade in [0,1], dimming in [0,1]) for that light at that eye-space point.
+// returning (shade in [0,1], dimming in [0,1]) for that light at that eye-space point, and
+//     vec4 lightDebugColor(int lightSlot, vec3 eyePosition, vec3 eyeNormal);
+// a picture of how it decided (engine-render --shadow-compare shows it).
 // The lit pass then uses diffuseShade = dimming + (1 - dimming) * shade for diffuse and
 // shade for specular. `bind` runs before the lit pass draws (uniforms; textures on units
 // >= kFirstPluginTextureUnit), and `reads` are the graph resources it samples.

@@ -23,15 +23,17 @@ public:
     // Mesh instances the last drawn pass skipped because they lie outside the view.
     int culledInstances() const { return culledInstances_; }
 
-    // Adds a pass writing light `slot`'s shade into `maskTarget` (an imported RGBA8 texture).
-    void addMaskTo(Frame& frame, int slot, ResourceHandle maskTarget);
+    // What a per-light view shows: the shade (gray, 255 = lit) or the hook's debug picture.
+    enum class LightView { ShadowMask, Comparison };
+    // Adds a pass drawing light `slot`'s view into `target` (an imported RGBA8 texture).
+    void addLightViewTo(Frame& frame, int slot, LightView view, ResourceHandle target);
 
 private:
-    enum class Output { Color = 0, ShadowMask = 1 };
+    enum class Output { Color = 0, ShadowMask = 1, Comparison = 2 };  // lit.frag's modes
     void addPass(Frame& frame, const std::string& name, ResourceHandle target, Output output,
                  int maskSlot);
-    // One program per hook source and light count, compiled on first use.
-    const gl::Program& programFor(const std::string& visibilityGlsl, int lightCount);
+    // One program per hook source, light count and debug variant, compiled on first use.
+    const gl::Program& programFor(const std::string& visibilityGlsl, int lightCount, bool debugView);
     void uploadLights(const Scene& scene, const FrameCamera& camera);
     void drawScene(const Frame& frame, const gl::Program& program, PassContext& context);
 

@@ -23,6 +23,7 @@ namespace engine {
 struct FrameRequest {
     FrameCamera camera;
     std::vector<int> shadowMaskSlots;  // lights (slots) whose shade is also rendered
+    std::vector<int> comparisonSlots;  // lights whose comparison view is also rendered
     bool timing = false;               // close every pass with glFinish and time it
     // Imported depth textures to read back after the frame, by graph name (the shadow
     // plugin publishes each light's map as "shadow_map_<light>"). Unknown names are skipped.
@@ -62,9 +63,12 @@ public:
     std::vector<std::uint8_t> readColor() const;
     // The last frame's shade of light `slot` as 8-bit gray (255 = lit), top row first.
     std::vector<std::uint8_t> readShadowMask(int slot) const;
+    // The last frame's comparison view of light `slot` as RGBA8, top row first.
+    std::vector<std::uint8_t> readComparison(int slot) const;
 
 private:
-    void ensureTargets(int width, int height, const std::vector<int>& maskSlots);
+    // The RGBA8 target of a per-light view, (re)created at the frame's size.
+    const gl::Texture& lightViewTarget(LitPass::LightView view, int slot, int width, int height);
 
     RendererConfig config_;
     std::vector<RenderPlugin*> plugins_;
@@ -73,7 +77,7 @@ private:
     std::unique_ptr<LitPass> litPass_;
     GlTexturePool pool_;
     gl::Texture color_;
-    std::vector<std::pair<int, gl::Texture>> masks_;  // slot -> RGBA8 target
+    std::map<std::pair<LitPass::LightView, int>, gl::Texture> lightViews_;  // (view, slot)
     std::uint64_t frameIndex_ = 0;
 };
 
