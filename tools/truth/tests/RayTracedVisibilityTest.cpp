@@ -4,7 +4,7 @@
 
 #include "TruthTestScene.h"
 
-#include "../../../tests/gl/GlTestContext.h"
+#include "TruthGlTest.h"
 
 #include "engine/render/SceneGpu.h"
 
@@ -61,7 +61,7 @@ Truth traceTruth(Type type, const glm::dvec3& offset, int width = 320, int heigh
     return truth;
 }
 
-class RayTracedVisibilityTest : public engine::test::GlTest,
+class RayTracedVisibilityTest : public test::TruthGlTest,
                                 public ::testing::WithParamInterface<Type> {};
 
 std::string typeName(const ::testing::TestParamInfo<Type>& info) {
@@ -134,7 +134,7 @@ TEST_P(RayTracedVisibilityTest, SameTruthTenToTheSixAwayFromTheOrigin) {
 INSTANTIATE_TEST_SUITE_P(Lights, RayTracedVisibilityTest,
                          ::testing::Values(Type::Spot, Type::Point, Type::Directional), typeName);
 
-class TruthGlTest : public engine::test::GlTest {};
+using TruthGlTest = test::TruthGlTest;
 
 TEST_F(TruthGlTest, SpotEvaluationSetStopsAtTheConeAndAtBackFaces) {
     engine::Scene scene = test::boxOverPlane(Type::Spot);

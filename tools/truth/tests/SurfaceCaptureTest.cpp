@@ -4,7 +4,7 @@
 
 #include "TruthTestScene.h"
 
-#include "../../../tests/gl/GlTestContext.h"
+#include "TruthGlTest.h"
 
 #include "engine/render/SceneGpu.h"
 
@@ -13,7 +13,7 @@
 namespace truth {
 namespace {
 
-class SurfaceCaptureTest : public engine::test::GlTest,
+class SurfaceCaptureTest : public test::TruthGlTest,
                            public ::testing::WithParamInterface<double> {};
 
 TEST_P(SurfaceCaptureTest, PointsLieOnTheGeometryThatCoversThePixel) {
@@ -60,7 +60,7 @@ TEST_P(SurfaceCaptureTest, PointsLieOnTheGeometryThatCoversThePixel) {
 INSTANTIATE_TEST_SUITE_P(Offsets, SurfaceCaptureTest, ::testing::Values(0.0, 1.0e6),
                          [](const auto& info) { return info.param == 0.0 ? "AtOrigin" : "At1e6"; });
 
-class SurfaceCaptureGlTest : public engine::test::GlTest {};
+class SurfaceCaptureGlTest : public test::TruthGlTest {};
 
 TEST_F(SurfaceCaptureGlTest, DoubleSidedBackFacesFaceTheCamera) {
     // The plane seen from below: culled when single-sided, its flipped face when double-sided.
