@@ -26,6 +26,10 @@ const gl::Texture& Renderer::lightViewTarget(LitPass::LightView view, int slot, 
     return texture;
 }
 
+void Renderer::reloadSettings() {
+    for (RenderPlugin* plugin : plugins_) plugin->reloadSettings(*scene_);
+}
+
 FrameResult Renderer::renderFrame(const FrameRequest& request) {
     const auto start = std::chrono::steady_clock::now();
     const int width = request.camera.width, height = request.camera.height;

@@ -25,6 +25,9 @@ public:
     // The scene was loaded (or replaced). Validate per-light settings here and throw
     // InputError naming the light for bad ones.
     virtual void prepareScene(const Scene& scene) {}
+    // Only settings changed (lights' extras, options): same geometry, same nodes. A plugin
+    // may keep what the change does not touch (the shadow plugin keeps unchanged maps).
+    virtual void reloadSettings(const Scene& scene) { prepareScene(scene); }
     // Adds this frame's passes (setup runs now, execute later) and hooks into the frame.
     virtual void addPasses(Frame& frame) = 0;
     // Plugin-specific figures for --stats (after the frame executed).

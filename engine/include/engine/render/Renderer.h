@@ -53,6 +53,9 @@ public:
     // The scene must outlive the renderer (or the next setScene). Calls every plugin's
     // prepareScene, which throws InputError for bad per-light settings.
     void setScene(const Scene& scene);
+    // The scene's settings changed (e.g. a light's extras.shadow edited in a viewer), not its
+    // geometry: plugins re-read them without a GPU upload. Throws like setScene.
+    void reloadSettings();
 
     FrameResult renderFrame(const FrameRequest& request);
 
