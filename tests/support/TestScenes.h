@@ -3,6 +3,7 @@
 // edges by position), lights placed by position and target, a camera the same way.
 #include "engine/render/Frame.h"
 #include "engine/scene/Scene.h"
+#include "engine/scene/Shapes.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -15,34 +16,6 @@ inline glm::dmat4 placeLooking(const glm::dvec3& position, const glm::dvec3& tar
     const glm::dvec3 forward = glm::normalize(target - position);
     const glm::dvec3 up = std::abs(forward.y) > 0.99 ? glm::dvec3(0, 0, -1) : glm::dvec3(0, 1, 0);
     return glm::inverse(glm::lookAt(position, target, up));
-}
-
-inline Primitive boxPrimitive(const glm::dvec3& size) {
-    const glm::vec3 h = glm::vec3(size * 0.5);
-    const glm::vec3 normals[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
-    Primitive primitive;
-    for (const glm::vec3& n : normals) {
-        // Two axes spanning the face; the winding is fixed below from the geometric normal.
-        const glm::vec3 a = std::abs(n.y) > 0.5f ? glm::vec3(0, 0, 1) : glm::vec3(0, 1, 0);
-        const glm::vec3 b = glm::cross(a, n);
-        const auto base = static_cast<std::uint32_t>(primitive.positions.size());
-        const glm::vec3 corners[4] = {n - b - a, n + b - a, n + b + a, n - b + a};
-        for (const glm::vec3& c : corners) {
-            primitive.positions.push_back(c * h);
-            primitive.normals.push_back(n);
-        }
-        // Wind so the geometric normal (p1-p0) x (p2-p0) points along n.
-        const glm::vec3 geometric =
-            glm::cross(primitive.positions[base + 1] - primitive.positions[base],
-                       primitive.positions[base + 2] - primitive.positions[base]);
-        if (glm::dot(geometric, n) > 0.0f)
-            primitive.indices.insert(primitive.indices.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
-        else
-            primitive.indices.insert(primitive.indices.end(), {base, base + 2, base + 1, base, base + 3, base + 2});
-    }
-    primitive.material = 0;
-    for (const glm::vec3& p : primitive.positions) primitive.bounds.extend(glm::dvec3(p));
-    return primitive;
 }
 
 // A builder that keeps node/mesh bookkeeping out of the tests.
@@ -66,12 +39,7 @@ struct SceneBuilder {
 
     // An axis-aligned closed box between min and max (world space).
     int addBox(const std::string& name, const glm::dvec3& min, const glm::dvec3& max) {
-        Mesh mesh;
-        mesh.name = name;
-        mesh.primitives.push_back(boxPrimitive(max - min));
-        mesh.bounds = mesh.primitives[0].bounds;
-        mesh.closed = true;
-        scene.meshes.push_back(mesh);
+        scene.meshes.push_back(boxMesh(name, max - min));
         Node node;
         node.name = name;
         node.mesh = static_cast<int>(scene.meshes.size()) - 1;

@@ -1,6 +1,7 @@
 // isClosedSurface decides whether the back-face shadow variant may use a mesh as caster;
 // generateNormals fills primitives that come without normals.
 #include "engine/scene/Scene.h"
+#include "engine/scene/Shapes.h"
 
 #include "gltf_test_support.h"
 
@@ -113,3 +114,18 @@ TEST(MeshTopology, VertexWithoutAreaGetsAUnitNormal) {
 }
 
 } // namespace
+
+TEST(Shapes, GeneratedBoxIsClosedAndWoundOutward) {
+    const engine::Mesh box = engine::boxMesh("box", {2.0, 1.0, 0.5});
+    EXPECT_TRUE(engine::isClosedSurface(box));
+    const engine::Primitive& primitive = box.primitives[0];
+    ASSERT_EQ(primitive.triangleCount(), 12u);
+    for (std::size_t t = 0; t < primitive.indices.size(); t += 3) {
+        const glm::vec3 a = primitive.positions[primitive.indices[t]];
+        const glm::vec3 b = primitive.positions[primitive.indices[t + 1]];
+        const glm::vec3 c = primitive.positions[primitive.indices[t + 2]];
+        // Counter-clockwise from outside: the geometric normal points away from the centre.
+        EXPECT_GT(glm::dot(glm::cross(b - a, c - a), (a + b + c) / 3.0f), 0.0f) << "triangle " << t / 3;
+    }
+    EXPECT_EQ(box.bounds.max, glm::dvec3(1.0, 0.5, 0.25));
+}
