@@ -135,3 +135,51 @@ TEST_F(SkipWork, CastersOutsideTheLightAndMeshesOutsideTheViewAreNotDrawn) {
     EXPECT_EQ(frames.lastLight(0)["draws"], 2);            // floor and box
     EXPECT_EQ(frames.results.back().litInstancesCulled, 1);  // far_box is outside the view
 }
+
+TEST_F(SkipWork, MovingACasterInvalidatesExactlyTheLightsThatSeeIt) {
+    // Two narrow spots, one over each half of the floor; the box under the left one moves.
+    SceneBuilder builder;
+    builder.addBox("floor", {-10, -0.2, -10}, {10, 0, 10});
+    const int left = builder.addBox("left_box", {-5.5, 1, -0.5}, {-4.5, 2, 0.5});
+    builder.addBox("right_box", {4.5, 1, -0.5}, {5.5, 2, 0.5});
+    builder.addLight("left_spot", Light::Type::Spot, {-5, 8, 0}, {-5, 0, 0}, {}, 0.35);
+    builder.addLight("right_spot", Light::Type::Spot, {5, 8, 0}, {5, 0, 0}, {}, 0.35);
+    engine::Scene scene = builder.build();
+    const Frames frames = render(scene, 4, [&](int) {
+        scene.nodes[left].local[3].z += 0.05;
+        scene.updateWorldTransforms();
+    });
+    EXPECT_EQ(frames.passRuns("shadow_left_spot"), 4);
+    EXPECT_EQ(frames.passRuns("shadow_right_spot"), 1);
+}
+
+TEST_F(SkipWork, CachedMapsGiveTheSameMasksAsFreshOnes) {
+    // Cached output must never go stale: after the light has moved and come back, and the
+    // camera has moved, the masks equal those of a renderer that caches nothing.
+    SceneBuilder builder = boxOverFloor();
+    const int spot = builder.addLight("spot", Light::Type::Spot, {-3, 8, -2}, {0, 0, 0});
+    builder.addLight("bulb", Light::Type::Point, {1, 4, 2}, {1, 0, 2});
+    engine::Scene scene = builder.build();
+    const engine::FrameCamera camera = engine::test::cameraLooking({0, 12, 10}, {0, 0, 0}, 96, 72);
+
+    engine::PluginHost uncachedHost;
+    uncachedHost.load({"shadowmap_plugin", {{"resolution", 256}, {"cache_maps", false}}}, {ENGINE_PLUGIN_DIR});
+    engine::Renderer cached({}, plugins()), uncached({}, uncachedHost.renderPlugins());
+    cached.setScene(scene);
+    uncached.setScene(scene);
+    engine::FrameRequest request;
+    request.camera = camera;
+    request.shadowMaskSlots = {0, 1};
+    for (int frame = 0; frame < 4; ++frame) {
+        // Frame 1 moves the spot away, frame 2 moves it back: the cache must miss, then hit
+        // a key equal to frame 0's again, never reuse frame 1's map.
+        if (frame == 1) engine::orbitNode(scene, spot, {0, 0, 0}, 0.3);
+        if (frame == 2) engine::orbitNode(scene, spot, {0, 0, 0}, -0.3);
+        if (frame == 3) request.camera.eyeToWorld = engine::orbitTransform(camera.eyeToWorld, {0, 0, 0}, 0.2);
+        cached.renderFrame(request);
+        uncached.renderFrame(request);
+        for (int slot : {0, 1})
+            EXPECT_EQ(cached.readShadowMask(slot), uncached.readShadowMask(slot))
+                << "frame " << frame << ", light slot " << slot;
+    }
+}
