@@ -7,8 +7,9 @@
 // survived the peel where rounding put them a step behind z1, and the map held z1 + tiny:
 // acne on most lit surfaces of the showcase.
 // The depth test then keeps the nearest remaining layer z2, since the midpoint grows with
-// z. Texels with no second layer keep the clear value 1 (far): nothing behind the first
-// surface, so it is lit.
+// z. The far plane counts as a last layer (DepthRenderer draws it after the casters), so a
+// texel with one surface holds the midpoint between it and far; texels with no surface at
+// all keep the clear value (far): nothing there to shadow.
 #ifdef PEEL
 #ifdef PEEL_ARRAY
 layout(binding = 0) uniform sampler2DArray uFirstLayer;  // one layer per cube face
@@ -19,12 +20,17 @@ layout(binding = 0) uniform sampler2D uFirstLayer;
 #define FIRST_LAYER_DEPTH texelFetch(uFirstLayer, ivec2(gl_FragCoord.xy), 0).r
 #endif
 uniform float uPeelEpsilon;
+// Reversed Z (d32f): near is 1, far 0, so "behind z1" is smaller, and the epsilon is
+// relative (uPeelEpsilon * z1): float depth there has relative, not absolute, steps.
+uniform bool uReversedZ;
 #endif
 
 void main() {
 #ifdef PEEL
     float z1 = FIRST_LAYER_DEPTH;
-    if (gl_FragCoord.z <= z1 + uPeelEpsilon) discard;
+    bool firstLayer = uReversedZ ? gl_FragCoord.z >= z1 - uPeelEpsilon * z1
+                                 : gl_FragCoord.z <= z1 + uPeelEpsilon;
+    if (firstLayer) discard;
     gl_FragDepth = 0.5 * (gl_FragCoord.z + z1);
 #endif
 }

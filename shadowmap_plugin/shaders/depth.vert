@@ -5,6 +5,20 @@ layout(location = 0) in vec3 inPosition;
 uniform mat4 uLightModelViewProjection;  // P_light * L^-1 * M
 invariant gl_Position;
 
+#ifdef PEEL
+// Woo pass 2's last draw (see DepthRenderer.cpp): a full-screen triangle at the far plane,
+// window depth 1 (0 with reversed Z), from gl_VertexID alone.
+uniform bool uFarLayer;
+uniform bool uReversedZ;
+#endif
+
 void main() {
+#ifdef PEEL
+    if (uFarLayer) {
+        vec2 corner = vec2(gl_VertexID == 1 ? 3.0 : -1.0, gl_VertexID == 2 ? 3.0 : -1.0);
+        gl_Position = vec4(corner, uReversedZ ? 0.0 : 1.0, 1.0);
+        return;
+    }
+#endif
     gl_Position = uLightModelViewProjection * vec4(inPosition, 1.0);
 }

@@ -17,25 +17,42 @@
 // indexing sampler arrays cost llvmpipe 40 ms per 1280x720 frame even with every light
 // unshadowed: it runs the texture fetches of untaken branches.)
 
-// x: unused, y: unused, z: dimming, w: the shade outside the map (2D maps) or of every
+// x: 1 = reversed Z (ShadowSettings reversed_z: window depth 1 at near, 0 at far, and the
+// map compares with GL_GEQUAL), y: bias subtracted from the reference depth (d32f without
+// reversed Z, see ShadowSettings.h), z: dimming, w: the shade outside the map (2D maps) or of every
 // point of a light without a map this frame (1 for lights without shadows, 0 for a spot
 // light whose frustum holds nothing the camera sees: every visible point is outside it).
 uniform vec4 uShadowParams[MAX_LIGHTS];
 uniform mat4 uShadowEyePlanes[MAX_LIGHTS];   // Ee, rows s,t,r,q (2D maps)
 uniform vec4 uShadowPointLight[MAX_LIGHTS];  // eye-space light position, near (cube maps)
-uniform float uShadowPointFar[MAX_LIGHTS];   // far (cube maps)
+uniform float uShadowPointFar[MAX_LIGHTS];   // far (cube maps); 0 = infinite
 uniform mat3 uShadowEyeToWorld;              // rotation of V: cube lookups use world axes
 
 // Branch-free on purpose: llvmpipe runs a fragment shader on SIMD lanes, and early returns
 // cost it more than always sampling (measured: 34.6 -> 28 ms for one light at 1280x720).
+// Reversed Z flips the depth range: nearer than near is r > 1, beyond far is r < 0, and
+// "behind everything the map holds" is r = 0.
 float shadowMap2D(int slot, vec3 eyePosition, sampler2DShadow map) {
     vec4 coord = uShadowEyePlanes[slot] * vec4(eyePosition, 1.0);
     vec3 p = coord.xyz / coord.w;
-    float shade = texture(map, vec3(p.xy, min(p.z, 1.0)));
+    bool reversed = uShadowParams[slot].x > 0.5;
+    float reference = p.z - uShadowParams[slot].y;
+    float shade = texture(map, vec3(p.xy, reversed ? max(reference, 0.0) : min(reference, 1.0)));
     bool outside = any(lessThan(p.xy, vec2(0.0))) || any(greaterThan(p.xy, vec2(1.0)));
     shade = outside ? uShadowParams[slot].w : shade;
-    shade = p.z < 0.0 ? 1.0 : shade;
+    shade = (reversed ? p.z > 1.0 : p.z < 0.0) ? 1.0 : shade;
     return coord.w <= 0.0 ? 0.0 : shade;
+}
+
+// The window depth a cube face wrote at distance `major` along its axis, in forms that keep
+// float's relative precision: f/(f-n) * (1 - n/major), or reversed n/(f-n) * (f/major - 1)
+// (the same numbers as 0.5 * ((f+n)/(f-n) - 2fn/((f-n) major)) + 0.5, fewer roundings);
+// with an infinite far (f = 0 here): 1 - n/major, reversed n/major.
+float cubeReferenceDepth(int slot, float major) {
+    float n = uShadowPointLight[slot].w, f = uShadowPointFar[slot];
+    bool reversed = uShadowParams[slot].x > 0.5;
+    if (f <= 0.0) return reversed ? n / major : 1.0 - n / major;
+    return reversed ? n / (f - n) * (f / major - 1.0) : f / (f - n) * (1.0 - n / major);
 }
 
 // The seeds' comparison view, for engine-render --shadow-compare: green where the
@@ -58,23 +75,27 @@ vec4 comparison2D(int slot, vec3 eyePosition, sampler2D depth) {
     vec3 p = coord.xyz / coord.w;
     if (coord.w <= 0.0 || any(lessThan(p, vec3(0.0))) || any(greaterThan(p, vec3(1.0))))
         return vec4(0.4, 0.4, 0.4, 1.0);
-    return comparisonColor(p.z, texture(depth, p.xy).r);
+    float stored = texture(depth, p.xy).r;
+    // Reversed Z: nearer is larger, so the roles swap for "reference behind stored".
+    return uShadowParams[slot].x > 0.5 ? comparisonColor(stored, p.z) : comparisonColor(p.z, stored);
 }
 
 vec4 comparisonCube(int slot, vec3 eyePosition, samplerCube depth) {
     vec3 toPoint = uShadowEyeToWorld * (eyePosition - uShadowPointLight[slot].xyz);
     float major = max(max(abs(toPoint.x), abs(toPoint.y)), abs(toPoint.z));
-    float n = uShadowPointLight[slot].w, f = uShadowPointFar[slot];
-    float reference = 0.5 * ((f + n) / (f - n) - 2.0 * f * n / ((f - n) * major)) + 0.5;
-    if (major < n || reference > 1.0) return vec4(0.4, 0.4, 0.4, 1.0);
-    return comparisonColor(reference, texture(depth, toPoint).r);
+    float reference = cubeReferenceDepth(slot, major);
+    bool reversed = uShadowParams[slot].x > 0.5;
+    if (major < uShadowPointLight[slot].w || (reversed ? reference < 0.0 : reference > 1.0))
+        return vec4(0.4, 0.4, 0.4, 1.0);
+    float stored = texture(depth, toPoint).r;
+    return reversed ? comparisonColor(stored, reference) : comparisonColor(reference, stored);
 }
 
 float shadowMapCube(int slot, vec3 eyePosition, samplerCubeShadow map) {
     vec3 toPoint = uShadowEyeToWorld * (eyePosition - uShadowPointLight[slot].xyz);
     float major = max(max(abs(toPoint.x), abs(toPoint.y)), abs(toPoint.z));
-    float n = uShadowPointLight[slot].w, f = uShadowPointFar[slot];
-    if (major < n) return 1.0;
-    float depth = 0.5 * ((f + n) / (f - n) - 2.0 * f * n / ((f - n) * major)) + 0.5;
-    return texture(map, vec4(toPoint, min(depth, 1.0)));
+    if (major < uShadowPointLight[slot].w) return 1.0;
+    float depth = cubeReferenceDepth(slot, major) - uShadowParams[slot].y;
+    bool reversed = uShadowParams[slot].x > 0.5;
+    return texture(map, vec4(toPoint, reversed ? max(depth, 0.0) : min(depth, 1.0)));
 }

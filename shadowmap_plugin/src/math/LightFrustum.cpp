@@ -117,10 +117,12 @@ LightView invalidView(std::string reason) {
     return v;
 }
 
-// Final guard: a view is only valid when everything in it is a finite, usable number.
+// Final guard: a view is only valid when everything in it is a finite, usable number
+// (the far plane may be +infinity: the projection's numbers stay finite then).
 void checkFinite(LightView& v) {
     if (isFinite(v.lightToWorld) && isFinite(v.projection) && std::isfinite(v.nearPlane) &&
-        std::isfinite(v.farPlane) && v.farPlane > v.nearPlane) {
+        v.nearPlane >= 0.0 && (std::isfinite(v.farPlane) || v.farPlane > 0.0) &&
+        v.farPlane > v.nearPlane) {
         v.valid = true;
         return;
     }
@@ -157,11 +159,50 @@ void finishPerspectiveDepth(const DepthFit& fit, double range, const FrustumFitO
     nearD *= 1.0 - opt.depthMargin;
     nearPlane = std::max(nearD, farD * opt.minNearFraction);
     farPlane = farD;
+    // Forced planes (near_plane / far_plane settings) replace the fitted ones; a near beyond
+    // the far makes the view degenerate (checkFinite), so the light loses its shadow loudly.
+    if (opt.nearPlane > 0.0) nearPlane = opt.nearPlane;
+    if (opt.farPlane > 0.0) farPlane = opt.farPlane;
+    // Reversed Z without a forced far: infinite. Depth is then n/d, whose float error is
+    // relative everywhere; a finite far drives depth to 0 near it, where the lookup's
+    // absolute errors outgrow float polygon-offset units (measured: 6% acne on a point
+    // light's receivers near its fitted far, tools/shadowmap-stress light_on_surface).
+    else if (opt.reversedZ) farPlane = std::numeric_limits<double>::infinity();
 }
 
-glm::dmat4 perspective(double fovy, double nearPlane, double farPlane) {
-    // Explicitly the OpenGL (-1..1 depth) convention, whatever GLM_FORCE_* says.
-    return glm::perspectiveRH_NO(fovy, 1.0, nearPlane, farPlane);
+// Aspect 1. farPlane may be +infinity. Not GLM's helpers: the conventions are explicit here,
+// whatever GLM_FORCE_* says, and the reversed ones are written so the depth row keeps its
+// relative precision (no 1 - n/d cancellation).
+glm::dmat4 perspective(double fovy, double nearPlane, double farPlane, bool reversedZ) {
+    const double n = nearPlane, f = farPlane, cot = 1.0 / std::tan(0.5 * fovy);
+    glm::dmat4 p(0.0);
+    p[0][0] = cot;
+    p[1][1] = cot;
+    p[2][3] = -1.0;  // w_clip = -z_eye = d
+    if (!reversedZ && std::isinf(f)) {  // z_ndc = 1 - 2n/d
+        p[2][2] = -1.0;
+        p[3][2] = -2.0 * n;
+    } else if (!reversedZ) {  // z_ndc in [-1, 1]: glm::perspectiveRH_NO
+        p[2][2] = -(f + n) / (f - n);
+        p[3][2] = -2.0 * f * n / (f - n);
+    } else if (std::isinf(f)) {  // z_ndc = n/d: 1 at near, 0 at infinity
+        p[2][2] = 0.0;
+        p[3][2] = n;
+    } else {  // z_ndc = n (f - d) / ((f - n) d): 1 at near, 0 at far
+        p[2][2] = n / (f - n);
+        p[3][2] = n * f / (f - n);
+    }
+    return p;
+}
+
+// Orthographic depth rows: NO maps d = near..far to -1..1; reversed to 1..0.
+glm::dmat4 orthographic(double hx, double hy, double nearPlane, double farPlane, bool reversedZ) {
+    glm::dmat4 p = glm::orthoRH_NO(-hx, hx, -hy, hy, nearPlane, farPlane);
+    if (reversedZ) {  // z_ndc = (far - d) / (far - near), d = -z_eye
+        p[2][2] = 1.0 / (farPlane - nearPlane);
+        p[3][2] = farPlane / (farPlane - nearPlane);
+    }
+    return p;
 }
 
 }  // namespace
@@ -194,7 +235,17 @@ glm::dmat4 LightView::viewProjection() const {
 }
 
 glm::dmat4 LightView::texgenPlanes() const {
-    return scaleBias() * viewProjection();
+    return (reversedZ ? scaleBiasZeroToOne() : scaleBias()) * viewProjection();
+}
+
+double windowDepthPerTexel(const LightView& view, int resolution) {
+    // P[0][0] = 1 / half width (orthographic) or cot(half angle) (perspective).
+    const double texelPerDistance = 2.0 / (view.projection[0][0] * resolution);
+    const double n = view.nearPlane, f = view.farPlane;
+    if (view.projection[2][3] == 0.0) return texelPerDistance / (f - n);  // orthographic
+    const double d = std::max(view.nearestReceiver, n);
+    const double depthSlope = std::isinf(f) ? n / (d * d) : n * f / ((f - n) * d * d);
+    return texelPerDistance * d * depthSlope;
 }
 
 glm::dvec3 cubeFaceDirection(int face) {
@@ -210,8 +261,10 @@ glm::dvec3 cubeFaceUp(int face) {
     return ups[face];
 }
 
-double cubeShadowReferenceDepth(const glm::dvec3& v, double n, double f) {
+double cubeShadowReferenceDepth(const glm::dvec3& v, double n, double f, bool reversedZ) {
     const double m = std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
+    if (std::isinf(f)) return reversedZ ? n / m : 1.0 - n / m;
+    if (reversedZ) return n * (f - m) / ((f - n) * m);
     const double zNdc = (f + n) / (f - n) - 2.0 * f * n / ((f - n) * m);
     return 0.5 * zNdc + 0.5;
 }
@@ -248,7 +301,15 @@ LightView fitSpotLight(const engine::LightInstance& instance, const engine::Ligh
         return invalidView("spot light outer cone angle must be a positive number");
 
     LightView v;
+    v.reversedZ = opt.reversedZ;
     const double half = std::min(light.outerConeAngle, opt.maxSpotHalfAngle);
+    if (light.outerConeAngle > opt.maxSpotHalfAngle) {
+        std::ostringstream s;
+        s << "spot outer cone angle " << light.outerConeAngle * 57.29577951308232
+          << " deg clamped to " << opt.maxSpotHalfAngle * 57.29577951308232
+          << " deg for its shadow map (a perspective map needs < 90 deg)";
+        v.clampWarning = s.str();
+    }
     const double k = std::tan(half);
     v.lightToWorld = lightToWorldFromDirection(position, direction);
     const RigidFrame frame(v.lightToWorld);
@@ -268,7 +329,8 @@ LightView fitSpotLight(const engine::LightInstance& instance, const engine::Ligh
             fit.casterMins.push_back(dmin);
 
     finishPerspectiveDepth(fit, light.range, opt, v.empty, v.nearPlane, v.farPlane);
-    v.projection = perspective(2.0 * half, v.nearPlane, v.farPlane);
+    v.nearestReceiver = fit.anyReceiver() ? fit.receiverMin : 0.0;
+    v.projection = perspective(2.0 * half, v.nearPlane, v.farPlane, v.reversedZ);
     checkFinite(v);
     return v;
 }
@@ -284,6 +346,7 @@ LightView fitDirectionalLight(const engine::LightInstance& instance, const engin
     for (const engine::Aabb& box : bounds.receivers)
         if (usable(box)) all.extend(box);
     LightView v;
+    v.reversedZ = opt.reversedZ;
     v.empty = all.empty();
     if (v.empty) {  // placeholder: a unit box at the casters (or the origin); pass skipped
         engine::Aabb casters;
@@ -293,7 +356,7 @@ LightView fitDirectionalLight(const engine::LightInstance& instance, const engin
         v.lightToWorld = lightToWorldFromDirection(at, direction);
         v.nearPlane = 0.0;
         v.farPlane = 1.0;
-        v.projection = glm::orthoRH_NO(-0.5, 0.5, -0.5, 0.5, 0.0, 1.0);
+        v.projection = orthographic(0.5, 0.5, 0.0, 1.0, v.reversedZ);
         checkFinite(v);
         return v;
     }
@@ -327,7 +390,7 @@ LightView fitDirectionalLight(const engine::LightInstance& instance, const engin
                                 glm::dvec4(frame.z, 0.0), glm::dvec4(eye, 1.0));
     v.nearPlane = 0.0;
     v.farPlane = wz + 2.0 * padZ;
-    v.projection = glm::orthoRH_NO(-hx, hx, -hy, hy, v.nearPlane, v.farPlane);
+    v.projection = orthographic(hx, hy, v.nearPlane, v.farPlane, v.reversedZ);
     checkFinite(v);
     return v;
 }
@@ -367,10 +430,14 @@ PointLightViews fitPointLight(const engine::LightInstance& instance, const engin
 
     bool empty = false;
     finishPerspectiveDepth(fit, light.range, opt, empty, out.nearPlane, out.farPlane);
-    const glm::dmat4 projection = perspective(glm::half_pi<double>(), out.nearPlane, out.farPlane);
+    out.reversedZ = opt.reversedZ;
+    const glm::dmat4 projection =
+        perspective(glm::half_pi<double>(), out.nearPlane, out.farPlane, out.reversedZ);
     out.valid = true;
     for (int face = 0; face < 6; ++face) {
         LightView& f = out.faces[face];
+        f.reversedZ = out.reversedZ;
+        f.nearestReceiver = fit.anyReceiver() ? fit.receiverMin : 0.0;
         f.projection = projection;
         f.nearPlane = out.nearPlane;
         f.farPlane = out.farPlane;

@@ -46,6 +46,14 @@ struct ShadowBounds {
 
 struct FrustumFitOptions {
     double minNearFraction = 1e-4;  // near >= far * minNearFraction
+    // Spot and point (issue 8, ShadowSettings near_plane / far_plane): > 0 replaces the
+    // fitted near / far; farPlane may be +infinity (an infinite perspective). With
+    // reversedZ and no farPlane, the far plane is infinite (see finishPerspectiveDepth).
+    double nearPlane = 0.0;
+    double farPlane = 0.0;
+    // Reversed Z: P_light maps near -> 1 and far -> 0 in a [0,1] clip range, for
+    // glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE); see LightView::reversedZ.
+    bool reversedZ = false;
     double depthMargin = 1e-3;      // [near, far] widened by this fraction of its length
     double extentMargin = 1e-3;     // directional x/y box widened by this fraction
     double maxSpotHalfAngle = 1.5533430342749532;  // 89 deg: perspective needs < 90
@@ -54,15 +62,27 @@ struct FrustumFitOptions {
 struct LightView {
     glm::dmat4 lightToWorld{1.0};  // L
     glm::dmat4 projection{1.0};    // P_light
-    double nearPlane = 0.0, farPlane = 0.0;
+    double nearPlane = 0.0, farPlane = 0.0;  // farPlane +infinity: infinite perspective
     bool valid = false;  // false: degenerate light, see invalidReason; never NaN
     std::string invalidReason;
+    std::string clampWarning;  // a light parameter was clamped to stay usable (say so)
+    double nearestReceiver = 0.0;  // perspective: depth of the nearest receiver inside
     bool empty = true;  // no receiver inside the frustum: the pass can be skipped
+    // false: OpenGL clip convention (z in [-w, w], window depth 0 at near, 1 at far).
+    // true: [0,1] clip depth with near at 1 and far at 0 (glClipControl ZERO_TO_ONE), and
+    // S leaves r unscaled (scaleBiasZeroToOne): window depth = r/q directly.
+    bool reversedZ = false;
 
     glm::dmat4 worldToLight() const;    // L^-1 (rigid inverse)
     glm::dmat4 viewProjection() const;  // P_light * L^-1
-    glm::dmat4 texgenPlanes() const;    // Epo = S * P_light * L^-1
+    glm::dmat4 texgenPlanes() const;    // Epo = S * P_light * L^-1 (S for the convention)
 };
+
+// The window-depth change across one texel of a surface at 45 degrees to the light's axis
+// (the polygon offset's slope m for slope 1), with `resolution` texels per side:
+// orthographic: texel width / (far - near), the same everywhere; perspective: at the
+// nearest receiver (largest there), texel width(d) * |d window depth / d distance|(d).
+double windowDepthPerTexel(const LightView& view, int resolution);
 
 // GL cube-map face order (GL_TEXTURE_CUBE_MAP_POSITIVE_X + face).
 enum CubeFace : int { PositiveX = 0, NegativeX, PositiveY, NegativeY, PositiveZ, NegativeZ };
@@ -71,7 +91,8 @@ glm::dvec3 cubeFaceUp(int face);         // its up vector (OpenGL cube-map table
 
 struct PointLightViews {
     std::array<LightView, 6> faces;          // faces[f].empty: nothing to receive in face f
-    double nearPlane = 0.0, farPlane = 0.0;  // shared by all faces
+    double nearPlane = 0.0, farPlane = 0.0;  // shared by all faces (far may be +infinity)
+    bool reversedZ = false;                  // as LightView::reversedZ, for all faces
     bool valid = false;
     std::string invalidReason;
 
@@ -82,7 +103,9 @@ struct PointLightViews {
 // The r a samplerCubeShadow lookup must compare for the point lightToPoint = world - light
 // position (what the face that holds the texel wrote): S applied to the depth of the face
 // perspective at distance max(|x|,|y|,|z|) along the major axis.
-double cubeShadowReferenceDepth(const glm::dvec3& lightToPoint, double nearPlane, double farPlane);
+// reversedZ: the window depth of the reversed [0,1] projection instead (near 1, far 0).
+double cubeShadowReferenceDepth(const glm::dvec3& lightToPoint, double nearPlane, double farPlane,
+                                bool reversedZ = false);
 
 // A rigid L (columns x, y, z = -direction, position) with an up vector that is robust for
 // every direction: the world axis least parallel to it. Direction need not be unit length.

@@ -32,6 +32,11 @@ glm::dmat4 scaleBias() {
                           {0.0, 0.0, 0.0, 1.0});
 }
 
+glm::dmat4 scaleBiasZeroToOne() {
+    return planesFromRows({0.5, 0.0, 0.0, 0.5}, {0.0, 0.5, 0.0, 0.5}, {0.0, 0.0, 1.0, 0.0},
+                          {0.0, 0.0, 0.0, 1.0});
+}
+
 glm::dmat4 shadowTexgenPlanes(const glm::dmat4& lightProjection, const glm::dmat4& lightToWorld) {
     return scaleBias() * lightProjection * glm::inverse(lightToWorld);
 }

@@ -54,6 +54,9 @@ private:
 
 // S: maps clip-space [-1,1] (after the divide) to [0,1] for s, t and r.
 glm::dmat4 scaleBias();
+// S for a projection whose depth is already [0,1] (glClipControl ZERO_TO_ONE, e.g. reversed
+// Z): s and t as scaleBias(), r left as it is: rows (1/2 0 0 1/2)(0 1/2 0 1/2)(0 0 1 0)(0 0 0 1).
+glm::dmat4 scaleBiasZeroToOne();
 
 // Epo = S * P_light * L^-1: the shadow texgen planes in world space (rows s, t, r, q).
 glm::dmat4 shadowTexgenPlanes(const glm::dmat4& lightProjection, const glm::dmat4& lightToWorld);

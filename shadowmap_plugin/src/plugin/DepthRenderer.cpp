@@ -22,13 +22,20 @@ engine::gl::Program compileDepthProgram(const std::string& name, const std::stri
                                                {GL_FRAGMENT_SHADER, header + shaders::depth_frag}});
 }
 
-void setPolygonOffset(const glm::vec2& offset) {
+// Reversed Z stores near as 1 and far as 0: "away from the light" is then a negative
+// offset, and glPolygonOffsetClamp's clamp must carry the same sign (a negative clamp is a
+// lower bound).
+void setPolygonOffset(const glm::vec2& offset, const DepthPassStyle& style) {
     if (offset == glm::vec2(0.0f)) {
         glDisable(GL_POLYGON_OFFSET_FILL);
         return;
     }
     glEnable(GL_POLYGON_OFFSET_FILL);
-    glPolygonOffset(offset.x, offset.y);
+    const float sign = style.reversedZ ? -1.0f : 1.0f;
+    if (style.offsetClamp > 0.0f)
+        glPolygonOffsetClamp(sign * offset.x, sign * offset.y, sign * style.offsetClamp);
+    else
+        glPolygonOffset(sign * offset.x, sign * offset.y);
 }
 
 } // namespace
@@ -36,7 +43,8 @@ void setPolygonOffset(const glm::vec2& offset) {
 DepthRenderer::DepthRenderer()
     : plain_(compileDepthProgram("shadow depth", "")),
       peel2D_(compileDepthProgram("shadow depth peel", "#define PEEL\n")),
-      peelArray_(compileDepthProgram("shadow depth peel (cube)", "#define PEEL\n#define PEEL_ARRAY\n")) {}
+      peelArray_(compileDepthProgram("shadow depth peel (cube)", "#define PEEL\n#define PEEL_ARRAY\n")),
+      empty_(engine::gl::VertexArray::create()) {}
 
 DepthDrawCounts DepthRenderer::render(const engine::Frame& frame, engine::PassContext& context,
                                       unsigned target, int layer, int resolution,
@@ -51,15 +59,16 @@ DepthDrawCounts DepthRenderer::render(const engine::Frame& frame, engine::PassCo
 
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.id());
     glViewport(0, 0, resolution, resolution);
-    const float farDepth = 1.0f;
+    const float farDepth = style.reversedZ ? 0.0f : 1.0f;
     glClearNamedFramebufferfv(framebuffer.id(), GL_DEPTH, 0, &farDepth);
     DepthDrawCounts counts;
     if (!drawCasters) {
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
         return counts;
     }
+    if (style.reversedZ) glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);  // restored below
     glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
+    glDepthFunc(style.reversedZ ? GL_GREATER : GL_LESS);
     glDepthMask(GL_TRUE);
     glCullFace(GL_FRONT);  // used only for closed casters under backFacesOnly
 
@@ -70,6 +79,8 @@ DepthDrawCounts DepthRenderer::render(const engine::Frame& frame, engine::PassCo
         glBindTextureUnit(0, style.firstLayer);
         if (style.firstLayerIsArray) program.set("uFirstLayerIndex", std::max(layer, 0));
         program.set("uPeelEpsilon", style.peelEpsilon);
+        program.set("uReversedZ", style.reversedZ ? 1 : 0);
+        program.set("uFarLayer", 0);
     }
 
     const engine::Scene& scene = frame.scene();
@@ -83,7 +94,7 @@ DepthDrawCounts DepthRenderer::render(const engine::Frame& frame, engine::PassCo
                               (*style.closedMeshes)[instance.mesh];
         if (backOnly) glEnable(GL_CULL_FACE);
         else glDisable(GL_CULL_FACE);
-        setPolygonOffset(style.backFacesOnly && !backOnly ? style.openCasterOffset : style.polygonOffset);
+        setPolygonOffset(style.backFacesOnly && !backOnly ? style.openCasterOffset : style.polygonOffset, style);
         // A mirroring transform turns counter-clockwise triangles clockwise.
         glFrontFace(glm::determinant(glm::dmat3(instance.world)) < 0.0 ? GL_CW : GL_CCW);
         // P_light * L^-1 * M in double: only the light-relative product is rounded.
@@ -96,6 +107,24 @@ DepthDrawCounts DepthRenderer::render(const engine::Frame& frame, engine::PassCo
         }
     }
     glDisable(GL_POLYGON_OFFSET_FILL);
+    if (style.firstLayer) {
+        // Woo pass 2, last: the far plane as one more layer (a full-screen triangle at far
+        // depth, not clipped), so a texel whose ray meets one surface and then nothing holds
+        // the midpoint between that surface and far instead of far itself. Without it, a
+        // light inside a closed box lit what lies just outside the box's silhouettes
+        // (2x2 PCF reads the neighbouring "nothing behind" texels: 0.06% of the pixels
+        // that must be dark, tools/shadowmap-stress special/light_inside_box). Texels
+        // with no surface at all fail the peel test and stay far.
+        glDisable(GL_CULL_FACE);
+        glEnable(GL_DEPTH_CLAMP);
+        program.set("uFarLayer", 1);
+        empty_.bind();
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+        glBindVertexArray(0);
+        glDisable(GL_DEPTH_CLAMP);
+    }
+    if (style.reversedZ) glClipControl(GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE);
+    glDepthFunc(GL_LESS);
     glCullFace(GL_BACK);
     glFrontFace(GL_CCW);
     glEnable(GL_CULL_FACE);

@@ -3,6 +3,7 @@
 // variant and light type shares (spot and directional: the 2D map; point: one cube face).
 // What differs between variants is a DepthPassStyle, not another renderer.
 #include "engine/gl/Program.h"
+#include "engine/gl/VertexArray.h"
 #include "engine/render/Frame.h"
 
 #include <glm/glm.hpp>
@@ -24,6 +25,14 @@ struct DepthPassStyle {
     unsigned firstLayer = 0;
     bool firstLayerIsArray = false;
     float peelEpsilon = 0.0f;  // depth within which a fragment counts as the first layer
+                               // (reversedZ: relative to the first layer's depth)
+    // Reversed Z (ShadowSettings reversed_z, d32f): glClipControl(GL_LOWER_LEFT,
+    // GL_ZERO_TO_ONE) for the pass (restored after it), clear depth 0, GL_GREATER depth
+    // test, polygon offsets negated (away from the light is toward 0).
+    bool reversedZ = false;
+    // > 0: glPolygonOffsetClamp's clamp, in window depth (ShadowSettings
+    // polygon_offset_clamp converted per light); 0: plain glPolygonOffset.
+    float offsetClamp = 0.0f;
 };
 
 struct DepthDrawCounts {
@@ -44,6 +53,7 @@ public:
 
 private:
     engine::gl::Program plain_, peel2D_, peelArray_;
+    engine::gl::VertexArray empty_;  // for the Woo far-layer triangle (gl_VertexID only)
 };
 
 } // namespace shadowmap

@@ -12,6 +12,8 @@
 
 #include <epoxy/gl.h>
 
+#include <cmath>
+#include <cstring>
 #include <iostream>
 
 namespace shadowmap {
@@ -42,6 +44,34 @@ ShadowBounds frameBounds(const engine::Frame& frame) {
     return bounds;
 }
 
+// polygon_offset_clamp (a slope S) as glPolygonOffsetClamp's window-depth clamp for this
+// light: factor * S * (window depth across one texel of a 45-degree surface) plus the units
+// part, so the clamp only bites once the slope exceeds S. Perspective maps: taken at the
+// nearest receiver, where a texel is smallest and the depth steepest (farther away the
+// same clamp allows a steeper slope: it errs toward acne-free). 0: no clamp.
+float offsetClamp(const LightShadow& light) {
+    const ShadowSettings& settings = light.settings;
+    const glm::vec2 offset = settings.effectivePolygonOffset();
+    if (!(settings.polygonOffsetClamp > 0.0f) || offset == glm::vec2(0.0f)) return 0.0f;
+    const LightShadowFrame& plan = light.frame;
+    const LightView& view = plan.kind == MapKind::Cube ? plan.pointViews.faces[0] : plan.view;
+    const double perTexel = windowDepthPerTexel(view, settings.resolution);
+    // Float units are 2^(e-23) of the depth e: at most 2^-23 below 1 (reversed Z).
+    const double units = std::abs(offset.y) * (settings.reversedZ ? std::ldexp(1.0, -23) : depthStep(settings.depthFormat));
+    return static_cast<float>(std::abs(offset.x) * settings.polygonOffsetClamp * perTexel + units);
+}
+
+// The map cache key (MapCacheKey.h) with the depth settings that change a map without
+// changing its view-projection: reversed Z's depth state and the slope-offset clamp.
+std::uint64_t withDepthSettings(std::uint64_t key, const ShadowSettings& settings) {
+    const auto mix = [&key](std::uint64_t value) { key = (key ^ value) * 1099511628211ull; };
+    mix(settings.reversedZ ? 1u : 0u);
+    std::uint32_t clampBits = 0;
+    std::memcpy(&clampBits, &settings.polygonOffsetClamp, sizeof clampBits);
+    mix(clampBits);
+    return key;
+}
+
 } // namespace
 
 bool ShadowMapPlugin::setLightOption(const std::string& light, const std::string& value) {
@@ -49,7 +79,7 @@ bool ShadowMapPlugin::setLightOption(const std::string& light, const std::string
     return true;
 }
 
-void ShadowMapPlugin::prepareScene(const engine::Scene& scene) {
+void ShadowMapPlugin::resolveLights(const engine::Scene& scene) {
     const std::string source = scene.sourcePath;
     GLint maxTextureSize = 0;
     glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxTextureSize);
@@ -60,8 +90,6 @@ void ShadowMapPlugin::prepareScene(const engine::Scene& scene) {
 
     lights_.clear();
     warned_.clear();
-    ++sceneGeneration_;
-    cacheHits_ = cacheMisses_ = 0;
     // The backface variant may cull front faces only of closed casters; a double-sided
     // material means the surface is meant to be seen (and to cast) from both sides.
     closedMeshes_.assign(scene.meshes.size(), false);
@@ -90,6 +118,25 @@ void ShadowMapPlugin::prepareScene(const engine::Scene& scene) {
     }
 }
 
+void ShadowMapPlugin::prepareScene(const engine::Scene& scene) {
+    resolveLights(scene);
+    ++sceneGeneration_;  // new geometry: no map is still right
+    cacheHits_ = cacheMisses_ = 0;
+}
+
+void ShadowMapPlugin::reloadSettings(const engine::Scene& scene) {
+    std::vector<LightShadow> previous = std::move(lights_);
+    resolveLights(scene);
+    // Keep each light's map: its cache key covers the settings, so a light whose settings
+    // changed misses and re-renders, and the others keep hitting.
+    for (LightShadow& light : lights_)
+        for (LightShadow& old : previous)
+            if (old.name == light.name && old.slot == light.slot) {
+                light.map = std::move(old.map);
+                light.renderedKey = old.renderedKey;
+            }
+}
+
 void ShadowMapPlugin::warnOnce(const LightShadow& light, const std::string& message) {
     const std::string line = "shadowmap: light \"" + light.name + "\": " + message;
     if (warned_.insert(line).second) std::cerr << "warning: " << line << "\n";
@@ -110,19 +157,31 @@ bool ShadowMapPlugin::planLight(LightShadow& light, const engine::Frame& frame,
         plan.skipReason = "the light emits nothing";
         return false;
     }
+    // Forced near/far and reversed Z (ShadowSettings.h). A directional light's depth is
+    // linear and fitted to what it must hold: forced planes are ignored there (said once).
+    FrustumFitOptions fitOptions;
+    fitOptions.reversedZ = light.settings.reversedZ;
+    if (light.type == engine::Light::Type::Directional) {
+        if (light.settings.nearPlane > 0.0 || light.settings.farPlane > 0.0)
+            warnOnce(light, "near_plane/far_plane apply to spot and point lights; ignored for a directional light");
+    } else {
+        fitOptions.nearPlane = light.settings.nearPlane;
+        fitOptions.farPlane = light.settings.farPlane;
+    }
     bool valid = false, empty = true;
     std::string invalidReason;
     if (light.type == engine::Light::Type::Point) {
-        plan.pointViews = fitPointLight(placed, source, bounds);
+        plan.pointViews = fitPointLight(placed, source, bounds, fitOptions);
         valid = plan.pointViews.valid;
         invalidReason = plan.pointViews.invalidReason;
         for (const LightView& face : plan.pointViews.faces) empty = empty && face.empty;
     } else {
-        plan.view = light.type == engine::Light::Type::Spot ? fitSpotLight(placed, source, bounds)
-                                                            : fitDirectionalLight(placed, source, bounds);
+        plan.view = light.type == engine::Light::Type::Spot ? fitSpotLight(placed, source, bounds, fitOptions)
+                                                            : fitDirectionalLight(placed, source, bounds, fitOptions);
         valid = plan.view.valid;
         invalidReason = plan.view.invalidReason;
         empty = plan.view.empty;
+        if (!plan.view.clampWarning.empty()) warnOnce(light, plan.view.clampWarning);
     }
     if (!valid) {
         // Never upload NaN: a degenerate light loses its shadow, loudly.
@@ -181,6 +240,8 @@ void ShadowMapPlugin::addDepthPasses(LightShadow& light, engine::Frame& frame,
 
     DepthPassStyle style;
     style.polygonOffset = settings.effectivePolygonOffset();
+    style.reversedZ = settings.reversedZ;
+    style.offsetClamp = offsetClamp(light);
     if (settings.variant == Variant::Backface) {
         style.backFacesOnly = true;
         style.openCasterOffset = settings.standardPolygonOffset();
@@ -207,7 +268,9 @@ void ShadowMapPlugin::addDepthPasses(LightShadow& light, engine::Frame& frame,
             *firstLayer = builder.create("shadow_first_layer_" + light.name, firstLayerDesc);
         },
         [this, &light, &frame, firstLayer, cube](engine::PassContext& context) {
-            renderMap(light, frame, context, context.texture(*firstLayer), cube, DepthPassStyle{});
+            DepthPassStyle first;
+            first.reversedZ = light.settings.reversedZ;
+            renderMap(light, frame, context, context.texture(*firstLayer), cube, first);
         });
     frame.graph().addPass(
         "shadow_" + light.name,
@@ -222,6 +285,8 @@ void ShadowMapPlugin::addDepthPasses(LightShadow& light, engine::Frame& frame,
             const double step = depthStep(light.settings.depthFormat);
             peel.peelEpsilon = static_cast<float>(
                 light.settings.depthFormat == DepthFormat::D32F ? 4.0 * step : 2.0 * step);
+            // Reversed Z: relative, eight float steps of z1 (z1 * 2^-20).
+            if (light.settings.reversedZ) peel.peelEpsilon = std::ldexp(1.0f, -20);
             renderMap(light, frame, context, context.texture(map), false, peel);
             light.renderedKey = key;
         });
@@ -261,7 +326,31 @@ engine::LightVisibilityHook ShadowMapPlugin::makeHook(const engine::Frame& frame
             if (plan.emptyFrustum) params[light.slot] = glm::vec4(0.0f, 0.0f, 0.0f, outsideShade);
             continue;
         }
-        params[light.slot] = glm::vec4(0.0f, 0.0f, light.settings.dimming, outsideShade);
+        // What the lookup uploads must be finite: a light whose eye planes (or eye-space
+        // position) are not loses its shadow, loudly, instead of shading with NaN.
+        const glm::dmat4 planes = plan.kind == MapKind::Map2D
+                                      ? eyePlanesForCamera(plan.view.texgenPlanes(), eyeToWorld)
+                                      : glm::dmat4(view[0], view[1], view[2],
+                                                   view * glm::dvec4(frame.scene().lightInstances[light.slot].position(), 1.0));
+        const glm::mat4 uploaded(planes);  // as the GPU gets it: float
+        bool finite = true;
+        for (int c = 0; c < 4; ++c)
+            for (int r = 0; r < 4; ++r) finite = finite && std::isfinite(uploaded[c][r]);
+        if (!finite) {
+            warnOnce(light, "no shadow: its texgen planes for this camera are not finite");
+            continue;
+        }
+        // x: 1 = reversed Z (near 1, far 0: GL_GEQUAL, out of range flipped);
+        // y: reference bias subtracted from r: d32f without reversed Z computes r near 1 with
+        //    an absolute float error, which float polygon-offset units (relative) do not
+        //    cover below depth 0.5; units * 2^-24 restores the d24 meaning of units there
+        //    (ShadowSettings.h).
+        const bool floatForward = light.settings.depthFormat == DepthFormat::D32F && !light.settings.reversedZ;
+        const float referenceBias =
+            floatForward ? static_cast<float>(std::abs(light.settings.effectivePolygonOffset().y) * std::ldexp(1.0, -24))
+                         : 0.0f;
+        params[light.slot] = glm::vec4(light.settings.reversedZ ? 1.0f : 0.0f, referenceBias,
+                                       light.settings.dimming, outsideShade);
         const std::string slot = std::to_string(light.slot);
         const std::string unit = std::to_string(kFirstUnit + light.slot);
         units.emplace_back(kFirstUnit + light.slot, light.map.id());
@@ -280,7 +369,7 @@ engine::LightVisibilityHook ShadowMapPlugin::makeHook(const engine::Frame& frame
         }
         if (plan.kind == MapKind::Map2D) {
             // Ee = Epo * V with Epo = S * P_light * L^-1, composed in double (DESIGN.md).
-            eyePlanes[light.slot] = glm::mat4(eyePlanesForCamera(plan.view.texgenPlanes(), eyeToWorld));
+            eyePlanes[light.slot] = uploaded;
             samplers += "layout(binding = " + unit + ") uniform sampler2DShadow uShadowMap" + slot + ";\n";
             dispatch += "    if (lightSlot == " + slot + ") return vec2(shadowMap2D(" + slot +
                         ", eyePosition, uShadowMap" + slot + "), uShadowParams[" + slot + "].z);\n";
@@ -288,7 +377,9 @@ engine::LightVisibilityHook ShadowMapPlugin::makeHook(const engine::Frame& frame
             const glm::dvec3 lightPosition = frame.scene().lightInstances[light.slot].position();
             pointLight[light.slot] = glm::vec4(glm::vec3(view * glm::dvec4(lightPosition, 1.0)),
                                                static_cast<float>(plan.pointViews.nearPlane));
-            pointFar[light.slot] = static_cast<float>(plan.pointViews.farPlane);
+            // 0 stands for an infinite far plane (GLSL has no infinity to pass).
+            pointFar[light.slot] = std::isinf(plan.pointViews.farPlane) ? 0.0f
+                                                                        : static_cast<float>(plan.pointViews.farPlane);
             samplers += "layout(binding = " + unit + ") uniform samplerCubeShadow uShadowMap" + slot + ";\n";
             dispatch += "    if (lightSlot == " + slot + ") return vec2(shadowMapCube(" + slot +
                         ", eyePosition, uShadowMap" + slot + "), uShadowParams[" + slot + "].z);\n";
@@ -341,7 +432,9 @@ void ShadowMapPlugin::addPasses(engine::Frame& frame) {
     for (LightShadow& light : lights_) {
         if (!planLight(light, frame, bounds)) continue;
         light.ensureMap();
-        const std::uint64_t key = mapCacheKey(light, frame.scene(), sceneGeneration_);
+        // Reversed Z compares the other way round (lit where r >= stored: near is 1).
+        light.map.setParameter(GL_TEXTURE_COMPARE_FUNC, light.settings.reversedZ ? GL_GEQUAL : GL_LEQUAL);
+        const std::uint64_t key = withDepthSettings(mapCacheKey(light, frame.scene(), sceneGeneration_), light.settings);
         light.frame.cacheHit = cacheMaps_ && key == light.renderedKey;
         const int size = light.settings.resolution;
         const engine::TextureDesc desc{size, size, graphFormat(light.settings.depthFormat), 1,
@@ -364,7 +457,15 @@ void ShadowMapPlugin::addPasses(engine::Frame& frame) {
 
 nlohmann::json ShadowMapPlugin::frameStats() const {
     nlohmann::json lights = nlohmann::json::array();
-    for (const LightShadow& light : lights_) lights.push_back(light.stats());
+    for (const LightShadow& light : lights_) {
+        nlohmann::json stats = light.stats();
+        // JSON has no infinity: an infinite far plane (far_plane "infinite", reversed_z)
+        // is reported as the string "infinite".
+        if (stats.contains("far") && stats["far"].is_number() && std::isinf(stats["far"].get<double>()))
+            stats["far"] = "infinite";
+        if (light.settings.reversedZ) stats["reversed_z"] = true;
+        lights.push_back(std::move(stats));
+    }
     return {{"lights", lights}, {"cache_hits", cacheHits_}, {"cache_misses", cacheMisses_},
             {"cache_maps", cacheMaps_}};
 }

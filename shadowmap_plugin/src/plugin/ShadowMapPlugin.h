@@ -25,6 +25,7 @@ public:
     std::string name() const override { return "shadowmap"; }
     bool setLightOption(const std::string& light, const std::string& value) override;
     void prepareScene(const engine::Scene& scene) override;
+    void reloadSettings(const engine::Scene& scene) override;
     void addPasses(engine::Frame& frame) override;
     nlohmann::json frameStats() const override;
 
@@ -39,6 +40,8 @@ private:
     void reportOpenCasters(LightShadow& light, const engine::Frame& frame);
     engine::LightVisibilityHook makeHook(const engine::Frame& frame);
     void warnOnce(const LightShadow& light, const std::string& message);
+    // Resolves every light's settings (defaults, extras.shadow, --light) into lights_.
+    void resolveLights(const engine::Scene& scene);
     const engine::gl::Sampler& rawDepthSampler();  // comparison off: reads a map's depth
 
     ShadowSettings defaults_;

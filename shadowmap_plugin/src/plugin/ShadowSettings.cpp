@@ -6,6 +6,7 @@
 #include <epoxy/gl.h>
 
 #include <cmath>
+#include <limits>
 
 namespace shadowmap {
 
@@ -42,7 +43,8 @@ void applySettings(ShadowSettings& settings, const nlohmann::json& json, const s
     namespace json_read = engine::json;
     json_read::requireKnownKeys(json,
                                 {"variant", "resolution", "depth_format", "filter",
-                                 "polygon_offset", "dimming"},
+                                 "polygon_offset", "dimming", "near_plane", "far_plane",
+                                 "reversed_z", "polygon_offset_clamp"},
                                 source, object);
     const auto key = [&](const char* name) { return object + "." + name; };
     if (json.contains("variant"))
@@ -82,6 +84,37 @@ void applySettings(ShadowSettings& settings, const nlohmann::json& json, const s
             engine::throwInputError(source, key("dimming"), "must be in [0, 1], got " + json["dimming"].dump());
         settings.dimming = static_cast<float>(dimming);
     }
+    // Frustum overrides and precision (issue 8): world distances along the light's axis.
+    if (json.contains("near_plane")) {
+        const double nearPlane = json_read::readNumber(json["near_plane"], source, key("near_plane"));
+        if (!(nearPlane > 0.0))
+            engine::throwInputError(source, key("near_plane"),
+                                    "must be a distance > 0, got " + json["near_plane"].dump());
+        settings.nearPlane = nearPlane;
+    }
+    if (json.contains("far_plane")) {
+        if (json["far_plane"] == "infinite") {
+            settings.farPlane = std::numeric_limits<double>::infinity();
+        } else {
+            if (!json["far_plane"].is_number())
+                engine::throwInputError(source, key("far_plane"),
+                                        "must be a distance > 0 or \"infinite\", got " + json["far_plane"].dump());
+            const double farPlane = json_read::readNumber(json["far_plane"], source, key("far_plane"));
+            if (!(farPlane > 0.0))
+                engine::throwInputError(source, key("far_plane"),
+                                        "must be a distance > 0 or \"infinite\", got " + json["far_plane"].dump());
+            settings.farPlane = farPlane;
+        }
+    }
+    if (json.contains("reversed_z"))
+        settings.reversedZ = json_read::readBool(json["reversed_z"], source, key("reversed_z"));
+    if (json.contains("polygon_offset_clamp")) {
+        const double clamp = json_read::readNumber(json["polygon_offset_clamp"], source, key("polygon_offset_clamp"));
+        if (clamp < 0.0)
+            engine::throwInputError(source, key("polygon_offset_clamp"),
+                                    "must be a slope >= 0 (0: unclamped), got " + json["polygon_offset_clamp"].dump());
+        settings.polygonOffsetClamp = static_cast<float>(clamp);
+    }
 }
 
 void checkLimits(const ShadowSettings& settings, int maxTextureSize, const std::string& source,
@@ -91,6 +124,15 @@ void checkLimits(const ShadowSettings& settings, int maxTextureSize, const std::
                                 std::to_string(settings.resolution) +
                                     " is above this GL's GL_MAX_TEXTURE_SIZE " +
                                     std::to_string(maxTextureSize));
+    if (settings.reversedZ && settings.depthFormat != DepthFormat::D32F)
+        engine::throwInputError(source, object + ".reversed_z",
+                                std::string("needs depth_format \"d32f\", not \"") +
+                                    toString(settings.depthFormat) +
+                                    "\" (fixed-point depth gains nothing from the reversal)");
+    if (settings.nearPlane > 0.0 && settings.farPlane > 0.0 && !(settings.farPlane > settings.nearPlane))
+        engine::throwInputError(source, object + ".far_plane",
+                                "must be beyond near_plane (" + std::to_string(settings.nearPlane) +
+                                    "), got " + std::to_string(settings.farPlane));
 }
 
 unsigned glInternalFormat(DepthFormat format) {

@@ -26,6 +26,47 @@
 //    with factor 1 it showed acne on 14-18% of the showcase's lit pixels (spot and sun).
 // An explicit polygon_offset is used as is.
 //   dimming         d in [0,1]: shadowed diffuse keeps d       0.4
+// Numerical range and precision (issue 8, measured by tools/shadowmap-stress):
+//   near_plane      > 0, world units: the light frustum's near  fitted (nearest caster or
+//                   distance instead of the fitted one (spot,  receiver in the frustum, at
+//                   point; directional lights ignore it with   least far * 1e-4)
+//                   a warning: their depth is linear)
+//   far_plane       > near_plane, world units, or "infinite";  fitted (farthest receiver);
+//                   spot and point, as near_plane               reversed_z: infinite
+//   reversed_z      true: the depth pass runs with                false
+//                   glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE), a projection mapping
+//                   near -> 1 and far (or infinity) -> 0, clear depth 0, GL_GREATER depth
+//                   test and GL_GEQUAL comparison; texgen's S then leaves r as it is
+//                   (s, t still scale-bias). Float depth keeps its relative precision
+//                   where the depths are (n/d), so near/far = 1e-7 and an infinite far
+//                   still resolve. Unless far_plane is set, the far plane is infinite:
+//                   a finite far drives depth to 0 near it, where the lookup's absolute
+//                   errors outgrow float's relative offset units (6% acne measured).
+//                   Only with depth_format "d32f" (an error otherwise: fixed-point depth
+//                   gains nothing from the reversal). The default polygon_offset units
+//                   are then 128: a float unit is 2^(e-23) of the depth itself, so 128
+//                   units are 1.5e-5 of the distance to the light (0.15 mm at 10 m);
+//                   with 8, a point light on the floor showed 1.8% acne along its cube
+//                   seams, with 128 0.01% (the fixed-point formats' 8 units, at a near
+//                   plane of 1e-4 of the far, are millimetres there).
+//   polygon_offset_clamp  S >= 0: the slope-scaled part of the    0 (unclamped)
+//                   polygon offset stops growing at slope S (tan of the angle between the
+//                   surface normal and the light), through glPolygonOffsetClamp: at
+//                   grazing angles factor * slope becomes huge and pushes a caster's
+//                   depth behind what it should shadow. The clamp is converted to window
+//                   depth per light from its texel size and depth range at the nearest
+//                   receiver (see DepthPassStyle::offsetClamp), so it means the same at
+//                   any scene scale. Default 0: in the stress sweep no leak comes from the
+//                   unclamped slope term, while a clamp puts acne on grazing receivers
+//                   (spot at 0.5 deg: 0.30% error unclamped, 0.61% with S = 10, 19% with
+//                   S = 3; tools/shadowmap-stress elevation).
+// Biases are in depth-format units and texels, never world units: polygon_offset units are
+// steps of the format (d16, d24: 1/(2^bits - 1); d32f: 2^(e-23) of the depth e); factor
+// multiplies the depth slope per texel. d32f without reversed_z: the comparison's reference
+// depth is computed in float as a difference near 1, so its error is absolute (about 2^-24)
+// while float polygon-offset units shrink with the depth; the lookup then subtracts
+// units * 2^-24 from the reference (the d24 meaning of units) so depths below 0.5 keep
+// their bias.
 #include "engine/graph/TextureDesc.h"
 
 #include <glm/glm.hpp>
@@ -52,10 +93,11 @@ struct ShadowSettings {
     Filter filter = Filter::Pcf;
     std::optional<glm::vec2> polygonOffset;  // unset: the variant's default
 
-    // The offset a two-sided depth draw needs: the explicit one, else the filter's default.
+    // The offset a two-sided depth draw needs: the explicit one, else the filter's default
+    // (units 128 with reversed Z: see the table above).
     glm::vec2 standardPolygonOffset() const {
         return polygonOffset ? *polygonOffset
-                             : glm::vec2(filter == Filter::Pcf ? 2.0f : 1.0f, 8.0f);
+                             : glm::vec2(filter == Filter::Pcf ? 2.0f : 1.0f, reversedZ ? 128.0f : 8.0f);
     }
     // The offset of this light's depth pass.
     glm::vec2 effectivePolygonOffset() const {
@@ -63,6 +105,11 @@ struct ShadowSettings {
         return polygonOffset ? *polygonOffset : glm::vec2(0.0f);
     }
     float dimming = 0.4f;
+    // See the table above. 0 = fitted / unclamped; farPlane may be +infinity.
+    double nearPlane = 0.0;
+    double farPlane = 0.0;
+    bool reversedZ = false;
+    float polygonOffsetClamp = 0.0f;
 
     bool operator==(const ShadowSettings&) const = default;
 };
@@ -74,7 +121,8 @@ void applySettings(ShadowSettings& settings, const nlohmann::json& json, const s
 
 Variant parseVariant(const std::string& text, const std::string& source, const std::string& object);
 
-// Checks what depends on the GL implementation (the resolution limit).
+// Checks what depends on the GL implementation (the resolution limit) and on keys combined
+// from several sources (reversed_z needs d32f; near_plane < far_plane).
 void checkLimits(const ShadowSettings& settings, int maxTextureSize, const std::string& source,
                  const std::string& object);
 

@@ -1,0 +1,282 @@
+#include "StressScenes.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace stress {
+
+namespace {
+
+constexpr double kDegree = 0.017453292519943295;
+
+struct Box {
+    const char* name;
+    glm::dvec3 min, max;  // unit scale, before the offset
+};
+
+// The floor slab and what stands on it (unit scale). The floor is 16 x 16, 0.3 thick.
+const Box kFloor{"floor", {-8, -0.3, -8}, {8, 0, 8}};
+const Box kBlock{"block", {-3, 0, -2}, {-1.5, 1.5, -0.5}};       // in contact with the floor
+const Box kTower{"tower", {1, 0, -3}, {2, 3, -2}};                // in contact, tall
+const Box kHover{"hover", {-0.5, 1.0, 1.0}, {0.5, 2.0, 2.0}};    // 1 unit above the floor
+const Box kPlank{"plank", {0.5, 0.8, 0.5}, {3.5, 0.83, 1.5}};    // 3 cm thin, 0.8 up
+const Box kShell{"shell", {-2, 0.4, 1.8}, {0, 2.4, 3.8}};        // hollow: the light inside
+
+const glm::dvec3 kTarget(0, 0, 0);  // what lights aim at: the floor's centre
+const glm::dvec3 kCameraEye(7, 7, 11), kCameraTarget(0, 0.5, 0);
+constexpr double kCameraFov = 0.75, kCameraNear = 0.1, kCameraFar = 60.0;
+constexpr double kSpotDistance = 14.0, kPointDistance = 8.0, kSpotCone = 0.6;
+constexpr double kAzimuth = 40.0 * kDegree;  // light from -x,-z: shadows fall toward the camera
+
+// Rigid transform at `position` whose -Z looks at `target`; straight up or down takes Z
+// as the up vector instead of Y.
+glm::dmat4 placeLooking(const glm::dvec3& position, const glm::dvec3& target) {
+    const glm::dvec3 forward = glm::normalize(target - position);
+    const glm::dvec3 up = std::abs(forward.y) > 0.99 ? glm::dvec3(0, 0, -1) : glm::dvec3(0, 1, 0);
+    return glm::inverse(glm::lookAt(position, target, up));
+}
+
+// A closed box of `size` centred on the origin: 24 vertices (flat normals), 12 triangles
+// wound so that the geometric normal points out.
+engine::Primitive boxPrimitive(const glm::dvec3& size) {
+    const glm::vec3 h = glm::vec3(size * 0.5);
+    const glm::vec3 normals[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+    engine::Primitive primitive;
+    for (const glm::vec3& n : normals) {
+        const glm::vec3 a = std::abs(n.y) > 0.5f ? glm::vec3(0, 0, 1) : glm::vec3(0, 1, 0);
+        const glm::vec3 b = glm::cross(a, n);
+        const auto base = static_cast<std::uint32_t>(primitive.positions.size());
+        for (const glm::vec3& c : {n - b - a, n + b - a, n + b + a, n - b + a}) {
+            primitive.positions.push_back(c * h);
+            primitive.normals.push_back(n);
+        }
+        const glm::vec3 geometric = glm::cross(primitive.positions[base + 1] - primitive.positions[base],
+                                               primitive.positions[base + 2] - primitive.positions[base]);
+        if (glm::dot(geometric, n) > 0.0f)
+            primitive.indices.insert(primitive.indices.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
+        else
+            primitive.indices.insert(primitive.indices.end(), {base, base + 2, base + 1, base, base + 3, base + 2});
+    }
+    primitive.material = 0;
+    for (const glm::vec3& p : primitive.positions) primitive.bounds.extend(glm::dvec3(p));
+    return primitive;
+}
+
+class Builder {
+public:
+    Builder(double scale, const glm::dvec3& offset, bool bake) : scale_(scale), offset_(offset), bake_(bake) {
+        engine::Material grey;
+        grey.name = "grey";
+        grey.baseColorFactor = glm::vec4(0.8f, 0.8f, 0.8f, 1.0f);
+        grey.metallicFactor = 0.0f;
+        grey.roughnessFactor = 0.8f;
+        scene_.materials.push_back(grey);
+        scene_.sourcePath = "shadowmap-stress generated scene";
+    }
+
+    // Unit-scale point -> world.
+    glm::dvec3 world(const glm::dvec3& p) const { return p * scale_ + offset_; }
+
+    // Every box added after this is turned by `degrees` about a horizontal axis through the
+    // origin that is neither X nor Z, so that no face stays vertical (at unit scale, before
+    // the offset).
+    void tiltBoxes(double degrees) {
+        tilt_ = glm::rotate(glm::dmat4(1.0), degrees * kDegree, glm::normalize(glm::dvec3(1, 0, 0.6)));
+    }
+
+    void addBox(const Box& box, bool receivesShadows = true) {
+        engine::Mesh mesh;
+        mesh.name = box.name;
+        mesh.primitives.push_back(boxPrimitive((box.max - box.min) * scale_));
+        const glm::dmat4 place = glm::translate(glm::dmat4(1.0), offset_) * tilt_ *
+                                 glm::translate(glm::dmat4(1.0), (box.min + box.max) * 0.5 * scale_);
+        if (bake_) {  // world positions rounded to float, as such a file stores them
+            engine::Primitive& primitive = mesh.primitives[0];
+            primitive.bounds = {};
+            for (glm::vec3& p : primitive.positions) {
+                p = glm::vec3(place * glm::dvec4(glm::dvec3(p), 1.0));
+                primitive.bounds.extend(glm::dvec3(p));
+            }
+        }
+        mesh.bounds = mesh.primitives[0].bounds;
+        mesh.closed = true;
+        scene_.meshes.push_back(mesh);
+        engine::Node node;
+        node.name = box.name;
+        node.mesh = static_cast<int>(scene_.meshes.size()) - 1;
+        node.receiveShadows = receivesShadows;
+        node.local = bake_ ? glm::dmat4(1.0) : place;
+        addNode(node);
+    }
+
+    // Position and target at unit scale.
+    void addLight(const std::string& name, LightKind kind, const glm::dvec3& position,
+                  const glm::dvec3& target, double outerCone, const nlohmann::json& shadow) {
+        engine::Light light;
+        light.name = name;
+        light.type = lightType(kind);
+        light.intensity = 10.0f;
+        light.outerConeAngle = outerCone;
+        light.innerConeAngle = outerCone * 0.8;
+        light.extras = {{"shadow", shadow}};
+        scene_.lights.push_back(light);
+        engine::Node node;
+        node.name = name;
+        node.light = static_cast<int>(scene_.lights.size()) - 1;
+        node.local = placeLooking(world(position), world(target));
+        addNode(node);
+        lightPosition_ = world(position);
+    }
+
+
+    engine::FrameCamera camera(const glm::dvec3& eye, const glm::dvec3& target, double yfov, int width,
+                               int height) const {
+        engine::FrameCamera camera;
+        camera.width = width;
+        camera.height = height;
+        camera.eyeToWorld = placeLooking(world(eye), world(target));
+        camera.projection = glm::perspectiveRH_NO(yfov, double(width) / height, kCameraNear * scale_,
+                                                  kCameraFar * scale_);
+        return camera;
+    }
+
+    engine::Scene& scene() { return scene_; }
+
+private:
+    void addNode(engine::Node node) {
+        scene_.nodes.push_back(std::move(node));
+        scene_.roots.push_back(static_cast<int>(scene_.nodes.size()) - 1);
+    }
+
+    double scale_;
+    glm::dvec3 offset_;
+    bool bake_;
+    engine::Scene scene_;
+    glm::dmat4 tilt_{1.0};
+    glm::dvec3 lightPosition_{0.0};
+};
+
+// The largest distance from `from` to a corner of any mesh instance's world bounds.
+double farthestCorner(const engine::Scene& scene, const glm::dvec3& from) {
+    double farthest = 0.0;
+    for (const engine::MeshInstance& instance : scene.meshInstances)
+        for (int c = 0; c < 8; ++c)
+            farthest = std::max(farthest, glm::length(instance.worldBounds.corner(c) - from));
+    return farthest;
+}
+
+glm::dvec3 towardLight(double elevationDeg) {
+    const double e = elevationDeg * kDegree;
+    return {-std::cos(e) * std::sin(kAzimuth), std::sin(e), -std::cos(e) * std::cos(kAzimuth)};
+}
+
+} // namespace
+
+const char* toString(LightKind kind) {
+    switch (kind) {
+    case LightKind::Spot: return "spot";
+    case LightKind::Directional: return "directional";
+    case LightKind::Point: return "point";
+    }
+    return "?";
+}
+
+const char* toString(Layout layout) {
+    switch (layout) {
+    case Layout::Standard: return "standard";
+    case Layout::LightInsideBox: return "light_inside_box";
+    case Layout::LightOnSurface: return "light_on_surface";
+    case Layout::CameraAtLight: return "camera_at_light";
+    case Layout::LightStraightDown: return "light_straight_down";
+    }
+    return "?";
+}
+
+engine::Light::Type lightType(LightKind kind) {
+    switch (kind) {
+    case LightKind::Spot: return engine::Light::Type::Spot;
+    case LightKind::Directional: return engine::Light::Type::Directional;
+    case LightKind::Point: return engine::Light::Type::Point;
+    }
+    return engine::Light::Type::Point;
+}
+
+StressScene buildStressScene(const SceneSpec& spec, int width, int height) {
+    Builder builder(spec.scale, spec.offset, spec.bakeOffset);
+    // Straight down, the boxes' sides would be exactly edge-on (N.L = 0): whether such a
+    // pixel is in the evaluation set, and what the truth ray grazing it says, is decided by
+    // rounding. The light stays exactly vertical; the scene is turned 3 degrees under it.
+    if (spec.layout == Layout::LightStraightDown) builder.tiltBoxes(3.0);
+    // A point light on the floor lies in the floor's plane (N.L = 0 there, the same
+    // rounding lottery): the floor still casts but is not a receiver in that case.
+    const bool lightInFloor = spec.layout == Layout::LightOnSurface && spec.light == LightKind::Point;
+    builder.addBox(kFloor, !lightInFloor);
+    builder.addBox(kBlock);
+    builder.addBox(kTower);
+    builder.addBox(kPlank);
+    if (spec.layout == Layout::LightInsideBox) builder.addBox(kShell);
+    else builder.addBox(kHover);
+
+    // Where the light is and what it aims at (unit scale).
+    glm::dvec3 position, target = kTarget;
+    double cone = kSpotCone;
+    switch (spec.layout) {
+    case Layout::Standard:
+    case Layout::CameraAtLight:
+        position = target + towardLight(spec.elevationDeg) *
+                                (spec.light == LightKind::Point ? kPointDistance : kSpotDistance);
+        break;
+    case Layout::LightInsideBox:
+        position = (kShell.min + kShell.max) * 0.5;
+        target = glm::dvec3(2, 0, 0);  // spot: down and out, through the shell's walls
+        cone = 0.7;
+        break;
+    case Layout::LightOnSurface:
+        if (spec.light == LightKind::Point) {
+            position = glm::dvec3(0.0, kFloor.max.y, -0.2);  // on the floor's top face
+        } else {
+            position = glm::dvec3(0.5 * (kTower.min.x + kTower.max.x), kTower.max.y,
+                                  0.5 * (kTower.min.z + kTower.max.z));  // on the tower's top
+            target = glm::dvec3(-1, 0, 2);
+            cone = 0.7;
+        }
+        break;
+    case Layout::LightStraightDown:
+        position = glm::dvec3(0, 12, 0);
+        target = glm::dvec3(0, 0, 0);
+        break;
+    }
+
+    StressScene out;
+    nlohmann::json shadow = spec.shadow;
+    builder.addLight(out.lightName, spec.light, position, target, cone, nlohmann::json::object());
+    builder.scene().updateWorldTransforms();
+    out.farthestCorner = farthestCorner(builder.scene(), builder.world(position));
+    if (spec.nearOverFar && spec.light != LightKind::Directional) {
+        if (spec.infiniteFar) {
+            shadow["far_plane"] = "infinite";
+            shadow["near_plane"] = *spec.nearOverFar * out.farthestCorner;
+        } else {
+            const double farPlane = out.farthestCorner * 1.01;
+            shadow["far_plane"] = farPlane;
+            shadow["near_plane"] = *spec.nearOverFar * farPlane;
+        }
+    }
+    builder.scene().lights.back().extras = {{"shadow", shadow}};
+
+    if (spec.layout == Layout::CameraAtLight) {
+        // From the apex along the light's axis, inside its cone (the width is wider than the
+        // cone: pixels outside it are not in the evaluation set).
+        out.camera = builder.camera(position, target, 1.6 * cone, width, height);
+    } else {
+        out.camera = builder.camera(kCameraEye, kCameraTarget, kCameraFov, width, height);
+    }
+    out.scene = std::move(builder.scene());
+    out.scene.updateWorldTransforms();
+    return out;
+}
+
+} // namespace stress

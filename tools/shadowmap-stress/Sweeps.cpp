@@ -1,0 +1,308 @@
+#include "Sweeps.h"
+
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <map>
+#include <tuple>
+
+namespace stress {
+
+namespace {
+
+std::string number(double value, const char* format = "%.3f") {
+    char text[64];
+    std::snprintf(text, sizeof text, format, value);
+    return text;
+}
+
+// The direction everything is moved along in the distance sweep: all three coordinates
+// large (unit length: 0.6^2 + 0.48^2 + 0.64^2 = 1).
+const glm::dvec3 kFarDirection(0.6, 0.48, 0.64);
+
+SweepPoint point(double value, std::string label, SceneSpec spec = {}) {
+    SweepPoint p;
+    p.value = value;
+    p.label = std::move(label);
+    p.spec = std::move(spec);
+    return p;
+}
+
+Sweep distanceSweep(bool quick) {
+    Sweep sweep{"distance", "Scene translated away from the origin", "distance from the origin",
+                Axis::Log, {LightKind::Spot, LightKind::Directional, LightKind::Point}, {}, {}};
+    const std::vector<std::pair<double, const char*>> distances =
+        quick ? std::vector<std::pair<double, const char*>>{{0.0, "0"}, {1e6, "1e6"}}
+              : std::vector<std::pair<double, const char*>>{
+                    {0.0, "0"}, {1e3, "1e3"}, {1e5, "1e5"}, {1e6, "1e6"}, {1e7, "1e7"}};
+    for (const auto& [d, label] : distances) {
+        SceneSpec spec;
+        spec.offset = kFarDirection * d;
+        sweep.points.push_back(point(d, label, spec));
+    }
+    sweep.note = "Meshes placed by node translations (double) and the light and camera with them: every "
+                 "matrix is composed in double and handed over light- or camera-relative, so the error "
+                 "must not move. Bounds: distance (up to 1e6), distance_1e7.";
+    return sweep;
+}
+
+// The same distances with the offset baked into float vertex positions: what no double
+// matrix can repair (float spacing 0.0625 at 1e6), reported to show where the data, not
+// the engine, sets the limit.
+Sweep bakedDistanceSweep() {
+    Sweep sweep = distanceSweep(false);
+    sweep.name = "distance_baked";
+    sweep.title = "Scene far from the origin, offset baked into float vertex positions";
+    for (SweepPoint& point : sweep.points) point.spec.bakeOffset = true;
+    sweep.note = "Reported, not bounded. The offset is in the float vertex positions themselves (identity "
+                 "nodes): V^-1 * M and P * L^-1 * M are exact in double, but the vertex shader multiplies "
+                 "1e6-sized floats by them and cancels away their digits (spacing 0.0625 at 1e6). The "
+                 "truth's surface capture goes through the same float product, so past 1e5 the reference "
+                 "itself is off. The cure is in the engine, not the plugin: upload each mesh relative to "
+                 "its bounds' centre (exact in double) and fold that translation into M.";
+    return sweep;
+}
+
+Sweep nearFarSweep(bool quick) {
+    Sweep sweep{"near_far", "Light near/far ratio forced (near_plane, far_plane)",
+                "near / far", Axis::LogReversed, {LightKind::Spot, LightKind::Point}, {}, {}};
+    for (int exponent = 2; exponent <= 7; ++exponent) {
+        if (quick && exponent != 2 && exponent != 7) continue;
+        SceneSpec spec;
+        spec.nearOverFar = std::pow(10.0, -exponent);
+        sweep.points.push_back(point(*spec.nearOverFar, "1e-" + std::to_string(exponent), spec));
+    }
+    SceneSpec infinite;
+    infinite.nearOverFar = 1e-3;
+    infinite.infiniteFar = true;
+    sweep.points.push_back(point(1e-8, "inf", infinite));  // plotted beyond 1e-7
+    sweep.note = "near_plane forced to ratio * far_plane (far_plane just beyond the farthest scene corner); "
+                 "inf: far_plane \"infinite\", near 1e-3 of that corner. Fixed-point and forward float "
+                 "depth store 1 - n/d and run out of steps; reversed-Z d32f stores n/d. Bound: near_far_rz.";
+    return sweep;
+}
+
+Sweep elevationSweep() {
+    Sweep sweep{"elevation", "Light elevation over the floor (grazing at the end)",
+                "elevation (degrees)", Axis::LogReversed, {LightKind::Spot, LightKind::Directional}, {}, {}};
+    for (double degrees : {45.0, 30.0, 15.0, 5.0, 2.0, 1.0, 0.5}) {
+        SceneSpec spec;
+        spec.elevationDeg = degrees;
+        sweep.points.push_back(point(degrees, number(degrees, "%g"), spec));
+    }
+    sweep.note = "Spot 14 units from the floor's centre, directional from the same direction. Bound: grazing "
+                 "(standard, backface). Woo's window-depth midpoint is reported: at 1 and 0.5 degrees it "
+                 "shows acne on the grazing floor (a texel's depth footprint there is longer than the gap to "
+                 "the midpoint).";
+    return sweep;
+}
+
+Sweep scaleSweep(bool quick) {
+    Sweep sweep{"scale", "Whole scene scaled", "scale", Axis::Log,
+                {LightKind::Spot, LightKind::Directional, LightKind::Point}, {}, {}};
+    const std::vector<int> exponents = quick ? std::vector<int>{-3, 0, 3}
+                                             : std::vector<int>{-4, -3, -2, -1, 0, 1, 2, 3, 4};
+    for (int exponent : exponents) {
+        SceneSpec spec;
+        spec.scale = std::pow(10.0, exponent);
+        sweep.points.push_back(point(spec.scale, exponent == 0 ? "1" : "1e" + std::to_string(exponent), spec));
+    }
+    sweep.note = "Every length (geometry, placements, camera near/far, forced planes) times the scale. "
+                 "Biases are in depth-format units and texels, fits in fractions of their ranges, so nothing "
+                 "may move. Bounds: scale ([1e-3, 1e3]), scale_extreme.";
+    return sweep;
+}
+
+Sweep specialSweep(bool quick) {
+    Sweep sweep{"special", "Special cases", "case", Axis::Categorical, {}, {}, {}};
+    const auto add = [&](Layout layout, std::vector<LightKind> lights) {
+        SceneSpec spec;
+        spec.layout = layout;
+        SweepPoint p = point(static_cast<double>(sweep.points.size() + 1), toString(layout), spec);
+        p.lights = std::move(lights);
+        sweep.points.push_back(p);
+    };
+    add(Layout::LightInsideBox, {LightKind::Spot, LightKind::Point});
+    sweep.note = "light_inside_box: every receiver outside the shell is truly dark (bound inside_box). "
+                 "light_on_surface: spot apex on the tower's top, point light on the floor (the floor then "
+                 "only casts). camera_at_light: everything visible is lit, any shadow is acne. "
+                 "light_straight_down: direction (0,-1,0), the scene turned 3 degrees so no face is edge-on. "
+                 "Bound: special.";
+    if (quick) return sweep;
+    add(Layout::LightOnSurface, {LightKind::Spot, LightKind::Point});
+    add(Layout::CameraAtLight, {LightKind::Spot});
+    add(Layout::LightStraightDown, {LightKind::Spot, LightKind::Directional});
+    return sweep;
+}
+
+// Rows by (sweep, light, variant, format), then by point label.
+using SeriesKey = std::tuple<std::string, std::string, std::string, std::string>;
+std::map<SeriesKey, std::map<std::string, const Row*>> series(const std::vector<Row>& rows,
+                                                              const std::string& sweep) {
+    std::map<SeriesKey, std::map<std::string, const Row*>> out;
+    for (const Row& row : rows)
+        if (row.sweep == sweep) out[{row.sweep, row.light, row.variant, row.format}][row.label] = &row;
+    return out;
+}
+
+std::string describe(const Row& row) {
+    return row.sweep + " " + row.label + " " + row.light + "/" + row.variant + "/" + row.format;
+}
+
+// |error(label) - error(reference)| <= tolerance for every series and every label kept.
+void compareWithReference(BoundResult& bound, const std::vector<Row>& rows, const std::string& sweep,
+                          const std::string& reference,
+                          const std::function<bool(const Row&)>& keep, double tolerance,
+                          bool oneSided = false) {
+    double worst = -1.0;
+    for (const auto& [key, byLabel] : series(rows, sweep)) {
+        const auto ref = byLabel.find(reference);
+        if (ref == byLabel.end()) continue;
+        for (const auto& [label, row] : byLabel) {
+            if (label == reference || !keep(*row)) continue;
+            const double delta = row->error - ref->second->error;
+            const double deviation = oneSided ? delta : std::abs(delta);
+            ++bound.checked;
+            const std::string line = describe(*row) + ": error " + number(row->error) + " vs " +
+                                     number(ref->second->error) + " at " + reference + " (" +
+                                     (delta >= 0 ? "+" : "") + number(delta) + ")";
+            if (deviation > worst) {
+                worst = deviation;
+                bound.worst = line;
+            }
+            if (deviation > tolerance) bound.failures.push_back(line);
+        }
+    }
+}
+
+} // namespace
+
+std::vector<Sweep> makeSweeps(bool quick) {
+    if (quick) return {distanceSweep(true), nearFarSweep(true), scaleSweep(true), specialSweep(true)};
+    return {distanceSweep(false), bakedDistanceSweep(), nearFarSweep(false), elevationSweep(), scaleSweep(false),
+            specialSweep(false)};
+}
+
+std::vector<std::string> defaultVariants() { return {"standard", "woo", "backface"}; }
+
+std::vector<FormatSetting> knownFormats() {
+    return {{"d16", {{"depth_format", "d16"}}},
+            {"d24", {{"depth_format", "d24"}}},
+            {"d32f", {{"depth_format", "d32f"}}},
+            {"d32f_rz", {{"depth_format", "d32f"}, {"reversed_z", true}}}};
+}
+
+std::vector<FormatSetting> defaultFormats(bool quick) {
+    std::vector<FormatSetting> all = knownFormats();
+    if (!quick) return all;
+    return {all[1], all[2], all[3]};
+}
+
+std::vector<BoundResult> checkBounds(const std::vector<Row>& rows) {
+    std::vector<BoundResult> bounds;
+
+    BoundResult finite{"finite", "no NaN/Inf shadow term, depth texel or light matrix anywhere", 0, {}, {}};
+    std::size_t worstCount = 0;
+    for (const Row& row : rows) {
+        ++finite.checked;
+        const std::size_t bad = row.nonFiniteShade + row.nonFiniteDepth + (row.nonFiniteStats ? 1 : 0);
+        if (bad > 0)
+            finite.failures.push_back(describe(row) + ": " + std::to_string(row.nonFiniteShade) +
+                                      " shade pixels, " + std::to_string(row.nonFiniteDepth) +
+                                      " depth texels" + (row.nonFiniteStats ? ", non-finite matrices" : ""));
+        if (bad >= worstCount) {
+            worstCount = bad;
+            finite.worst = describe(row) + ": " + std::to_string(bad) + " non-finite values";
+        }
+    }
+    bounds.push_back(finite);
+
+    BoundResult hasMap{"has_map", "every light that should cast a shadow has a map", 0, {}, {}};
+    for (const Row& row : rows) {
+        if (!row.expectMap) continue;
+        ++hasMap.checked;
+        if (row.map == "none") hasMap.failures.push_back(describe(row) + ": no map (" + row.skipReason + ")");
+    }
+    hasMap.worst = hasMap.failures.empty() ? "all have a map" : hasMap.failures.front();
+    bounds.push_back(hasMap);
+
+    BoundResult distance{"distance", "|error(d) - error(0)| <= 0.1 points for d = 1e3, 1e5, 1e6", 0, {}, {}};
+    compareWithReference(distance, rows, "distance", "0", [](const Row& r) { return r.value <= 1e6; }, 0.1);
+    bounds.push_back(distance);
+
+    BoundResult distance7{"distance_1e7", "|error(1e7) - error(0)| <= 0.1 points", 0, {}, {}};
+    compareWithReference(distance7, rows, "distance", "0", [](const Row& r) { return r.value > 1e6; }, 0.1);
+    bounds.push_back(distance7);
+
+    BoundResult scale{"scale", "|error(s) - error(1)| <= 0.2 points for s in [1e-3, 1e3]", 0, {}, {}};
+    compareWithReference(scale, rows, "scale", "1",
+                         [](const Row& r) { return r.value >= 0.99e-3 && r.value <= 1.01e3; }, 0.2);
+    bounds.push_back(scale);
+
+    BoundResult scaleExtreme{"scale_extreme", "|error(s) - error(1)| <= 0.2 points for s = 1e-4, 1e4", 0, {}, {}};
+    compareWithReference(scaleExtreme, rows, "scale", "1",
+                         [](const Row& r) { return r.value < 0.99e-3 || r.value > 1.01e3; }, 0.2);
+    bounds.push_back(scaleExtreme);
+
+    BoundResult inside{"inside_box",
+                       "light inside a closed box: evaluation set not empty, every pixel of it shadowed (leak 0); "
+                       "d16 reported, not bounded",
+                       0, {}, {}};
+    double worstLeak = -1.0;
+    for (const Row& row : rows) {
+        if (row.sweep != "special" || row.label != toString(Layout::LightInsideBox) || row.format == "d16") continue;
+        ++inside.checked;
+        const std::string line = describe(row) + ": leak " + number(row.leak, "%.4f") + " of " +
+                                 std::to_string(row.evaluated) + " pixels";
+        if (row.leak > worstLeak) {
+            worstLeak = row.leak;
+            inside.worst = line;
+        }
+        if (row.evaluated == 0 || row.leak > 0.0) inside.failures.push_back(line);
+    }
+    bounds.push_back(inside);
+
+    BoundResult nearFar{"near_far_rz",
+                        "reversed-Z d32f: error(ratio) - error(1e-2) <= 0.5 points down to 1e-7 and an infinite far",
+                        0, {}, {}};
+    compareWithReference(nearFar, rows, "near_far", "1e-2", [](const Row& r) { return r.format == "d32f_rz"; },
+                         0.5, true);
+    bounds.push_back(nearFar);
+
+    BoundResult grazing{"grazing",
+                        "standard, backface at every elevation down to 0.5 deg: error without edge pixels <= 0.5 "
+                        "points (woo reported, not bounded)",
+                        0, {}, {}};
+    double worstGrazing = -1.0;
+    for (const Row& row : rows) {
+        if (row.sweep != "elevation" || row.variant == "woo") continue;
+        ++grazing.checked;
+        const std::string line = describe(row) + ": error_noedge " + number(row.errorNoEdge);
+        if (row.errorNoEdge > worstGrazing) {
+            worstGrazing = row.errorNoEdge;
+            grazing.worst = line;
+        }
+        if (row.errorNoEdge > 0.5) grazing.failures.push_back(line);
+    }
+    bounds.push_back(grazing);
+
+    BoundResult special{"special", "camera at the light, light straight down: error without edge pixels <= 0.5 points",
+                        0, {}, {}};
+    double worstSpecial = -1.0;
+    for (const Row& row : rows) {
+        if (row.sweep != "special" || (row.label != toString(Layout::CameraAtLight) &&
+                                       row.label != toString(Layout::LightStraightDown)))
+            continue;
+        ++special.checked;
+        const std::string line = describe(row) + ": error_noedge " + number(row.errorNoEdge);
+        if (row.errorNoEdge > worstSpecial) {
+            worstSpecial = row.errorNoEdge;
+            special.worst = line;
+        }
+        if (row.errorNoEdge > 0.5) special.failures.push_back(line);
+    }
+    bounds.push_back(special);
+    return bounds;
+}
+
+} // namespace stress

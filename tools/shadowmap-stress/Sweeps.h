@@ -1,0 +1,108 @@
+#pragma once
+// What shadowmap-stress sweeps and the bounds its results must hold (issue 8).
+//
+// Sweeps (each point is rendered for every light kind listed, variant and depth format):
+//   distance   everything translated 0, 1e3, 1e5, 1e6, 1e7 units from the origin (node
+//              translations, as glTF scenes place meshes)
+//   distance_baked  the same offsets baked into the float vertex positions
+//   near_far   spot and point lights with near/far forced to 1e-2 ... 1e-7, and an
+//              infinite far plane (near = 1e-3 of the farthest scene corner)
+//   elevation  light direction 45 deg down to 0.5 deg over the floor (grazing)
+//   scale      every length times 1e-4 ... 1e4
+//   special    light inside a closed box, light on a surface, camera at the light,
+//              light straight down (parallel to the usual up vector)
+// Depth formats: d16, d24, d32f, and d32f_rz (d32f with "reversed_z": true).
+// The quick version (CI) renders 96x64 pixels with 512-texel maps: distance 0 and 1e6,
+// near/far 1e-2, 1e-7 and infinite, scale 1e-3, 1 and 1e3, and the light inside a box, in
+// d24, d32f and d32f_rz.
+//
+// Bounds (checkBounds; the numbers are percentage points of the evaluation set):
+//   finite          no NaN/Inf anywhere: shadow term, depth map texels, light matrices
+//   has_map         every light that should cast a shadow has a map (no silent skip)
+//   distance        |error(d) - error(0)| <= 0.1 for d = 1e3, 1e5, 1e6, per light kind,
+//                   variant and format
+//   distance_1e7    the same at 1e7 (float spacing 1.0 there)
+//   scale           |error(s) - error(1)| <= 0.2 for s in [1e-3, 1e3]
+//   scale_extreme   the same at 1e-4 and 1e4
+//   inside_box      light inside a closed box: the evaluation set is not empty and every
+//                   pixel of it is in shadow (leak = 0), d24, d32f, d32f_rz. d16 is
+//                   reported: the apex inside the box's bounds pulls near to far * 1e-4,
+//                   where 8 d16 units are ~0.17 world units of offset at the walls
+//   near_far_rz     reversed-Z d32f: error(ratio) - error(1e-2) <= 0.5 down to 1e-7 and
+//                   with an infinite far plane
+//   grazing         standard / backface at every elevation down to 0.5 deg: error without
+//                   edge pixels <= 0.5 (woo is reported: its window-depth midpoint between
+//                   a grazing floor's top and where the ray leaves the slab lies within a
+//                   texel's depth footprint there)
+//   special         camera at the light and light straight down: error without edge
+//                   pixels <= 0.5
+// distance_baked (full sweep only) is reported, not bounded: there the float vertex data
+// itself, not a matrix, limits precision.
+#include "StressScenes.h"
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace stress {
+
+enum class Axis { Log, LogReversed, Categorical };
+
+struct SweepPoint {
+    double value = 0.0;     // the swept number (for plots: where it goes on x)
+    std::string label;      // as printed (e.g. "1e6", "inf", "light_inside_box")
+    SceneSpec spec;         // light kind, variant and format are filled in per row
+    // Light kinds this point is rendered with; empty = the sweep's.
+    std::vector<LightKind> lights;
+};
+
+struct Sweep {
+    std::string name;   // file names: <name>.png
+    std::string title;
+    std::string xLabel;
+    Axis axis = Axis::Log;
+    std::vector<LightKind> lights;
+    std::vector<SweepPoint> points;
+    std::string note;   // what to read from it (summary.md)
+};
+
+// A depth format as the sweep names it and the per-light settings it stands for.
+struct FormatSetting {
+    std::string name;          // d16, d24, d32f, d32f_rz
+    nlohmann::json settings;   // e.g. {"depth_format":"d32f","reversed_z":true}
+};
+
+std::vector<Sweep> makeSweeps(bool quick);
+std::vector<std::string> defaultVariants();
+std::vector<FormatSetting> defaultFormats(bool quick);
+// Every format the tool knows (for --formats), by name.
+std::vector<FormatSetting> knownFormats();
+
+// One rendered case and what it measured (errors in percent of the evaluation set).
+struct Row {
+    std::string sweep, light, variant, format, label;
+    double value = 0.0;
+    double acne = 0.0, leak = 0.0, error = 0.0, errorNoEdge = 0.0;
+    std::size_t evaluated = 0;
+    std::size_t nonFiniteShade = 0;   // shadow-term pixels that are NaN/Inf
+    std::size_t nonFiniteDepth = 0;   // shadow-map texels that are NaN/Inf
+    bool nonFiniteStats = false;      // the plugin reported a non-finite near/far/L
+    std::string map;                  // "2d", "cube" or "none"
+    std::string skipReason;           // why no map, if none
+    double nearPlane = 0.0, farPlane = 0.0;  // the light's (farPlane < 0: infinite)
+    double seconds = 0.0;             // wall time of the row
+    bool expectMap = true;            // false where losing the shadow is right
+};
+
+struct BoundResult {
+    std::string name;
+    std::string description;
+    int checked = 0;                    // comparisons made
+    std::vector<std::string> failures;  // one line per failing comparison
+    std::string worst;                  // the worst comparison, pass or fail
+    bool pass() const { return failures.empty(); }
+};
+
+std::vector<BoundResult> checkBounds(const std::vector<Row>& rows);
+
+} // namespace stress

@@ -1,0 +1,145 @@
+// The CI version of the stress sweep (issue 8): runs shadowmap-stress --quick once and holds
+// its CSV to the bounds: error at 1e6 within 0.1 points of the origin's for every light,
+// variant and format; scale 1e-3 and 1e3 within 0.2 points of scale 1; no NaN/Inf anywhere;
+// a light inside a closed box leaves everything outside in shadow.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+#include <string>
+#include <tuple>
+#include <vector>
+
+namespace {
+
+using Record = std::map<std::string, std::string>;
+
+std::vector<std::string> splitCsvLine(const std::string& line) {
+    std::vector<std::string> fields(1);
+    bool quoted = false;
+    for (std::size_t i = 0; i < line.size(); ++i) {
+        const char c = line[i];
+        if (quoted) {
+            if (c == '"' && i + 1 < line.size() && line[i + 1] == '"') fields.back() += '"', ++i;
+            else if (c == '"') quoted = false;
+            else fields.back() += c;
+        } else if (c == '"') quoted = true;
+        else if (c == ',') fields.emplace_back();
+        else fields.back() += c;
+    }
+    return fields;
+}
+
+class StressQuick : public ::testing::Test {
+protected:
+    static void SetUpTestSuite() {
+        const std::filesystem::path out = STRESS_OUTPUT_DIR;
+        std::filesystem::remove_all(out);
+        std::filesystem::create_directories(out);
+        const std::string command = std::string("'") + SHADOWMAP_STRESS_BIN + "' --quick --out '" + out.string() +
+                                    "' > '" + (out / "log.txt").string() + "' 2>&1";
+        const int status = std::system(command.c_str());
+        exitCode_ = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+        std::ifstream log(out / "log.txt");
+        log_.assign(std::istreambuf_iterator<char>(log), {});
+        std::ifstream csv(out / "stress.csv");
+        std::string line;
+        std::getline(csv, line);
+        const std::vector<std::string> header = splitCsvLine(line);
+        while (std::getline(csv, line)) {
+            const std::vector<std::string> fields = splitCsvLine(line);
+            Record record;
+            for (std::size_t i = 0; i < header.size() && i < fields.size(); ++i) record[header[i]] = fields[i];
+            records_.push_back(record);
+        }
+    }
+
+    static double number(const Record& r, const char* key) { return std::stod(r.at(key)); }
+
+    // error_pct by (light, variant, format) for one sweep point.
+    static std::map<std::tuple<std::string, std::string, std::string>, double> errors(const std::string& sweep,
+                                                                                     const std::string& label) {
+        std::map<std::tuple<std::string, std::string, std::string>, double> out;
+        for (const Record& r : records_)
+            if (r.at("sweep") == sweep && r.at("label") == label)
+                out[{r.at("light"), r.at("variant"), r.at("format")}] = number(r, "error_pct");
+        return out;
+    }
+
+    // Every (light, variant, format) of `label` within `tolerance` points of `reference`;
+    // `format` non-empty: only that format.
+    static void expectClose(const std::string& sweep, const std::string& reference, const std::string& label,
+                            double tolerance, const std::string& format = "") {
+        auto ref = errors(sweep, reference), other = errors(sweep, label);
+        if (!format.empty())
+            for (auto* map : {&ref, &other})
+                std::erase_if(*map, [&](const auto& entry) { return std::get<2>(entry.first) != format; });
+        ASSERT_FALSE(ref.empty()) << sweep << " " << reference << " was not run";
+        ASSERT_EQ(ref.size(), other.size()) << sweep << " " << label;
+        std::set<std::string> variants;
+        for (const auto& [key, error] : ref) {
+            const auto found = other.find(key);
+            ASSERT_NE(found, other.end());
+            EXPECT_LE(std::abs(found->second - error), tolerance)
+                << sweep << " " << label << " " << std::get<0>(key) << "/" << std::get<1>(key) << "/"
+                << std::get<2>(key) << ": error " << found->second << "% vs " << error << "% at " << reference;
+            variants.insert(std::get<1>(key));
+        }
+        EXPECT_EQ(variants, (std::set<std::string>{"standard", "woo", "backface"}));
+    }
+
+    static inline int exitCode_ = -1;
+    static inline std::string log_;
+    static inline std::vector<Record> records_;
+};
+
+TEST_F(StressQuick, RunsAndEveryBoundHolds) {
+    EXPECT_EQ(exitCode_, 0) << log_;
+    ASSERT_FALSE(records_.empty()) << log_;
+    EXPECT_TRUE(std::filesystem::exists(std::filesystem::path(STRESS_OUTPUT_DIR) / "summary.md"));
+}
+
+TEST_F(StressQuick, ErrorAtAMillionUnitsMatchesTheOrigin) { expectClose("distance", "0", "1e6", 0.1); }
+
+TEST_F(StressQuick, ScaleDoesNotChangeTheError) {
+    expectClose("scale", "1", "1e-3", 0.2);
+    expectClose("scale", "1", "1e3", 0.2);
+}
+
+TEST_F(StressQuick, NoNaNOrInfAnywhere) {
+    ASSERT_FALSE(records_.empty());
+    for (const Record& r : records_) {
+        const std::string what = r.at("sweep") + " " + r.at("label") + " " + r.at("light") + "/" +
+                                 r.at("variant") + "/" + r.at("format");
+        EXPECT_EQ(r.at("nonfinite_shade"), "0") << what;
+        EXPECT_EQ(r.at("nonfinite_depth"), "0") << what;
+        EXPECT_EQ(r.at("nonfinite_matrices"), "0") << what;
+        EXPECT_NE(r.at("map"), "none") << what << ": " << r.at("skip_reason");
+    }
+}
+
+TEST_F(StressQuick, LightInsideABoxShadowsEverythingOutside) {
+    int rows = 0;
+    for (const Record& r : records_) {
+        if (r.at("sweep") != "special" || r.at("label") != "light_inside_box") continue;
+        ++rows;
+        const std::string what = r.at("light") + "/" + r.at("variant") + "/" + r.at("format");
+        EXPECT_GT(number(r, "evaluated_pixels"), 100) << what;
+        EXPECT_EQ(number(r, "leak_pct"), 0.0) << what;
+    }
+    EXPECT_GE(rows, 2 * 3 * 2);  // spot, point x 3 variants x at least d24 and d32f_rz
+}
+
+TEST_F(StressQuick, ReversedZHoldsANearFarRatioOf1e7AndAnInfiniteFar) {
+    // The reversed-Z d32f path, which the near/far bound of the full sweep relies on.
+    expectClose("near_far", "1e-2", "1e-7", 0.5, "d32f_rz");
+    expectClose("near_far", "1e-2", "inf", 0.5, "d32f_rz");
+}
+
+} // namespace
