@@ -55,11 +55,10 @@ Sweep bakedDistanceSweep() {
     sweep.title = "Scene far from the origin, offset baked into float vertex positions";
     for (SweepPoint& point : sweep.points) point.spec.bakeOffset = true;
     sweep.note = "Reported, not bounded. The offset is in the float vertex positions themselves (identity "
-                 "nodes): V^-1 * M and P * L^-1 * M are exact in double, but the vertex shader multiplies "
-                 "1e6-sized floats by them and cancels away their digits (spacing 0.0625 at 1e6). The "
-                 "truth's surface capture goes through the same float product, so past 1e5 the reference "
-                 "itself is off. The cure is in the engine, not the plugin: upload each mesh relative to "
-                 "its bounds' centre (exact in double) and fold that translation into M.";
+                 "nodes), so the data is quantized where it is stored (spacing 0.0625 at 1e6). The engine "
+                 "uploads each mesh relative to its bounds' centre (subtracted in double) and folds that "
+                 "translation into M (SceneGpu::modelMatrix), so the GPU never multiplies 1e6-sized floats: "
+                 "before that fix a point light's error was 14.7% at 1e3 and 60-90% at 1e6.";
     return sweep;
 }
 

@@ -129,7 +129,7 @@ SurfaceBuffer SurfaceCapture::capture(const engine::Scene& scene, const engine::
     static const Material kDefaultMaterial{};
     for (std::size_t i = 0; i < scene.meshInstances.size(); ++i) {
         const MeshInstance& instance = scene.meshInstances[i];
-        program_.set("uModelView", glm::mat4(view * instance.world));  // double, then cast
+        program_.set("uModelView", glm::mat4(view * gpu.modelMatrix(instance)));  // double, then cast
         program_.set("uInstance", static_cast<int>(i));
         glFrontFace(glm::determinant(glm::dmat3(instance.world)) < 0.0 ? GL_CW : GL_CCW);
         for (const SceneGpu::Primitive& primitive : gpu.primitives(instance.mesh)) {

@@ -102,7 +102,7 @@ void LitPass::drawScene(const Frame& frame, const gl::Program& program, PassCont
             continue;
         }
         // Compose in double so only the camera-relative result is rounded to float.
-        const glm::dmat4 modelView = view * instance.world;
+        const glm::dmat4 modelView = view * frame.gpu().modelMatrix(instance);
         const glm::dmat3 normalMatrix = glm::transpose(glm::inverse(glm::dmat3(modelView)));
         program.set("uModelView", glm::mat4(modelView));
         program.set("uNormalMatrix", glm::mat3(normalMatrix));

@@ -2,6 +2,8 @@
 
 #include "engine/scene/Scene.h"
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include <algorithm>
 #include <cmath>
 
@@ -14,9 +16,12 @@ gl::Buffer uploadArray(const std::vector<T>& data) {
     return gl::Buffer::create(data.size() * sizeof(T), data.data());
 }
 
-SceneGpu::Primitive uploadPrimitive(const engine::Primitive& source) {
+SceneGpu::Primitive uploadPrimitive(const engine::Primitive& source, const glm::dvec3& origin) {
     SceneGpu::Primitive gpu;
-    gpu.positions = uploadArray(source.positions);
+    std::vector<glm::vec3> relative(source.positions.size());
+    for (std::size_t i = 0; i < relative.size(); ++i)
+        relative[i] = glm::vec3(glm::dvec3(source.positions[i]) - origin);
+    gpu.positions = uploadArray(relative);
     gpu.normals = uploadArray(source.normals);
     gpu.indices = uploadArray(source.indices);
     gpu.indexCount = static_cast<std::int32_t>(source.indices.size());
@@ -53,13 +58,19 @@ gl::Texture uploadImage(const Image& image) {
 SceneGpu::SceneGpu(const Scene& scene) {
     meshes_.reserve(scene.meshes.size());
     for (const Mesh& mesh : scene.meshes) {
+        const glm::dvec3 origin = mesh.bounds.empty() ? glm::dvec3(0.0) : mesh.bounds.center();
         std::vector<Primitive> primitives;
         for (const engine::Primitive& primitive : mesh.primitives)
-            if (!primitive.indices.empty()) primitives.push_back(uploadPrimitive(primitive));
+            if (!primitive.indices.empty()) primitives.push_back(uploadPrimitive(primitive, origin));
         meshes_.push_back(std::move(primitives));
+        meshOrigins_.push_back(origin);
     }
     for (const Image& image : scene.images) images_.push_back(uploadImage(image));
     for (const Material& material : scene.materials) materialImage_.push_back(material.baseColorImage);
+}
+
+glm::dmat4 SceneGpu::modelMatrix(const MeshInstance& instance) const {
+    return glm::translate(instance.world, meshOrigins_.at(instance.mesh));
 }
 
 std::uint64_t SceneGpu::draw(const Primitive& primitive) const {

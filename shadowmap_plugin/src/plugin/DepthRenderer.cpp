@@ -98,7 +98,8 @@ DepthDrawCounts DepthRenderer::render(const engine::Frame& frame, engine::PassCo
         // A mirroring transform turns counter-clockwise triangles clockwise.
         glFrontFace(glm::determinant(glm::dmat3(instance.world)) < 0.0 ? GL_CW : GL_CCW);
         // P_light * L^-1 * M in double: only the light-relative product is rounded.
-        program.set("uLightModelViewProjection", glm::mat4(viewProjection * instance.world));
+        program.set("uLightModelViewProjection",
+                    glm::mat4(viewProjection * frame.gpu().modelMatrix(instance)));
         for (const auto& primitive : frame.gpu().primitives(instance.mesh)) {
             const std::uint64_t triangles = frame.gpu().draw(primitive);
             context.countDraw(triangles);

@@ -5,12 +5,15 @@
 #include "engine/gl/Texture.h"
 #include "engine/gl/VertexArray.h"
 
+#include <glm/glm.hpp>
+
 #include <cstdint>
 #include <vector>
 
 namespace engine {
 
 struct Scene;
+struct MeshInstance;
 
 // Vertex attribute locations every engine and plugin shader uses.
 constexpr unsigned kAttribPosition = 0;
@@ -30,6 +33,11 @@ public:
     explicit SceneGpu(const Scene& scene);
 
     const std::vector<Primitive>& primitives(int mesh) const { return meshes_.at(mesh); }
+    // The model matrix to draw an instance's primitives with: M times the translation to the
+    // mesh's bounds centre. Vertices are uploaded relative to that centre (subtracted in
+    // double), so a mesh whose vertices sit 10^6 from the origin keeps its float precision;
+    // every drawer must use this, not MeshInstance::world alone.
+    glm::dmat4 modelMatrix(const MeshInstance& instance) const;
     // Binds the primitive's vertex array and draws it; returns its triangle count.
     std::uint64_t draw(const Primitive& primitive) const;
     // The material's base color texture (sRGB, mipmapped), or 0 when it has none.
@@ -37,6 +45,7 @@ public:
 
 private:
     std::vector<std::vector<Primitive>> meshes_;
+    std::vector<glm::dvec3> meshOrigins_;      // per mesh: its bounds' centre
     std::vector<gl::Texture> images_;          // per Scene::images, sRGB
     std::vector<int> materialImage_;           // per material: index into images_ or -1
 };
