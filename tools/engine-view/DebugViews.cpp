@@ -1,0 +1,203 @@
+#include "DebugViews.h"
+
+#include "DepthImage.h"
+#include "LightCamera.h"
+#include "ProjectedDepth.h"
+
+#include "truth/RayTracedVisibility.h"
+#include "truth/ShadowMetrics.h"
+#include "truth/SurfaceCapture.h"
+
+#include <algorithm>
+#include <cstdio>
+
+namespace {
+
+bool sameCamera(const engine::FrameCamera& a, const engine::FrameCamera& b) {
+    return a.width == b.width && a.height == b.height && a.eyeToWorld == b.eyeToWorld &&
+           a.projection == b.projection;
+}
+
+std::string percent(double fraction) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3f%%", 100.0 * fraction);
+    return text;
+}
+
+// Mixes `color` over the pixel by `amount` in [0,1].
+void tint(std::uint8_t* pixel, const std::uint8_t (&color)[3], double amount) {
+    for (int c = 0; c < 3; ++c) pixel[c] = static_cast<std::uint8_t>(pixel[c] + (color[c] - pixel[c]) * amount + 0.5);
+}
+
+} // namespace
+
+struct DebugViews::Cache {
+    engine::FrameCamera surfacesCamera;
+    truth::SurfaceBuffer surfaces;
+    bool haveSurfaces = false;
+    int truthSlot = -1;  // truth below is for this light and surfacesCamera
+    std::vector<std::uint8_t> truth, evaluation;
+};
+
+DebugViews::DebugViews(engine::Renderer& renderer, const engine::Scene& scene)
+    : renderer_(renderer), scene_(scene), cache_(std::make_unique<Cache>()) {}
+
+DebugViews::~DebugViews() = default;
+
+engine::FrameResult DebugViews::renderFrame(engine::FrameRequest request) {
+    request.timing = true;  // the overlay shows every light's pass times
+    return renderer_.renderFrame(request);
+}
+
+const truth::SurfaceBuffer& DebugViews::surfaces(const engine::FrameCamera& camera) {
+    if (!cache_->haveSurfaces || !sameCamera(cache_->surfacesCamera, camera)) {
+        if (!capture_) capture_ = std::make_unique<truth::SurfaceCapture>();
+        cache_->surfaces = capture_->capture(scene_, renderer_.gpu(), camera);
+        cache_->surfacesCamera = camera;
+        cache_->haveSurfaces = true;
+        cache_->truthSlot = -1;
+    }
+    return cache_->surfaces;
+}
+
+ViewFrame DebugViews::render(DebugView view, const ViewedLight* light, const nlohmann::json* lightStats,
+                             const engine::FrameCamera& camera) {
+    if (!light && view != DebugView::Shaded) {
+        ViewFrame out = render(DebugView::Shaded, nullptr, nullptr, camera);
+        out.notes.push_back("no light in the scene: shaded view");
+        return out;
+    }
+    engine::FrameRequest request;
+    request.camera = camera;
+    ViewFrame out;
+    switch (view) {
+    case DebugView::Shaded:
+        out.frame = renderFrame(request);
+        out.image = {camera.width, camera.height, renderer_.readColor()};
+        return out;
+    case DebugView::LightView:
+        request.camera = lightCamera(scene_, light->slot, lightStats, std::min(camera.width, camera.height));
+        out.frame = renderFrame(request);
+        out.image = {request.camera.width, request.camera.height, renderer_.readColor()};
+        out.notes.push_back("the scene seen from " + light->name);
+        return out;
+    case DebugView::DepthMap:
+        return depthMap(*light, camera);
+    case DebugView::ProjectedDepth:
+        return projected(*light, lightStats, camera);
+    case DebugView::Comparison:
+    case DebugView::ShadowTerm: {
+        const bool comparison = view == DebugView::Comparison;
+        (comparison ? request.comparisonSlots : request.shadowMaskSlots).push_back(light->slot);
+        out.frame = renderFrame(request);
+        if (!out.frame.shadowTermProvided) {
+            out.image = {camera.width, camera.height, renderer_.readColor()};
+            out.notes.push_back("no plugin provides a shadow term: shaded view");
+        } else if (comparison) {
+            out.image = {camera.width, camera.height, renderer_.readComparison(light->slot)};
+            out.notes.push_back("comparison: green lit, red shadowed, blue offset decided, grey no say");
+        } else {
+            out.image = Image::fromGray(camera.width, camera.height, renderer_.readShadowMask(light->slot));
+            out.notes.push_back("shadow term of " + light->name + ": white lit, black shadowed");
+        }
+        return out;
+    }
+    case DebugView::AcneLeak:
+        return acneLeak(*light, camera);
+    }
+    return out;
+}
+
+ViewFrame DebugViews::depthMap(const ViewedLight& light, const engine::FrameCamera& camera) {
+    engine::FrameRequest request;
+    request.camera = camera;
+    request.depthReadbacks.push_back("shadow_map_" + light.name);
+    ViewFrame out;
+    out.frame = renderFrame(request);
+    const auto found = out.frame.depthReadbacks.find("shadow_map_" + light.name);
+    if (found == out.frame.depthReadbacks.end()) {
+        out.image = {camera.width, camera.height, renderer_.readColor()};
+        out.notes.push_back(light.name + " has no shadow map this frame: shaded view");
+        return out;
+    }
+    int width = 0, height = 0;
+    const std::vector<std::uint8_t> gray = depthToGray(found->second, width, height);
+    out.image = Image::fromGray(width, height, gray);
+    out.notes.push_back("depth map of " + light.name + " (" + std::to_string(found->second.width) + "x" +
+                        std::to_string(found->second.height) +
+                        (found->second.layers == 6 ? ", cube: +X -X +Y -Y +Z -Z" : "") +
+                        "): near dark, far white");
+    return out;
+}
+
+ViewFrame DebugViews::projected(const ViewedLight& light, const nlohmann::json* lightStats,
+                                const engine::FrameCamera& camera) {
+    if (light.type == engine::Light::Type::Directional) {
+        ViewFrame out = render(DebugView::Comparison, &light, lightStats, camera);
+        out.notes.push_back("projected depth: a directional map's fitted extents are not reported; "
+                            "comparison view instead");
+        return out;
+    }
+    engine::FrameRequest request;
+    request.camera = camera;
+    request.depthReadbacks.push_back("shadow_map_" + light.name);
+    ViewFrame out;
+    out.frame = renderFrame(request);
+    const Image shaded{camera.width, camera.height, renderer_.readColor()};
+    const auto found = out.frame.depthReadbacks.find("shadow_map_" + light.name);
+    // The L of this frame's map (the stats of the frame just rendered).
+    const nlohmann::json* stats = nullptr;
+    for (const nlohmann::json& entry : out.frame.pluginStats["shadowmap"]["lights"])
+        if (entry.value("slot", -1) == light.slot) stats = &entry;
+    ProjectedMap map;
+    if (found == out.frame.depthReadbacks.end() ||
+        (light.type == engine::Light::Type::Spot && !reportedLightToWorld(stats, map.lightToWorld))) {
+        out.image = shaded;
+        out.notes.push_back(light.name + " has no shadow map this frame: shaded view");
+        return out;
+    }
+    int width = 0, height = 0;
+    const std::vector<std::uint8_t> gray = depthToGray(found->second, width, height);
+    map.kind = found->second.layers == 6 ? ProjectedMap::Kind::Cube : ProjectedMap::Kind::Spot;
+    map.halfAngle = scene_.lights[light.light].outerConeAngle;
+    map.position = scene_.lightInstances[light.slot].position();
+    map.faceSize = found->second.width;
+    map.gray = &gray;
+    out.image = projectDepthMap(shaded, surfaces(camera), map);
+    out.notes.push_back("depth map of " + light.name + " projected from the light: near dark, far white");
+    return out;
+}
+
+ViewFrame DebugViews::acneLeak(const ViewedLight& light, const engine::FrameCamera& camera) {
+    engine::FrameRequest request;
+    request.camera = camera;
+    request.shadowMaskSlots.push_back(light.slot);
+    ViewFrame out;
+    out.frame = renderFrame(request);
+    out.image = {camera.width, camera.height, renderer_.readColor()};
+    if (!out.frame.shadowTermProvided) {
+        out.notes.push_back("no plugin provides a shadow term: shaded view");
+        return out;
+    }
+    const std::vector<float> shade = truth::shadeFromMask8(renderer_.readShadowMask(light.slot));
+    const truth::SurfaceBuffer& buffer = surfaces(camera);
+    if (cache_->truthSlot != light.slot) {
+        if (!visibility_) visibility_ = std::make_unique<truth::RayTracedVisibility>(scene_);
+        cache_->truth = visibility_->visibility(scene_, light.slot, buffer);
+        cache_->evaluation = truth::evaluationSet(scene_, light.slot, buffer);
+        cache_->truthSlot = light.slot;
+    }
+    const truth::ShadowErrors errors = truth::shadowErrors(camera.width, camera.height, cache_->truth, shade,
+                                                           cache_->evaluation, buffer.covered);
+    static constexpr std::uint8_t kAcne[3] = {255, 0, 0}, kLeak[3] = {0, 64, 255};
+    for (std::size_t i = 0; i < buffer.pixelCount(); ++i) {
+        if (!cache_->evaluation[i]) continue;
+        const double wrong = cache_->truth[i] ? 1.0 - shade[i] : shade[i];
+        if (wrong > 0.02) tint(&out.image.rgba[4 * i], cache_->truth[i] ? kAcne : kLeak, 0.5 + 0.5 * std::min(wrong, 1.0));
+    }
+    out.notes.push_back(light.name + " vs ray-traced truth: acne (red) " + percent(errors.acne) + ", leak (blue) " +
+                        percent(errors.leak));
+    out.notes.push_back("error " + percent(errors.error) + ", off shadow edges " + percent(errors.errorNoEdge) + ", of " +
+                        std::to_string(errors.evaluated) + " evaluated pixels");
+    return out;
+}

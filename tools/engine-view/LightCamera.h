@@ -1,0 +1,24 @@
+#pragma once
+// The "light's view" debug view: a camera placed at a light, so the scene is seen as the
+// light sees it (the seeds' first picture: every surface it lights is visible, shadows are
+// hidden behind what casts them).
+//  - spot: the shadow map's own L (the plugin's light_to_world) and the cone's full angle
+//    (2 * outer cone, at most 178 degrees), aspect 1: the same picture as its depth map;
+//  - directional: the plugin's L (the fitted box's face toward the light; a placement from
+//    the scene's bounds when the plugin reported none) and an orthographic box around the
+//    whole scene (the plugin fits x/y to what the camera sees, which it does not report);
+//  - point: from the light toward the scene's centre, wide enough for the scene's bounding
+//    sphere (40 to 120 degrees): a point light sees all around, a cube would be six views.
+// Near/far bracket the scene's bounds. The image is square (`size` pixels a side).
+#include "engine/render/Frame.h"
+#include "engine/scene/Scene.h"
+
+#include <nlohmann/json.hpp>
+
+// `lightStats`: the plugin's per-light stats of the last frame, or null.
+engine::FrameCamera lightCamera(const engine::Scene& scene, int slot, const nlohmann::json* lightStats,
+                                int size);
+
+// L (light -> world) as the plugin reported it ("light_to_world", column-major); false when
+// absent (no 2D map this frame).
+bool reportedLightToWorld(const nlohmann::json* lightStats, glm::dmat4& lightToWorld);

@@ -1,0 +1,30 @@
+#pragma once
+// What the overlay says: one line per light (variant, map size, depth format, filter,
+// polygon offset, dimming, ms of its passes, cached or rendered), the frame's time, view
+// and camera, the view's notes, a transient status message, and the keys.
+#include "Overlay.h"
+#include "ViewerState.h"
+
+#include "engine/render/Renderer.h"
+
+#include <map>
+#include <string>
+#include <vector>
+
+class OverlayText {
+public:
+    // Remembers each light's pass time of the frames that rendered its map, so a cached
+    // light still shows what its map cost.
+    void recordFrame(const engine::FrameResult& frame, const ViewerState& state);
+
+    std::vector<OverlayLine> lines(const ViewerState& state, const engine::FrameResult& frame,
+                                   const std::vector<std::string>& notes, const std::string& camera,
+                                   const std::string& status, bool statusIsError) const;
+
+    // The wall time of light `name`'s passes in `frame` ("shadow_<name>" and, for woo,
+    // "shadow_<name>_first_layer"); false when none ran (cached, none, culled).
+    static bool lightPassMs(const engine::FrameResult& frame, const std::string& name, double& ms);
+
+private:
+    std::map<std::string, double> lastMs_;
+};

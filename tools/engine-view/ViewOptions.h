@@ -1,0 +1,19 @@
+#pragma once
+// engine-view's command line.
+#include <string>
+
+struct ViewOptions {
+    std::string config = "content/engine.json";
+    std::string scene;
+    std::string camera;          // empty: first glTF camera, else a framing one
+    int width = 1280, height = 720;  // the window's initial size (the image follows resizes)
+    std::string script;          // --script FILE: one command per frame (Script.h)
+    std::string screenshot;      // --screenshot OUT.png: the first frame's window, then quit
+    std::string saveSettings;    // --save-settings OUT.gltf|.glb: where S (and `save`) write
+    bool help = false;
+};
+
+extern const char* const kViewUsage;
+
+// Throws std::invalid_argument with one line naming the flag and the reason.
+ViewOptions parseViewOptions(int argc, char** argv);

@@ -1,0 +1,159 @@
+#include "ViewerState.h"
+
+#include "engine/render/Frame.h"
+#include "engine/util/Error.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace {
+
+constexpr std::array<const char*, kDebugViewCount> kViewNames = {
+    "shaded", "light", "depth", "projected", "comparison", "shadow", "truth"};
+
+template <std::size_t N>
+std::string nextOf(const std::array<const char*, N>& cycle, const std::string& current) {
+    for (std::size_t i = 0; i < N; ++i)
+        if (current == cycle[i]) return cycle[(i + 1) % N];
+    return cycle[0];
+}
+
+} // namespace
+
+const char* viewName(DebugView view) { return kViewNames[static_cast<int>(view)]; }
+
+std::optional<DebugView> parseView(const std::string& name) {
+    for (int i = 0; i < kDebugViewCount; ++i)
+        if (name == kViewNames[i]) return static_cast<DebugView>(i);
+    return std::nullopt;
+}
+
+ViewerState::ViewerState(engine::Scene& scene, nlohmann::json pluginDefaults)
+    : scene_(scene), defaults_(std::move(pluginDefaults)) {
+    if (!defaults_.is_object()) defaults_ = nlohmann::json::object();
+    for (std::size_t slot = 0; slot < scene.lightInstances.size() && slot < engine::kMaxLights; ++slot) {
+        const engine::LightInstance& placed = scene.lightInstances[slot];
+        ViewedLight light;
+        light.name = scene.lights[placed.light].name;
+        if (light.name.empty()) light.name = scene.nodes[placed.node].name;
+        light.slot = static_cast<int>(slot);
+        light.light = placed.light;
+        light.type = scene.lights[placed.light].type;
+        lights_.push_back(light);
+    }
+    for (const engine::Light& light : scene.lights) applied_.push_back(light.extras);
+    selected_ = lights_.empty() ? -1 : 0;
+}
+
+void ViewerState::selectNext() {
+    if (!lights_.empty()) selected_ = (selected_ + 1) % static_cast<int>(lights_.size());
+}
+
+int ViewerState::find(const std::string& name) const {
+    for (std::size_t i = 0; i < lights_.size(); ++i)
+        if (lights_[i].name == name) return static_cast<int>(i);
+    return -1;
+}
+
+bool ViewerState::select(const std::string& name) {
+    const int index = find(name);
+    if (index >= 0) selected_ = index;
+    return index >= 0;
+}
+
+nlohmann::json& ViewerState::shadowOf(int index) {
+    nlohmann::json& extras = scene_.lights[lights_[index].light].extras;
+    if (!extras.is_object()) extras = nlohmann::json::object();
+    nlohmann::json& shadow = extras["shadow"];
+    if (!shadow.is_object()) shadow = nlohmann::json::object();
+    return shadow;
+}
+
+const nlohmann::json* ViewerState::frameStats(int index) const {
+    for (const nlohmann::json& light : stats_)
+        if (light.value("slot", -1) == lights_[index].slot) return &light;
+    return nullptr;
+}
+
+nlohmann::json ViewerState::effective(int index) const {
+    nlohmann::json settings = {{"variant", "standard"}, {"resolution", 2048}, {"depth_format", "d24"},
+                               {"filter", "pcf"}, {"dimming", 0.4}};
+    settings.update(defaults_);
+    const nlohmann::json& extras = scene_.lights[lights_[index].light].extras;
+    if (extras.is_object() && extras.contains("shadow") && extras["shadow"].is_object())
+        settings.update(extras["shadow"]);
+    if (!settings.contains("polygon_offset")) {
+        const nlohmann::json* stats = frameStats(index);
+        settings["polygon_offset"] = stats && stats->contains("polygon_offset") ? (*stats)["polygon_offset"]
+                                                                                : nlohmann::json::array({0.0, 0.0});
+    }
+    return settings;
+}
+
+nlohmann::json ViewerState::savedShadow(int index) const {
+    const nlohmann::json settings = effective(index);
+    nlohmann::json shadow = nlohmann::json::object();
+    const nlohmann::json& extras = scene_.lights[lights_[index].light].extras;
+    if (extras.is_object() && extras.contains("shadow") && extras["shadow"].is_object()) shadow = extras["shadow"];
+    for (const char* key : {"variant", "resolution", "depth_format", "filter", "dimming"}) shadow[key] = settings[key];
+    return shadow;
+}
+
+void ViewerState::set(int index, const std::string& key, const nlohmann::json& value) {
+    if (index < 0 || index >= static_cast<int>(lights_.size())) return;
+    shadowOf(index)[key] = value;
+    dirty_ = true;
+}
+
+void ViewerState::cycleVariant() {
+    if (selected_ < 0) return;
+    static constexpr std::array<const char*, 4> cycle = {"standard", "woo", "backface", "none"};
+    set(selected_, "variant", nextOf(cycle, effective(selected_)["variant"].get<std::string>()));
+}
+
+void ViewerState::cycleResolution() {
+    if (selected_ < 0) return;
+    static constexpr std::array<int, 4> cycle = {512, 1024, 2048, 4096};
+    const int current = effective(selected_)["resolution"].get<int>();
+    const auto next = std::upper_bound(cycle.begin(), cycle.end(), current);
+    set(selected_, "resolution", next == cycle.end() ? cycle.front() : *next);
+}
+
+void ViewerState::cycleDepthFormat() {
+    if (selected_ < 0) return;
+    static constexpr std::array<const char*, 3> cycle = {"d16", "d24", "d32f"};
+    set(selected_, "depth_format", nextOf(cycle, effective(selected_)["depth_format"].get<std::string>()));
+}
+
+void ViewerState::toggleFilter() {
+    if (selected_ < 0) return;
+    set(selected_, "filter", effective(selected_)["filter"] == "pcf" ? "nearest" : "pcf");
+}
+
+void ViewerState::addOffsetUnits(double delta) {
+    if (selected_ < 0) return;
+    const nlohmann::json offset = effective(selected_)["polygon_offset"];
+    const double factor = offset.at(0).get<double>();
+    const double units = std::max(offset.at(1).get<double>() + delta, 0.0);
+    set(selected_, "polygon_offset", nlohmann::json::array({factor, units}));
+}
+
+void ViewerState::addDimming(double delta) {
+    if (selected_ < 0) return;
+    const double dimming = std::clamp(effective(selected_)["dimming"].get<double>() + delta, 0.0, 1.0);
+    set(selected_, "dimming", std::round(dimming * 100.0) / 100.0);
+}
+
+void ViewerState::apply(engine::Renderer& renderer) {
+    if (!dirty_) return;
+    dirty_ = false;
+    try {
+        renderer.reloadSettings();
+    } catch (const engine::InputError&) {
+        for (std::size_t i = 0; i < scene_.lights.size(); ++i) scene_.lights[i].extras = applied_[i];
+        renderer.reloadSettings();
+        throw;
+    }
+    for (std::size_t i = 0; i < scene_.lights.size(); ++i) applied_[i] = scene_.lights[i].extras;
+}

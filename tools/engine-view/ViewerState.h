@@ -1,0 +1,82 @@
+#pragma once
+// What the author is looking at and what they changed: the selected light, the debug view,
+// and each light's live shadow settings, kept where the plugin reads them (the glTF light's
+// extras.shadow in the Scene), so Renderer::reloadSettings applies them next frame and the
+// plugin's cache re-renders only the lights whose settings changed.
+#include "engine/render/Renderer.h"
+#include "engine/scene/Scene.h"
+
+#include <nlohmann/json.hpp>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+enum class DebugView { Shaded, LightView, DepthMap, ProjectedDepth, Comparison, ShadowTerm, AcneLeak };
+constexpr int kDebugViewCount = 7;
+// "shaded", "light", "depth", "projected", "comparison", "shadow", "truth"
+const char* viewName(DebugView view);
+std::optional<DebugView> parseView(const std::string& name);
+
+struct ViewedLight {
+    std::string name;  // as the shadow plugin names it: the light's name, else its node's
+    int slot = -1;     // index into scene.lightInstances (the lit pass's slot)
+    int light = -1;    // index into scene.lights (the glTF light object holding extras)
+    engine::Light::Type type = engine::Light::Type::Point;
+};
+
+class ViewerState {
+public:
+    // `pluginDefaults`: the shadow plugin's settings from the engine config (the defaults a
+    // light's extras.shadow overrides).
+    ViewerState(engine::Scene& scene, nlohmann::json pluginDefaults);
+
+    const std::vector<ViewedLight>& lights() const { return lights_; }
+    int selected() const { return selected_; }  // index into lights(), -1 when none
+    void selectNext();
+    bool select(const std::string& name);
+    int find(const std::string& name) const;  // index into lights(), -1 when absent
+
+    DebugView view() const { return view_; }
+    void setView(DebugView view) { view_ = view; }
+    void nextView() { view_ = static_cast<DebugView>((static_cast<int>(view_) + 1) % kDebugViewCount); }
+
+    // The keys' edits, on the selected light (nothing when there is none).
+    void cycleVariant();     // standard -> woo -> backface -> none
+    void cycleResolution();  // 512 -> 1024 -> 2048 -> 4096
+    void cycleDepthFormat(); // d16 -> d24 -> d32f
+    void toggleFilter();     // nearest <-> pcf
+    void addOffsetUnits(double delta);  // polygon offset units, kept >= 0
+    void addDimming(double delta);      // kept in [0, 1], rounded to 0.01
+    // Any key of extras.shadow (the plugin checks it when applied).
+    void set(int index, const std::string& key, const nlohmann::json& value);
+
+    // Applies pending edits through renderer.reloadSettings(). A setting the plugin refuses
+    // (InputError) is rolled back, the last good settings are reloaded, and the error rethrown.
+    void apply(engine::Renderer& renderer);
+
+    // The last frame's pluginStats["shadowmap"]["lights"] (what the plugin really used).
+    void setFrameStats(const nlohmann::json& lights) { stats_ = lights; }
+    const nlohmann::json* frameStats(int index) const;  // null when the plugin said nothing
+
+    // The light's effective settings: built-in defaults <- config <- extras.shadow, with the
+    // polygon offset the plugin reported when it is not explicit.
+    nlohmann::json effective(int index) const;
+    // What --save-settings writes as the light's extras.shadow: the keys it already had
+    // (near_plane, reversed_z, ...), with variant, resolution, depth_format, filter and
+    // dimming always explicit (so the file means the same under any config), and
+    // polygon_offset only when explicit (its default depends on variant and filter).
+    nlohmann::json savedShadow(int index) const;
+
+private:
+    nlohmann::json& shadowOf(int index);  // scene.lights[...].extras["shadow"], created on demand
+
+    engine::Scene& scene_;
+    nlohmann::json defaults_;
+    std::vector<ViewedLight> lights_;
+    std::vector<nlohmann::json> applied_;  // per scene.lights entry: extras last applied
+    bool dirty_ = false;
+    int selected_ = -1;
+    DebugView view_ = DebugView::Shaded;
+    nlohmann::json stats_ = nlohmann::json::array();
+};

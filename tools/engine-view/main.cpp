@@ -1,0 +1,182 @@
+// engine-view: a window on the same engine, config and plugin as engine-render, to choose
+// each light's shadow settings by looking (live variant switching, the seeds' debug views,
+// an on-screen line per light), scriptable (--script) and saving the choice back into the
+// glTF (--save-settings).
+#include "Controls.h"
+#include "DebugViews.h"
+#include "OrbitCamera.h"
+#include "Overlay.h"
+#include "OverlayText.h"
+#include "Presenter.h"
+#include "SaveSettings.h"
+#include "Script.h"
+#include "ViewOptions.h"
+#include "ViewerState.h"
+
+#include "engine/config/EngineConfig.h"
+#include "engine/context/GlContext.h"
+#include "engine/gltf/GltfLoader.h"
+#include "engine/plugin/PluginHost.h"
+#include "engine/render/Renderer.h"
+#include "engine/util/Error.h"
+#include "engine/util/ProcessSetup.h"
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
+#include <cstdio>
+#include <iostream>
+#include <optional>
+
+namespace {
+
+constexpr const char* kShadowPlugin = "shadowmap_plugin";
+
+// The shadow plugin's settings in the config: the defaults a light's extras.shadow overrides.
+nlohmann::json shadowDefaults(const engine::EngineConfig& config) {
+    for (const engine::PluginConfig& plugin : config.plugins)
+        if (plugin.library == kShadowPlugin) return plugin.settings;
+    return nlohmann::json::object();
+}
+
+nlohmann::json lightStatsOf(const engine::FrameResult& frame) {
+    const auto plugin = frame.pluginStats.find("shadowmap");
+    if (plugin == frame.pluginStats.end() || !plugin->contains("lights")) return nlohmann::json::array();
+    return (*plugin)["lights"];
+}
+
+void saveSettings(const ViewOptions& options, const ViewerState& state, const std::string& path) {
+    std::map<int, nlohmann::json> shadows;
+    for (std::size_t i = 0; i < state.lights().size(); ++i)
+        shadows[state.lights()[i].light] = state.savedShadow(static_cast<int>(i));
+    saveSceneSettings(options.scene, path, shadows);
+}
+
+// `context` and `host` live in main(), outside the try block that reports errors: an
+// exception thrown by plugin code must be read before the plugin is unloaded, and the
+// plugin's GL objects must be deleted while the context still exists (host first).
+int run(const ViewOptions& options, std::unique_ptr<engine::GlContext>& context, engine::PluginHost& host) {
+    engine::tuneAllocatorForRendering();
+    const engine::EngineConfig config = engine::loadEngineConfig(options.config);
+    std::optional<Script> script;
+    if (!options.script.empty()) script = Script::load(options.script);  // bad lines fail before a window opens
+    std::vector<std::string> warnings;
+    engine::Scene scene = engine::loadGltf(options.scene, &warnings);
+    for (const std::string& warning : warnings) std::cerr << "warning: " << warning << "\n";
+
+    engine::ContextOptions contextOptions;
+    contextOptions.width = options.width;
+    contextOptions.height = options.height;
+    contextOptions.title = "engine-view: " + options.scene;
+    context = engine::createGlfwContext(contextOptions);
+    // GlContext does not expose its window; GLFW knows it as the current context.
+    GLFWwindow* window = glfwGetCurrentContext();
+    host.loadAll(config);
+    engine::Renderer renderer(config.renderer, host.renderPlugins());
+    renderer.setScene(scene);
+    std::printf("engine-view: %s on %s\n", options.scene.c_str(), context->rendererString().c_str());
+
+    ViewerState state(scene, shadowDefaults(config));
+    OrbitCamera camera(scene, options.scene, options.camera);
+    LoopRequests requests;
+    Controls controls(state, camera, requests);
+    controls.attach(window);
+    DebugViews views(renderer, scene);
+    Presenter presenter;
+    Overlay overlay;
+    OverlayText overlayText;
+    ViewFrame shown;
+    bool exitAfterScreenshot = false;
+
+    // A script's failure names its line; interactively, errors become the status line.
+    const auto report = [&](const engine::InputError& error) {
+        if (script) throw engine::InputError(script->where() + ": " + error.what());
+        std::cerr << "engine-view: " << error.what() << "\n";
+        requests.say(error.what(), true);
+    };
+
+    while (!requests.quit && !context->shouldClose()) {
+        const glm::ivec2 size = context->framebufferSize();
+        if (size.x > 0 && size.y > 0 && requests.redraw) {
+            requests.redraw = false;
+            try {
+                state.apply(renderer);  // the plugin checks the edited settings here
+            } catch (const engine::InputError& error) {
+                report(error);
+            }
+            const int index = state.selected();
+            shown = views.render(state.view(), index >= 0 ? &state.lights()[index] : nullptr,
+                                 index >= 0 ? state.frameStats(index) : nullptr, camera.frameCamera(size.x, size.y));
+            state.setFrameStats(lightStatsOf(shown.frame));
+            overlayText.recordFrame(shown.frame, state);
+            presenter.present(shown.image, size.x, size.y);
+            if (requests.overlay)
+                overlay.draw(overlayText.lines(state, shown.frame, shown.notes, camera.describe(), requests.status,
+                                               requests.statusIsError),
+                             size.x, size.y);
+            if (!requests.screenshot.empty()) {
+                presenter.screenshot(requests.screenshot, size.x, size.y);
+                std::printf("engine-view: screenshot %s (%dx%d, view %s)\n", requests.screenshot.c_str(), size.x,
+                            size.y, viewName(state.view()));
+                requests.screenshot.clear();
+                if (exitAfterScreenshot) requests.quit = true;
+            }
+            context->swapBuffers();
+        }
+        if (requests.save) {
+            requests.save = false;
+            const std::string path = requests.savePath.empty() ? options.saveSettings : requests.savePath;
+            requests.savePath.clear();
+            try {
+                if (path.empty()) throw engine::InputError("S: nowhere to save: start with --save-settings FILE.gltf");
+                saveSettings(options, state, path);
+                std::printf("engine-view: saved the lights' settings to %s\n", path.c_str());
+                requests.say("saved the lights' settings to " + path);
+            } catch (const engine::InputError& error) {
+                report(error);
+            }
+        }
+        if (requests.resizeWidth > 0) {
+            glfwSetWindowSize(window, requests.resizeWidth, requests.resizeHeight);
+            requests.resizeWidth = requests.resizeHeight = 0;
+            requests.redraw = true;
+        }
+        if (requests.quit) break;
+
+        const bool scripted = script && !script->finished();
+        if (scripted || requests.redraw || exitAfterScreenshot) context->pollEvents();
+        else glfwWaitEventsTimeout(0.5);  // idle: nothing changes until an event comes
+        if (scripted) {
+            script->step(controls, state, camera, requests, size.y);
+        } else if (!options.screenshot.empty() && !exitAfterScreenshot) {
+            requests.screenshot = options.screenshot;  // the first frame after the script
+            requests.redraw = exitAfterScreenshot = true;
+        }
+    }
+    return 0;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    std::setvbuf(stdout, nullptr, _IOLBF, 0);  // progress lines show up at once, even piped
+    ViewOptions options;
+    try {
+        options = parseViewOptions(argc, argv);
+    } catch (const std::invalid_argument& error) {
+        std::fprintf(stderr, "engine-view: %s (see --help)\n", error.what());
+        return 1;
+    }
+    if (options.help) {
+        std::fputs(kViewUsage, stdout);
+        return 0;
+    }
+    std::unique_ptr<engine::GlContext> context;  // destroyed after the host (declared first)
+    engine::PluginHost host;
+    try {
+        return run(options, context, host);
+    } catch (const std::exception& error) {
+        std::fprintf(stderr, "engine-view: %s\n", error.what());
+        return 1;
+    }
+}

@@ -1,0 +1,216 @@
+// engine-view without a window: saving settings in place (every other byte kept), the
+// script grammar and its errors, and the per-light edits the keys make.
+#include "JsonSpans.h"
+#include "SaveSettings.h"
+#include "Script.h"
+#include "ViewerState.h"
+
+#include "engine/util/Error.h"
+
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <unistd.h>
+
+namespace {
+
+const char* const kGltf = R"({
+  "asset": {"version": "2.0"},
+  "extensions": {"KHR_lights_punctual": {"lights": [
+    {"name": "a", "type": "point",
+     "extras": {"shadow": {"variant": "standard",
+                           "resolution": 2048}}},
+    {"name": "b", "type": "spot", "spot": {"outerConeAngle": 0.5}},
+    {"name": "c", "type": "directional", "extras": {}},
+    {"name": "d", "type": "point", "extras": {"note": "keep me"}}
+  ]}},
+  "buffers": [{"uri": "data:application/octet-stream;base64,AAAA", "byteLength": 3}]
+}
+)";
+
+nlohmann::json lightsOf(const std::string& text) {
+    return nlohmann::json::parse(text)["extensions"]["KHR_lights_punctual"]["lights"];
+}
+
+std::string readAll(const std::filesystem::path& path) {
+    std::ifstream file(path, std::ios::binary);
+    std::stringstream bytes;
+    bytes << file.rdbuf();
+    return bytes.str();
+}
+
+std::filesystem::path scratchDir() {
+    return std::filesystem::temp_directory_path() / ("engine_view_unit_" + std::to_string(::getpid()));
+}
+
+// Removes the scratch folder when the test program ends.
+struct ScratchCleanup {
+    ~ScratchCleanup() {
+        std::error_code ignored;
+        std::filesystem::remove_all(scratchDir(), ignored);
+    }
+} scratchCleanup;
+
+std::filesystem::path scratch(const std::string& name) {
+    std::filesystem::create_directories(scratchDir() / "other");
+    return scratchDir() / name;
+}
+
+} // namespace
+
+TEST(JsonSpans, RecordsWhereEachValueLies) {
+    const std::string text = R"( {"k\u0065y": [1, "two", {"x": null}], "n": -1.5e3} )";
+    const JsonSpan root = scanJson(text);
+    ASSERT_EQ(root.kind, '{');
+    const JsonSpan* list = root.member("key");  // escaped keys are decoded
+    ASSERT_NE(list, nullptr);
+    ASSERT_EQ(list->items.size(), 3u);
+    EXPECT_EQ(text.substr(list->items[1].begin, list->items[1].end - list->items[1].begin), "\"two\"");
+    EXPECT_EQ(text.substr(root.member("n")->begin, root.member("n")->end - root.member("n")->begin), "-1.5e3");
+    EXPECT_THROW(scanJson("{\"a\": }"), std::invalid_argument);
+}
+
+TEST(SaveSettings, ReplacesOnlyTheShadowObjects) {
+    const nlohmann::json a = {{"variant", "woo"}, {"resolution", 1024}};
+    const nlohmann::json b = {{"variant", "none"}};
+    const nlohmann::json c = {{"dimming", 0.25}};
+    const nlohmann::json d = {{"filter", "nearest"}};
+    const std::string out = replaceLightShadows(kGltf, {{0, a}, {1, b}, {2, c}, {3, d}}, "test.gltf");
+    const nlohmann::json lights = lightsOf(out);
+    EXPECT_EQ(lights[0]["extras"]["shadow"], a);  // replaced
+    EXPECT_EQ(lights[1]["extras"]["shadow"], b);  // extras inserted
+    EXPECT_EQ(lights[2]["extras"]["shadow"], c);  // into an empty extras
+    EXPECT_EQ(lights[3]["extras"]["shadow"], d);  // beside other extras
+    EXPECT_EQ(lights[3]["extras"]["note"], "keep me");
+    // Byte for byte: the text before the first edit and after the last is untouched.
+    const std::string original = kGltf;
+    const std::size_t head = original.find("{\"variant\": \"standard\"");
+    EXPECT_EQ(out.substr(0, head), original.substr(0, head));
+    const std::size_t tail = original.find("\n  ]}}");
+    EXPECT_EQ(out.substr(out.size() - (original.size() - tail)), original.substr(tail));
+}
+
+TEST(SaveSettings, UnknownLightIsAnInputError) {
+    EXPECT_THROW(replaceLightShadows(kGltf, {{7, nlohmann::json::object()}}, "test.gltf"), engine::InputError);
+}
+
+TEST(SaveSettings, ExternalFilesKeepTheScenesFolder) {
+    const auto scene = scratch("external.gltf");
+    std::ofstream(scene) << R"({"asset":{"version":"2.0"},"buffers":[{"uri":"external.bin","byteLength":4}],
+      "extensions":{"KHR_lights_punctual":{"lights":[{"type":"point"}]}}})";
+    const std::map<int, nlohmann::json> shadows = {{0, {{"variant", "woo"}}}};
+    try {
+        saveSceneSettings(scene, scratch("other/saved.gltf"), shadows);
+        FAIL() << "saving away from external.bin must fail";
+    } catch (const engine::InputError& error) {
+        EXPECT_NE(std::string(error.what()).find("external.bin"), std::string::npos) << error.what();
+    }
+    saveSceneSettings(scene, scratch("saved.gltf"), shadows);
+    EXPECT_EQ(lightsOf(readAll(scratch("saved.gltf")))[0]["extras"]["shadow"]["variant"], "woo");
+    EXPECT_THROW(saveSceneSettings(scene, scratch("saved.glb"), shadows), engine::InputError);  // container kept
+}
+
+TEST(SaveSettings, GlbKeepsItsBinaryChunk) {
+    const std::string json = R"({"asset":{"version":"2.0"},"buffers":[{"byteLength":8}],)"
+                             R"("extensions":{"KHR_lights_punctual":{"lights":[{"type":"spot"}]}}})";
+    std::string padded = json;
+    padded.append((4 - padded.size() % 4) % 4, ' ');
+    const std::string bin("\x01\x02\x03\x04\x05\x06\x07\x08", 8);
+    const auto u32 = [](std::uint32_t v) { return std::string(reinterpret_cast<const char*>(&v), 4); };
+    const std::string glb = "glTF" + u32(2) + u32(12 + 8 + padded.size() + 8 + 8) + u32(padded.size()) + "JSON" +
+                            padded + u32(8) + std::string("BIN\0", 4) + bin;
+    const auto scene = scratch("model.glb");
+    std::ofstream(scene, std::ios::binary) << glb;
+    saveSceneSettings(scene, scratch("other/model.glb"), {{0, {{"resolution", 512}}}});
+    const std::string out = readAll(scratch("other/model.glb"));
+    ASSERT_GE(out.size(), 20u);
+    std::uint32_t total = 0, jsonLength = 0;
+    std::memcpy(&total, out.data() + 8, 4);
+    std::memcpy(&jsonLength, out.data() + 12, 4);
+    EXPECT_EQ(total, out.size());
+    EXPECT_EQ(jsonLength % 4, 0u);
+    EXPECT_EQ(lightsOf(out.substr(20, jsonLength))[0]["extras"]["shadow"]["resolution"], 512);
+    EXPECT_EQ(out.substr(20 + jsonLength), glb.substr(20 + padded.size()));  // BIN chunk as it was
+}
+
+TEST(Script, ParsesCommandsAndSkipsComments) {
+    const Script script = Script::parse("# setup\n\nkey V\nset sun polygon_offset [2, 6]\nview truth\nquit\n", "s.txt");
+    EXPECT_EQ(script.size(), 4u);
+}
+
+TEST(Script, ErrorsNameTheFileAndLine) {
+    const auto message = [](const std::string& text) {
+        try {
+            Script::parse(text, "s.txt");
+        } catch (const engine::InputError& error) {
+            return std::string(error.what());
+        }
+        return std::string("no error");
+    };
+    EXPECT_EQ(message("key V\n\nfly away"),
+              "s.txt:3: unknown command \"fly\" (known: camera, frames, key, orbit, overlay, pan, quit, resize, "
+              "save, screenshot, select, set, view, zoom)");
+    EXPECT_EQ(message("frames 0"), "s.txt:1: frames: N must be an integer in [1, 100000]");
+    EXPECT_EQ(message("key F13"), "s.txt:1: key: unknown key \"F13\"");
+    EXPECT_EQ(message("set sun"), "s.txt:1: set: expected 3 or more argument(s), got 1");
+    EXPECT_EQ(message("view up"), "s.txt:1: view: unknown view \"up\" (shaded, light, depth, projected, comparison, "
+                                  "shadow, truth)");
+    EXPECT_EQ(message("overlay maybe"), "s.txt:1: overlay: expected on or off");
+}
+
+namespace {
+
+engine::Scene twoLights() {
+    engine::Scene scene;
+    for (const char* name : {"key", "fill"}) {
+        engine::Light light;
+        light.name = name;
+        light.type = engine::Light::Type::Spot;
+        scene.lights.push_back(light);
+        engine::Node node;
+        node.name = name;
+        node.light = static_cast<int>(scene.lights.size()) - 1;
+        scene.roots.push_back(static_cast<int>(scene.nodes.size()));
+        scene.nodes.push_back(node);
+    }
+    scene.lights[1].extras = {{"shadow", {{"near_plane", 0.5}, {"resolution", 4096}}}};
+    scene.updateWorldTransforms();
+    return scene;
+}
+
+} // namespace
+
+TEST(ViewerState, KeysCycleTheSelectedLightsSettings) {
+    engine::Scene scene = twoLights();
+    ViewerState state(scene, {{"variant", "standard"}, {"resolution", 2048}});
+    ASSERT_EQ(state.lights().size(), 2u);
+    EXPECT_EQ(state.lights()[0].name, "key");
+    state.cycleVariant();
+    state.cycleVariant();
+    EXPECT_EQ(scene.lights[0].extras["shadow"]["variant"], "backface");
+    state.cycleResolution();  // 2048 (config) -> 4096
+    EXPECT_EQ(scene.lights[0].extras["shadow"]["resolution"], 4096);
+    state.selectNext();
+    state.cycleResolution();  // 4096 (extras) -> 512
+    EXPECT_EQ(scene.lights[1].extras["shadow"]["resolution"], 512);
+    for (int i = 0; i < 3; ++i) state.addDimming(0.05);  // 0.4 -> 0.55, rounded to 0.01
+    EXPECT_EQ(scene.lights[1].extras["shadow"]["dimming"], 0.55);
+    state.toggleFilter();
+    state.cycleDepthFormat();  // d24 -> d32f
+    const nlohmann::json saved = state.savedShadow(1);
+    EXPECT_EQ(saved, nlohmann::json({{"variant", "standard"}, {"resolution", 512}, {"depth_format", "d32f"},
+                                     {"filter", "nearest"}, {"dimming", 0.55}, {"near_plane", 0.5}}));
+    EXPECT_TRUE(state.select("key"));
+    EXPECT_FALSE(state.select("moon"));
+    EXPECT_EQ(state.selected(), 0);
+}
+
+TEST(ViewerState, ViewsHaveNames) {
+    for (int i = 0; i < kDebugViewCount; ++i)
+        EXPECT_EQ(parseView(viewName(static_cast<DebugView>(i))), static_cast<DebugView>(i));
+    EXPECT_FALSE(parseView("sideways"));
+}

@@ -1,0 +1,31 @@
+#!/usr/bin/env bash
+# A bad script fails with exit 1 and one line naming the file and the line: an unknown
+# command (found before the window opens), and a light or setting that does not exist
+# (found when the command runs).
+source "$(dirname "$0")/common.sh"
+
+expect_error() {  # SCRIPT_TEXT EXPECTED_MESSAGE_PART...
+  local text=$1
+  shift
+  printf '%s\n' "$text" > bad.txt
+  set +e
+  run_view bad.txt > out.txt 2> err.txt
+  local status=$?
+  set -e
+  for part in "$@"; do
+    if [[ $status -ne 1 ]] || [[ $(wc -l < err.txt) -ne 1 ]] || ! grep -qF -- "$part" err.txt; then
+      echo "FAIL: script <<$text>> gave exit $status and stderr <<$(cat err.txt)>>," \
+           "expected exit 1 and one line with \"$part\"" >&2
+      exit 1
+    fi
+  done
+  echo "ok: $(cat err.txt)"
+}
+
+expect_error $'frames 1\n# a comment\njump 3' 'bad.txt:3: unknown command "jump"'
+expect_error $'frames 2 3' 'bad.txt:1: frames: expected 1 argument(s), got 2'
+expect_error $'view sideways' 'bad.txt:1: view: unknown view "sideways"'
+expect_error $'frames 1\nselect moon' 'bad.txt:2: select: no light "moon" in the scene'
+# The plugin refuses these when they are applied (the next frame): still the `set` line.
+expect_error $'set sun variant foo\nframes 1' 'engine-view: bad.txt:1: ' 'sun' '"foo"'
+expect_error $'set sun colour 3' 'engine-view: bad.txt:1: ' 'sun' 'colour'
