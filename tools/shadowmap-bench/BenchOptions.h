@@ -1,0 +1,32 @@
+#pragma once
+// shadowmap-bench's command line: which scenes, which settings to sweep, where to write.
+// Parsing checks every value (unknown variant, format or filter, bad number) and throws
+// std::invalid_argument with one line naming the flag and the value.
+#include "engine/scene/Scene.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+struct BenchOptions {
+    std::string config;               // default: the source tree's content/engine.json
+    std::vector<std::string> scenes;  // default: kDefaultScenes (those that exist)
+    bool defaultScenes = true;        // no --scene given: a missing optional model is skipped
+    std::string camera;               // empty: the scene's first camera, else a framing one
+    int width = 0, height = 0;        // defaults below
+    std::vector<std::string> variants;
+    std::vector<int> resolutions;
+    std::vector<std::string> depthFormats;
+    std::vector<std::string> filters;
+    int frames = 0;
+    // Added to every scene that has no light (e.g. Debian's 2CylinderEngine.glb);
+    // nullopt: --key-light none, such scenes are reported as an error.
+    std::optional<engine::Light::Type> keyLight = engine::Light::Type::Spot;
+    std::string out;
+    bool help = false;
+};
+
+extern const char* const kBenchUsage;
+
+// Throws std::invalid_argument with one line naming the flag and the reason.
+BenchOptions parseBenchOptions(int argc, char** argv);

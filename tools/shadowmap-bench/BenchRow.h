@@ -1,0 +1,26 @@
+#pragma once
+// One measured point of the sweep: one light of one scene under one shadow setting. The
+// row of results.csv, and what the summary and the plot are made of.
+#include <string>
+
+struct ShadowSetting {
+    std::string variant;  // standard | woo | backface
+    int resolution = 0;   // texels per side
+    std::string depthFormat;  // d16 | d24 | d32f
+    std::string filter;       // nearest | pcf
+
+    // "woo 2048 d24 pcf": how the progress line, the summary and the plot name it.
+    std::string label() const {
+        return variant + " " + std::to_string(resolution) + " " + depthFormat + " " + filter;
+    }
+};
+
+struct BenchRow {
+    std::string scene;  // the scene file's stem, e.g. "showcase"
+    std::string light;
+    ShadowSetting setting;
+    double shadowMs = 0.0;  // median wall time of the light's shadow passes
+    double frameMs = 0.0;   // median wall time of the whole frame (all lights)
+    // Percent of the evaluation set (DESIGN.md "Error metrics").
+    double acne = 0.0, leak = 0.0, error = 0.0, errorNoEdge = 0.0;
+};

@@ -1,0 +1,35 @@
+#include "ResultsCsv.h"
+
+#include <cstdio>
+
+namespace {
+
+// RFC 4180: a field with a comma, quote or line break is quoted, quotes doubled. Scene and
+// light names come from users' files and may hold any of them.
+std::string csvField(const std::string& text) {
+    if (text.find_first_of(",\"\r\n") == std::string::npos) return text;
+    std::string quoted = "\"";
+    for (char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+    return quoted + "\"";
+}
+
+std::string number(double value, int decimals) {
+    char text[64];
+    std::snprintf(text, sizeof text, "%.*f", decimals, value);
+    return text;
+}
+
+} // namespace
+
+std::string resultsCsv(const std::vector<BenchRow>& rows) {
+    std::string csv = "scene,light,variant,resolution,depth_format,filter,shadow_ms,frame_ms,acne,leak,error,error_noedge\n";
+    for (const BenchRow& row : rows) {
+        // Microseconds for times, 1e-4 % for errors (one pixel of a 1280x720 view is 1.1e-4 %).
+        csv += csvField(row.scene) + "," + csvField(row.light) + "," + row.setting.variant + "," +
+               std::to_string(row.setting.resolution) + "," + row.setting.depthFormat + "," +
+               row.setting.filter + "," + number(row.shadowMs, 3) + "," + number(row.frameMs, 3) + "," +
+               number(row.acne, 4) + "," + number(row.leak, 4) + "," + number(row.error, 4) + "," +
+               number(row.errorNoEdge, 4) + "\n";
+    }
+    return csv;
+}

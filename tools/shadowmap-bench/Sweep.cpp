@@ -1,0 +1,130 @@
+#include "Sweep.h"
+
+#include "ShadowEvaluation.h"
+
+#include "engine/gltf/GltfLoader.h"
+#include "engine/render/CameraSetup.h"
+#include "engine/render/Renderer.h"
+#include "engine/scene/SceneEdit.h"
+#include "engine/util/Error.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <iostream>
+
+namespace {
+
+// The named camera, else the scene's first, else one framing the scene (as engine-render).
+engine::FrameCamera chooseCamera(const engine::Scene& scene, const std::string& path,
+                                 const BenchOptions& options) {
+    int instance = scene.cameraInstances.empty() ? -1 : 0;
+    if (!options.camera.empty()) {
+        instance = scene.findCameraInstance(options.camera);
+        if (instance < 0)
+            engine::throwInputError(path, "camera \"" + options.camera + "\"", "no such camera in the scene");
+    }
+    return instance < 0 ? engine::framingCamera(scene, options.width, options.height)
+                        : engine::cameraFromScene(scene, instance, options.width, options.height);
+}
+
+// Writes the setting into every light's extras.shadow, which the plugin's prepareScene
+// reads over its config defaults; other keys the scene sets (polygon_offset, dimming) stay.
+// A malformed extras.shadow is left alone for the plugin to report.
+void applyToEveryLight(engine::Scene& scene, const ShadowSetting& setting) {
+    for (engine::Light& light : scene.lights) {
+        if (light.extras.is_null()) light.extras = nlohmann::json::object();
+        if (!light.extras.is_object()) continue;
+        nlohmann::json& shadow = light.extras["shadow"];
+        if (!shadow.is_null() && !shadow.is_object()) continue;
+        shadow["variant"] = setting.variant;
+        shadow["resolution"] = setting.resolution;
+        shadow["depth_format"] = setting.depthFormat;
+        shadow["filter"] = setting.filter;
+    }
+}
+
+BenchRow makeRow(const BenchScene& scene, const ShadowSetting& setting, double frameMs,
+                 const evaluation::LightResult& light) {
+    BenchRow row;
+    row.scene = scene.name;
+    row.light = light.light;
+    row.setting = setting;
+    row.shadowMs = light.shadowMs;
+    row.frameMs = frameMs;
+    row.acne = 100.0 * light.errors.acne;
+    row.leak = 100.0 * light.errors.leak;
+    row.error = 100.0 * light.errors.error;
+    row.errorNoEdge = 100.0 * light.errors.errorNoEdge;
+    return row;
+}
+
+} // namespace
+
+std::vector<BenchScene> loadBenchScenes(const BenchOptions& options) {
+    std::vector<BenchScene> scenes;
+    for (const std::string& path : options.scenes) {
+        if (options.defaultScenes && !std::filesystem::exists(path)) {
+            std::cerr << "shadowmap-bench: skipping " << path << ": not found (Debian package assimp-testmodels)\n";
+            continue;
+        }
+        BenchScene bench;
+        bench.name = std::filesystem::path(path).stem().string();
+        // Two files with one stem (a/scene.gltf, b/scene.gltf) must stay apart in the results.
+        for (const BenchScene& other : scenes)
+            if (other.name == bench.name) bench.name += '_' + std::to_string(scenes.size() + 1);
+        bench.path = path;
+        std::vector<std::string> warnings;
+        bench.scene = engine::loadGltf(path, &warnings);
+        for (const std::string& warning : warnings) std::cerr << "warning: " << warning << "\n";
+        if (bench.scene.lightInstances.empty()) {
+            if (!options.keyLight)
+                engine::throwInputError(path, "", "the scene has no light (add one with --key-light)");
+            engine::addKeyLight(bench.scene, *options.keyLight);
+        }
+        if (bench.scene.meshInstances.empty()) engine::throwInputError(path, "", "the scene has no mesh to shadow");
+        bench.camera = chooseCamera(bench.scene, path, options);
+        bench.shadowedLights = std::min<int>(bench.scene.lightInstances.size(), engine::kMaxLights);
+        scenes.push_back(std::move(bench));
+    }
+    if (scenes.empty()) throw engine::InputError("no scene to sweep (give one with --scene)");
+    return scenes;
+}
+
+std::vector<ShadowSetting> sweepSettings(const BenchOptions& options) {
+    std::vector<ShadowSetting> settings;
+    for (const std::string& variant : options.variants)
+        for (int resolution : options.resolutions)
+            for (const std::string& format : options.depthFormats)
+                for (const std::string& filter : options.filters)
+                    settings.push_back({variant, resolution, format, filter});
+    return settings;
+}
+
+std::vector<BenchRow> runSweep(std::vector<BenchScene>& scenes, const std::vector<ShadowSetting>& settings,
+                               const engine::RendererConfig& rendererConfig,
+                               const std::vector<engine::RenderPlugin*>& plugins, int frames,
+                               const RowCallback& onRow) {
+    int total = 0;
+    for (const BenchScene& scene : scenes) total += scene.shadowedLights * static_cast<int>(settings.size());
+
+    engine::Renderer renderer(rendererConfig, plugins);
+    engine::FrameRequest warmup;
+    std::vector<BenchRow> rows;
+    for (BenchScene& scene : scenes) {
+        // The evaluator builds the scene's Embree BVH once; settings change no geometry.
+        evaluation::ShadowEvaluator evaluator(renderer, scene.scene);
+        for (const ShadowSetting& setting : settings) {
+            applyToEveryLight(scene.scene, setting);
+            renderer.setScene(scene.scene);  // the plugin's prepareScene re-reads the settings
+            // Untimed: llvmpipe compiles shaders at their first draw, and new maps are allocated.
+            warmup.camera = scene.camera;
+            renderer.renderFrame(warmup);
+            const evaluation::ViewResult view = evaluator.evaluate(scene.camera, frames);
+            for (const evaluation::LightResult& light : view.lights) {
+                rows.push_back(makeRow(scene, setting, view.frameMs, light));
+                onRow(rows.back(), static_cast<int>(rows.size()), total);
+            }
+        }
+    }
+    return rows;
+}

@@ -1,0 +1,42 @@
+#pragma once
+// The sweep itself: every scene under every shadow setting, each setting applied to all of
+// the scene's lights at once (each light's passes are timed on their own, so one render
+// measures every light), timed and compared with ray-traced truth (tools/evaluation).
+#include "BenchOptions.h"
+#include "BenchRow.h"
+
+#include "engine/plugin/RenderPlugin.h"
+#include "engine/config/EngineConfig.h"
+#include "engine/render/Frame.h"
+#include "engine/scene/Scene.h"
+
+#include <functional>
+#include <string>
+#include <vector>
+
+struct BenchScene {
+    std::string name;  // the file's stem, the "scene" column
+    std::string path;
+    engine::Scene scene;
+    engine::FrameCamera camera;
+    int shadowedLights = 0;  // lights the lit pass handles (the first kMaxLights)
+};
+
+// Loads and checks every scene before anything is rendered, so a bad file fails at once,
+// not minutes into the sweep. Adds the key light to scenes without one. With the default
+// scene list a missing file (the optional Debian model) is skipped with a note on stderr.
+// Throws engine::InputError naming the file and the reason.
+std::vector<BenchScene> loadBenchScenes(const BenchOptions& options);
+
+// The cartesian product of the listed variants, resolutions, formats and filters.
+std::vector<ShadowSetting> sweepSettings(const BenchOptions& options);
+
+// Called after each row is measured: `index` counts from 1 to `total`.
+using RowCallback = std::function<void(const BenchRow& row, int index, int total)>;
+
+// Needs a current GL context. `plugins` must include the shadow plugin loaded with map
+// caching off (otherwise a map renders once and later frames time nothing).
+std::vector<BenchRow> runSweep(std::vector<BenchScene>& scenes, const std::vector<ShadowSetting>& settings,
+                               const engine::RendererConfig& rendererConfig,
+                               const std::vector<engine::RenderPlugin*>& plugins, int frames,
+                               const RowCallback& onRow);

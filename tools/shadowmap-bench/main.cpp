@@ -1,0 +1,121 @@
+// shadowmap-bench: run time against error of the shadow plugin's settings, per light,
+// over one or more scenes (issue 5). Writes results.csv, summary.md and a time/error plot.
+#include "BenchOptions.h"
+#include "GnuplotRunner.h"
+#include "ResultsCsv.h"
+#include "SummaryReport.h"
+#include "Sweep.h"
+#include "TimeErrorPlot.h"
+
+#include "engine/config/EngineConfig.h"
+#include "engine/context/GlContext.h"
+#include "engine/plugin/PluginHost.h"
+#include "engine/util/Error.h"
+#include "engine/util/OutputFile.h"
+#include "engine/util/ProcessSetup.h"
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <thread>
+
+namespace {
+
+constexpr const char* kShadowPlugin = "shadowmap_plugin";
+
+// Cached maps render once and later frames would time nothing: every frame must re-render.
+void disableMapCaching(engine::EngineConfig& config, const std::string& configPath) {
+    for (engine::PluginConfig& plugin : config.plugins)
+        if (plugin.library == kShadowPlugin) {
+            plugin.settings["cache_maps"] = false;
+            return;
+        }
+    engine::throwInputError(configPath, "plugins", "loads no " + std::string(kShadowPlugin) + ": nothing to measure");
+}
+
+std::string cpuModel() {
+    std::ifstream cpuinfo("/proc/cpuinfo");
+    for (std::string line; std::getline(cpuinfo, line);)
+        if (line.rfind("model name", 0) == 0 && line.find(':') != std::string::npos)
+            return line.substr(line.find(':') + 2);
+    return "unknown CPU";
+}
+
+void printProgress(const BenchRow& row, int index, int total) {
+    std::fprintf(stderr, "[%d/%d] %s %s %s: %.2f ms, error %.3f%%\n", index, total, row.scene.c_str(),
+                 row.light.c_str(), row.setting.label().c_str(), row.shadowMs, row.error);
+}
+
+void writePlot(const std::filesystem::path& out, const std::vector<BenchRow>& rows) {
+    const std::filesystem::path script = out / "time_vs_error.gp";
+    engine::writeFileAtomically(script, timeErrorPlotScript(rows));
+    const std::string temporary = ".time_vs_error.png.tmp";
+    const std::string failure = runGnuplot(script, temporary);
+    if (!failure.empty()) {
+        std::filesystem::remove(out / temporary);
+        std::fprintf(stderr, "shadowmap-bench: no plot: %s (wrote %s)\n", failure.c_str(), script.c_str());
+        return;
+    }
+    std::filesystem::rename(out / temporary, out / "time_vs_error.png");
+}
+
+// `context` and `host` live in main(), outside the try block that reports errors: an
+// exception thrown by plugin code must be read before the plugin is unloaded, and the
+// plugin's GL objects must be deleted while the context still exists (host first).
+int run(const BenchOptions& options, std::unique_ptr<engine::GlContext>& context,
+        engine::PluginHost& host) {
+    const auto start = std::chrono::steady_clock::now();
+    engine::tuneAllocatorForRendering();
+    engine::EngineConfig config = engine::loadEngineConfig(options.config);
+    disableMapCaching(config, options.config);
+    // Scenes and the output folder are checked before the first (slow) render.
+    std::vector<BenchScene> scenes = loadBenchScenes(options);
+    const std::vector<ShadowSetting> settings = sweepSettings(options);
+    const std::filesystem::path out = options.out;
+    std::error_code error;
+    std::filesystem::create_directories(out, error);
+    if (error) engine::throwInputError(options.out, "", "cannot create the output folder: " + error.message());
+
+    context = engine::createEglContext();
+    context->makeCurrent();
+    host.loadAll(config);
+    const std::vector<BenchRow> rows =
+        runSweep(scenes, settings, config.renderer, host.renderPlugins(), options.frames, printProgress);
+
+    SweepDescription sweep{options.width, options.height, options.frames, context->rendererString(),
+                           context->versionString(), cpuModel(),
+                           static_cast<int>(std::thread::hardware_concurrency()),
+                           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()};
+    engine::writeFileAtomically(out / "results.csv", resultsCsv(rows));
+    engine::writeFileAtomically(out / "summary.md", summaryMarkdown(rows, sweep));
+    writePlot(out, rows);
+    std::fprintf(stderr, "shadowmap-bench: %zu rows in %.0f s; wrote %s/results.csv, summary.md, time_vs_error.gp/.png\n",
+                 rows.size(), sweep.seconds, options.out.c_str());
+    return 0;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    BenchOptions options;
+    try {
+        options = parseBenchOptions(argc, argv);
+    } catch (const std::invalid_argument& error) {
+        std::fprintf(stderr, "shadowmap-bench: %s (see --help)\n", error.what());
+        return 1;
+    }
+    if (options.help) {
+        std::fputs(kBenchUsage, stdout);
+        return 0;
+    }
+    std::unique_ptr<engine::GlContext> context;
+    engine::PluginHost host;
+    try {
+        return run(options, context, host);
+    } catch (const std::exception& error) {
+        std::fprintf(stderr, "shadowmap-bench: %s\n", error.what());
+        return 1;
+    }
+}

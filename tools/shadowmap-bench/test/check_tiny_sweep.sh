@@ -1,0 +1,28 @@
+#!/usr/bin/env bash
+# Runs shadowmap-bench on the showcase with one setting at 64x48 and checks results.csv
+# (the exact header, one row per light, numbers in range) and summary.md.
+# Usage: check_tiny_sweep.sh BENCH_BINARY CONTENT_DIR
+set -euo pipefail
+bench=$1 content=$2
+out=$(mktemp -d)
+trap 'rm -rf "$out"' EXIT
+
+"$bench" --config "$content/engine.json" --scene "$content/scenes/showcase.gltf" \
+  --variants standard --resolutions 256 --depth-formats d24 --filters pcf \
+  --width 64 --height 48 --frames 1 --out "$out"
+
+csv=$out/results.csv
+header='scene,light,variant,resolution,depth_format,filter,shadow_ms,frame_ms,acne,leak,error,error_noedge'
+[[ "$(head -n 1 "$csv")" == "$header" ]] || { echo "bad header: $(head -n 1 "$csv")"; exit 1; }
+rows=$(tail -n +2 "$csv" | wc -l)
+[[ $rows -eq 3 ]] || { echo "expected 3 rows (the showcase's lights), got $rows"; exit 1; }
+# Times >= 0; acne, leak, error, error_noedge are percentages in [0, 100]; all plain numbers.
+awk -F, 'NR > 1 {
+  for (i = 7; i <= 12; ++i) if ($i !~ /^[0-9]+(\.[0-9]+)?$/) { print "not a number: " $i " in " $0; bad = 1 }
+  if ($1 != "showcase" || $3 != "standard" || $4 != 256 || $5 != "d24" || $6 != "pcf") { print "bad setting: " $0; bad = 1 }
+  if (!($7 >= 0 && $8 >= 0)) { print "bad time: " $0; bad = 1 }
+  for (i = 9; i <= 12; ++i) if (!($i >= 0 && $i <= 100)) { print "error out of [0,100]: " $0; bad = 1 }
+} END { exit bad }' "$csv"
+[[ -s $out/summary.md ]] || { echo "summary.md missing or empty"; exit 1; }
+[[ -s $out/time_vs_error.gp ]] || { echo "time_vs_error.gp missing or empty"; exit 1; }
+echo "ok: $rows rows"
