@@ -30,19 +30,6 @@ double median(std::vector<double> values) {
     return values.size() % 2 ? values[mid] : 0.5 * (values[mid - 1] + values[mid]);
 }
 
-engine::FrameCamera chooseCamera(const engine::Scene& scene, const RenderOptions& options) {
-    if (!options.camera.empty()) {
-        const int instance = scene.findCameraInstance(options.camera);
-        if (instance < 0)
-            engine::throwInputError(options.scene, "camera \"" + options.camera + "\"",
-                                    "no such camera in the scene");
-        return engine::cameraFromScene(scene, instance, options.width, options.height);
-    }
-    if (!scene.cameraInstances.empty())
-        return engine::cameraFromScene(scene, 0, options.width, options.height);
-    return engine::framingCamera(scene, options.width, options.height);
-}
-
 int lightSlot(const engine::Scene& scene, const std::string& sceneFile, const std::string& name) {
     const int slot = scene.findLightInstance(name);
     if (slot < 0) engine::throwInputError(sceneFile, "light \"" + name + "\"", "no such light in the scene");
@@ -178,7 +165,7 @@ int run(const RenderOptions& options, std::unique_ptr<engine::GlContext>& contex
     renderer.setScene(scene);
 
     engine::FrameRequest request;
-    request.camera = chooseCamera(scene, options);
+    request.camera = engine::chooseCamera(scene, options.camera, options.width, options.height, options.scene);
     request.timing = true;
     for (const auto& [light, file] : options.shadowMasks)
         request.shadowMaskSlots.push_back(lightSlot(scene, options.scene, light));

@@ -15,18 +15,6 @@
 namespace {
 
 // The named camera, else the scene's first, else one framing the scene (as engine-render).
-engine::FrameCamera chooseCamera(const engine::Scene& scene, const std::string& path,
-                                 const BenchOptions& options) {
-    int instance = scene.cameraInstances.empty() ? -1 : 0;
-    if (!options.camera.empty()) {
-        instance = scene.findCameraInstance(options.camera);
-        if (instance < 0)
-            engine::throwInputError(path, "camera \"" + options.camera + "\"", "no such camera in the scene");
-    }
-    return instance < 0 ? engine::framingCamera(scene, options.width, options.height)
-                        : engine::cameraFromScene(scene, instance, options.width, options.height);
-}
-
 // Writes the setting into every light's extras.shadow, which the plugin's prepareScene
 // reads over its config defaults; other keys the scene sets (polygon_offset, dimming) stay.
 // A malformed extras.shadow is left alone for the plugin to report.
@@ -82,7 +70,7 @@ std::vector<BenchScene> loadBenchScenes(const BenchOptions& options) {
             engine::addKeyLight(bench.scene, *options.keyLight);
         }
         if (bench.scene.meshInstances.empty()) engine::throwInputError(path, "", "the scene has no mesh to shadow");
-        bench.camera = chooseCamera(bench.scene, path, options);
+        bench.camera = engine::chooseCamera(bench.scene, options.camera, options.width, options.height, path);
         bench.shadowedLights = std::min<int>(bench.scene.lightInstances.size(), engine::kMaxLights);
         scenes.push_back(std::move(bench));
     }

@@ -1,5 +1,7 @@
 #include "engine/render/CameraSetup.h"
 
+#include "engine/util/Error.h"
+
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
@@ -47,6 +49,17 @@ FrameCamera cameraFromScene(const Scene& scene, int instance, int width, int hei
                                       camera.znear, camera.zfar);
     }
     return frame;
+}
+
+FrameCamera chooseCamera(const Scene& scene, const std::string& name, int width, int height,
+                         const std::string& sceneFile) {
+    int instance = scene.cameraInstances.empty() ? -1 : 0;
+    if (!name.empty()) {
+        instance = scene.findCameraInstance(name);
+        if (instance < 0) throwInputError(sceneFile, "camera \"" + name + "\"", "no such camera in the scene");
+    }
+    return instance < 0 ? framingCamera(scene, width, height)
+                        : cameraFromScene(scene, instance, width, height);
 }
 
 FrameCamera framingCamera(const Scene& scene, int width, int height) {
