@@ -1,5 +1,6 @@
 // engine-render: renders one glTF scene headless (EGL surfaceless) and writes a PNG,
 // optionally per-light shadow masks, per-pass statistics and the compiled frame graph.
+#include "ToolMain.h"
 #include "DepthImage.h"
 #include "RenderOptions.h"
 
@@ -241,23 +242,8 @@ int run(const RenderOptions& options, std::unique_ptr<engine::GlContext>& contex
 } // namespace
 
 int main(int argc, char** argv) {
-    RenderOptions options;
-    try {
-        options = parseRenderOptions(argc, argv);
-    } catch (const std::invalid_argument& error) {
-        std::fprintf(stderr, "engine-render: %s (see --help)\n", error.what());
-        return 1;
-    }
-    if (options.help) {
-        std::fputs(kRenderUsage, stdout);
-        return 0;
-    }
-    std::unique_ptr<engine::GlContext> context;  // destroyed after the host (declared first)
-    engine::PluginHost host;
-    try {
-        return run(options, context, host);
-    } catch (const std::exception& error) {
-        std::fprintf(stderr, "engine-render: %s\n", error.what());
-        return 1;
-    }
+    return tools::toolMain("engine-render", kRenderUsage, argc, argv, parseRenderOptions,
+                           [](const auto& options, tools::ToolSession& session) {
+                               return run(options, session.context, session.host);
+                           });
 }

@@ -2,6 +2,7 @@
 // each light's shadow settings by looking (live variant switching, the seeds' debug views,
 // an on-screen line per light), scriptable (--script) and saving the choice back into the
 // glTF (--save-settings).
+#include "ToolMain.h"
 #include "Controls.h"
 #include "DebugViews.h"
 #include "OrbitCamera.h"
@@ -160,23 +161,8 @@ int run(const ViewOptions& options, std::unique_ptr<engine::GlContext>& context,
 
 int main(int argc, char** argv) {
     std::setvbuf(stdout, nullptr, _IOLBF, 0);  // progress lines show up at once, even piped
-    ViewOptions options;
-    try {
-        options = parseViewOptions(argc, argv);
-    } catch (const std::invalid_argument& error) {
-        std::fprintf(stderr, "engine-view: %s (see --help)\n", error.what());
-        return 1;
-    }
-    if (options.help) {
-        std::fputs(kViewUsage, stdout);
-        return 0;
-    }
-    std::unique_ptr<engine::GlContext> context;  // destroyed after the host (declared first)
-    engine::PluginHost host;
-    try {
-        return run(options, context, host);
-    } catch (const std::exception& error) {
-        std::fprintf(stderr, "engine-view: %s\n", error.what());
-        return 1;
-    }
+    return tools::toolMain("engine-view", kViewUsage, argc, argv, parseViewOptions,
+                           [](const auto& options, tools::ToolSession& session) {
+                               return run(options, session.context, session.host);
+                           });
 }

@@ -1,5 +1,6 @@
 // shadowmap-bench: run time against error of the shadow plugin's settings, per light,
 // over one or more scenes (issue 5). Writes results.csv, summary.md and a time/error plot.
+#include "ToolMain.h"
 #include "BenchOptions.h"
 #include "GnuplotRunner.h"
 #include "ResultsCsv.h"
@@ -99,23 +100,8 @@ int run(const BenchOptions& options, std::unique_ptr<engine::GlContext>& context
 } // namespace
 
 int main(int argc, char** argv) {
-    BenchOptions options;
-    try {
-        options = parseBenchOptions(argc, argv);
-    } catch (const std::invalid_argument& error) {
-        std::fprintf(stderr, "shadowmap-bench: %s (see --help)\n", error.what());
-        return 1;
-    }
-    if (options.help) {
-        std::fputs(kBenchUsage, stdout);
-        return 0;
-    }
-    std::unique_ptr<engine::GlContext> context;
-    engine::PluginHost host;
-    try {
-        return run(options, context, host);
-    } catch (const std::exception& error) {
-        std::fprintf(stderr, "shadowmap-bench: %s\n", error.what());
-        return 1;
-    }
+    return tools::toolMain("shadowmap-bench", kBenchUsage, argc, argv, parseBenchOptions,
+                           [](const auto& options, tools::ToolSession& session) {
+                               return run(options, session.context, session.host);
+                           });
 }

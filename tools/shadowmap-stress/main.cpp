@@ -5,6 +5,7 @@
 // plot per sweep and a summary with a pass/fail table (Report.h).
 //
 // Exit status: 0 every bound holds, 2 some bound failed, 1 bad input or an error.
+#include "ToolMain.h"
 #include "Report.h"
 #include "StressScenes.h"
 #include "Sweeps.h"
@@ -364,26 +365,8 @@ int run(const Options& options, std::unique_ptr<engine::GlContext>& context, eng
 } // namespace
 
 int main(int argc, char** argv) {
-    Options options;
-    try {
-        options = parseOptions(argc, argv);
-    } catch (const std::invalid_argument& error) {
-        std::fprintf(stderr, "shadowmap-stress: %s (see --help)\n", error.what());
-        return 1;
-    }
-    if (options.help) {
-        std::fputs(kUsage, stdout);
-        return 0;
-    }
-    // Outside the try: an exception thrown by plugin code must be read before the plugin is
-    // unloaded. The context is declared first so it outlives the plugins: destroying them
-    // deletes their GL objects, which needs it current.
-    std::unique_ptr<engine::GlContext> context;
-    engine::PluginHost host;
-    try {
-        return run(options, context, host);
-    } catch (const std::exception& error) {
-        std::fprintf(stderr, "shadowmap-stress: %s\n", error.what());
-        return 1;
-    }
+    return tools::toolMain("shadowmap-stress", kUsage, argc, argv, parseOptions,
+                           [](const auto& options, tools::ToolSession& session) {
+                               return run(options, session.context, session.host);
+                           });
 }
