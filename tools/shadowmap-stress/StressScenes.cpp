@@ -1,5 +1,7 @@
 #include "StressScenes.h"
 
+#include "engine/scene/Shapes.h"
+
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
@@ -39,31 +41,6 @@ glm::dmat4 placeLooking(const glm::dvec3& position, const glm::dvec3& target) {
     return glm::inverse(glm::lookAt(position, target, up));
 }
 
-// A closed box of `size` centred on the origin: 24 vertices (flat normals), 12 triangles
-// wound so that the geometric normal points out.
-engine::Primitive boxPrimitive(const glm::dvec3& size) {
-    const glm::vec3 h = glm::vec3(size * 0.5);
-    const glm::vec3 normals[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
-    engine::Primitive primitive;
-    for (const glm::vec3& n : normals) {
-        const glm::vec3 a = std::abs(n.y) > 0.5f ? glm::vec3(0, 0, 1) : glm::vec3(0, 1, 0);
-        const glm::vec3 b = glm::cross(a, n);
-        const auto base = static_cast<std::uint32_t>(primitive.positions.size());
-        for (const glm::vec3& c : {n - b - a, n + b - a, n + b + a, n - b + a}) {
-            primitive.positions.push_back(c * h);
-            primitive.normals.push_back(n);
-        }
-        const glm::vec3 geometric = glm::cross(primitive.positions[base + 1] - primitive.positions[base],
-                                               primitive.positions[base + 2] - primitive.positions[base]);
-        if (glm::dot(geometric, n) > 0.0f)
-            primitive.indices.insert(primitive.indices.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
-        else
-            primitive.indices.insert(primitive.indices.end(), {base, base + 2, base + 1, base, base + 3, base + 2});
-    }
-    primitive.material = 0;
-    for (const glm::vec3& p : primitive.positions) primitive.bounds.extend(glm::dvec3(p));
-    return primitive;
-}
 
 class Builder {
 public:
@@ -90,7 +67,7 @@ public:
     void addBox(const Box& box, bool receivesShadows = true) {
         engine::Mesh mesh;
         mesh.name = box.name;
-        mesh.primitives.push_back(boxPrimitive((box.max - box.min) * scale_));
+        mesh.primitives.push_back(engine::boxPrimitive((box.max - box.min) * scale_));
         const glm::dmat4 place = glm::translate(glm::dmat4(1.0), offset_) * tilt_ *
                                  glm::translate(glm::dmat4(1.0), (box.min + box.max) * 0.5 * scale_);
         if (bake_) {  // world positions rounded to float, as such a file stores them
