@@ -1,0 +1,178 @@
+// libFuzzer target for engine::loadGltf (issue 6). Each input is written into a private
+// scene folder as scene.gltf and as scene.glb and loaded from both (the loader picks the
+// container by GLB magic or by the .glb extension, so both names matter).
+//
+// Expected outcome for bad input: engine::InputError. Findings: any other exception, a
+// crash, an ASan/UBSan report, a leak, a timeout, a huge allocation (run.sh sets the
+// libFuzzer limits), or a loaded Scene that breaks the contract in Scene.h (an index out
+// of range, a primitive that is not a triangle list...).
+#include "engine/gltf/GltfLoader.h"
+#include "engine/util/Error.h"
+
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <exception>
+#include <filesystem>
+#include <string>
+#include <system_error>
+#include <typeinfo>
+#include <vector>
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path gFolder;      // the private scene folder, made once per process
+bool gVerbose = false;  // GLTF_FUZZ_VERBOSE=1: print each load's outcome (for triage)
+
+[[noreturn]] void finding(const std::string& what) {
+    std::fprintf(stderr, "\n==gltf_fuzzer== FINDING: %s\n", what.c_str());
+    std::fflush(stderr);
+    std::abort();  // libFuzzer saves the input as crash-<sha1>
+}
+
+void writeFile(const fs::path& path, const void* data, std::size_t size) {
+    const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+    if (fd < 0) finding("harness: cannot write " + path.string());
+    const auto* bytes = static_cast<const std::uint8_t*>(data);
+    while (size > 0) {
+        const ssize_t written = ::write(fd, bytes, size);
+        if (written <= 0) finding("harness: short write to " + path.string());
+        bytes += written;
+        size -= static_cast<std::size_t>(written);
+    }
+    ::close(fd);
+}
+
+// A 2x2 RGBA PNG, so an image URI 'tex.png' has something real to decode.
+constexpr std::uint8_t kTinyPng[] = {
+    0x89, 0x50, 0x4e, 0x47, 0x0d, 0x0a, 0x1a, 0x0a, 0x00, 0x00, 0x00, 0x0d, 0x49, 0x48, 0x44, 0x52,
+    0x00, 0x00, 0x00, 0x02, 0x00, 0x00, 0x00, 0x02, 0x08, 0x06, 0x00, 0x00, 0x00, 0x72, 0xb6, 0x0d,
+    0x24, 0x00, 0x00, 0x00, 0x10, 0x49, 0x44, 0x41, 0x54, 0x78, 0x9c, 0x63, 0xf8, 0xcf, 0xc0, 0xf0,
+    0x1f, 0x0a, 0x21, 0x14, 0x00, 0x45, 0xcc, 0x07, 0xf9, 0x66, 0xcb, 0xff, 0x39, 0x00, 0x00, 0x00,
+    0x00, 0x49, 0x45, 0x4e, 0x44, 0xae, 0x42, 0x60, 0x82};
+
+// Neighbours a hostile URI may name: real files, and the hazards from the tinygltf notes (a
+// directory, a FIFO, a symlink leading out of the folder).
+void populateFolder() {
+    std::error_code error;
+    for (const auto& entry : fs::directory_iterator(GLTF_FUZZ_SCENES_DIR, error))
+        if (entry.is_regular_file() && entry.path().extension() != ".gltf")
+            fs::copy_file(entry.path(), gFolder / entry.path().filename(), error);
+    writeFile(gFolder / "tex.png", kTinyPng, sizeof kTinyPng);
+    fs::create_directory(gFolder / "dir", error);
+    ::mkfifo((gFolder / "pipe.bin").c_str(), 0644);
+    const fs::path outside = gFolder.parent_path() / (gFolder.filename().string() + "-outside.bin");
+    const std::uint8_t secret[16] = {};
+    writeFile(outside, secret, sizeof secret);
+    fs::create_symlink(outside, gFolder / "link.bin", error);
+}
+
+void removeFolder() {
+    std::error_code error;
+    fs::remove(gFolder.parent_path() / (gFolder.filename().string() + "-outside.bin"), error);
+    fs::remove_all(gFolder, error);
+}
+
+bool inRange(int index, std::size_t size, bool optional) {
+    return (optional && index == -1) || (index >= 0 && static_cast<std::size_t>(index) < size);
+}
+
+// What Scene.h promises the renderer; the loader's validation exists to make these true.
+void checkSceneContract(const engine::Scene& scene) {
+    const std::size_t nodes = scene.nodes.size();
+    for (std::size_t i = 0; i < nodes; ++i) {
+        const engine::Node& node = scene.nodes[i];
+        const std::string name = "nodes[" + std::to_string(i) + "]";
+        if (!inRange(node.mesh, scene.meshes.size(), true)) finding(name + ".mesh out of range");
+        if (!inRange(node.camera, scene.cameras.size(), true)) finding(name + ".camera out of range");
+        if (!inRange(node.light, scene.lights.size(), true)) finding(name + ".light out of range");
+        if (!inRange(node.parent, nodes, true)) finding(name + ".parent out of range");
+        for (int child : node.children)
+            if (!inRange(child, nodes, false) || scene.nodes[child].parent != static_cast<int>(i))
+                finding(name + " has a child that is out of range or has another parent");
+    }
+    for (int root : scene.roots)
+        if (!inRange(root, nodes, false) || scene.nodes[root].parent != -1)
+            finding("root " + std::to_string(root) + " out of range or not a root");
+    for (std::size_t m = 0; m < scene.meshes.size(); ++m) {
+        for (const engine::Primitive& p : scene.meshes[m].primitives) {
+            const std::string name = "meshes[" + std::to_string(m) + "] primitive";
+            if (p.indices.size() % 3 != 0) finding(name + ": indices are not a triangle list");
+            for (std::uint32_t index : p.indices)
+                if (index >= p.positions.size()) finding(name + ": index past the vertex count");
+            if (p.normals.size() != p.positions.size()) finding(name + ": normal count != vertex count");
+            if (!p.texcoords.empty() && p.texcoords.size() != p.positions.size())
+                finding(name + ": texcoord count != vertex count");
+            if (!inRange(p.material, scene.materials.size(), true)) finding(name + ": material out of range");
+            for (const glm::vec3& v : p.positions)
+                if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z))
+                    finding(name + ": position not finite");
+        }
+    }
+    for (const engine::Material& material : scene.materials)
+        if (!inRange(material.baseColorImage, scene.images.size(), true))
+            finding("material '" + material.name + "': baseColorImage out of range");
+    for (const engine::Image& image : scene.images)
+        if (image.width <= 0 || image.height <= 0 ||
+            image.rgba8.size() != static_cast<std::size_t>(image.width) * image.height * 4)
+            finding("image '" + image.name + "': pixel buffer does not match its size");
+    for (const auto& instance : scene.meshInstances)
+        if (!inRange(instance.node, nodes, false) || !inRange(instance.mesh, scene.meshes.size(), false))
+            finding("mesh instance out of range");
+    for (const auto& instance : scene.lightInstances)
+        if (!inRange(instance.node, nodes, false) || !inRange(instance.light, scene.lights.size(), false))
+            finding("light instance out of range");
+    for (const auto& instance : scene.cameraInstances)
+        if (!inRange(instance.node, nodes, false) || !inRange(instance.camera, scene.cameras.size(), false))
+            finding("camera instance out of range");
+}
+
+void loadOne(const fs::path& path) {
+    try {
+        std::vector<std::string> warnings;
+        const engine::Scene scene = engine::loadGltf(path, &warnings);
+        checkSceneContract(scene);
+        if (gVerbose)
+            std::fprintf(stderr, "%s: loaded: %zu nodes, %zu meshes, %zu images, %zu lights, %zu warnings\n",
+                         path.filename().c_str(), scene.nodes.size(), scene.meshes.size(), scene.images.size(),
+                         scene.lights.size(), warnings.size());
+    } catch (const engine::InputError& error) {
+        // The expected outcome for bad input.
+        if (gVerbose) std::fprintf(stderr, "%s: InputError: %s\n", path.filename().c_str(), error.what());
+    } catch (const std::exception& exception) {
+        finding(std::string("exception other than engine::InputError: ") + typeid(exception).name() + ": " +
+                exception.what());
+    } catch (...) {
+        finding("exception of a type not derived from std::exception");
+    }
+}
+
+} // namespace
+
+extern "C" int LLVMFuzzerInitialize(int*, char***) {
+    const char* verbose = std::getenv("GLTF_FUZZ_VERBOSE");
+    gVerbose = verbose && *verbose && *verbose != '0';
+    const char* tmp = std::getenv("TMPDIR");
+    std::string pattern = std::string(tmp && *tmp ? tmp : "/tmp") + "/gltf-fuzz-XXXXXX";
+    if (!::mkdtemp(pattern.data())) finding("harness: mkdtemp failed for " + pattern);
+    gFolder = fs::canonical(pattern);
+    populateFolder();
+    std::atexit(removeFolder);
+    return 0;
+}
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    for (const char* name : {"scene.gltf", "scene.glb"}) {
+        const fs::path path = gFolder / name;
+        writeFile(path, data, size);
+        loadOne(path);
+    }
+    return 0;
+}
