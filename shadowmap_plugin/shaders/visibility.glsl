@@ -1,5 +1,5 @@
 // The shadow plugin's per-light visibility hook, inserted into the engine's lit fragment
-// shader (see engine/render/Frame.h). It returns (shade, dimming) for a light:
+// shader (see engine/render/Frame.h). It returns a light's shade (lightDimming its dimming):
 //   2D maps (spot, directional): (s,t,r,q) = Ee * x_e with the eye planes
 //     Ee = S * P_light * L^-1 * V composed in double on the CPU (EYE_LINEAR texgen with
 //     world-space planes specified under modelview V^-1), and the hardware comparison

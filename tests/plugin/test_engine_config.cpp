@@ -22,7 +22,7 @@ TEST(EngineConfig, ParsesPluginsSettingsAndRenderer) {
     const auto config = engine::parseEngineConfig(
         R"({"plugin_dirs":["plugins"],"plugins":[{"library":"shadowmap_plugin",
             "settings":{"variant":"woo","resolution":1024}}],
-            "renderer":{"ambient":[0.1,0.2,0.3]}})",
+            "renderer":{"ambient":[0.1,0.2,0.3],"shade_cache":false}})",
         "my/engine.json");
     ASSERT_EQ(config.plugins.size(), 1u);
     EXPECT_EQ(config.plugins[0].library, "shadowmap_plugin");
@@ -30,6 +30,8 @@ TEST(EngineConfig, ParsesPluginsSettingsAndRenderer) {
     ASSERT_EQ(config.pluginDirs.size(), 1u);
     EXPECT_EQ(config.pluginDirs[0], std::filesystem::path("my/plugins"));
     EXPECT_FLOAT_EQ(config.renderer.ambient.y, 0.2f);
+    EXPECT_FALSE(config.renderer.shadeCache);
+    EXPECT_TRUE(engine::parseEngineConfig("{}", "my/engine.json").renderer.shadeCache);
 }
 
 TEST(EngineConfig, BadInputNamesFileAndKey) {
@@ -43,5 +45,7 @@ TEST(EngineConfig, BadInputNamesFileAndKey) {
                   .find("plugins[0].settings: must be a JSON object"),
               std::string::npos);
     EXPECT_NE(configError(R"({"renderer":{"ambient":[1,2]}})").find("renderer.ambient"),
+              std::string::npos);
+    EXPECT_NE(configError(R"({"renderer":{"shade_cache":"yes"}})").find("renderer.shade_cache"),
               std::string::npos);
 }

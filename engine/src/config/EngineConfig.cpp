@@ -30,13 +30,15 @@ PluginConfig parsePlugin(const nlohmann::json& entry, const std::string& file,
 }
 
 RendererConfig parseRenderer(const nlohmann::json& node, const std::string& file) {
-    json::requireKnownKeys(node, {"ambient", "clear_color"}, file, "renderer");
+    json::requireKnownKeys(node, {"ambient", "clear_color", "shade_cache"}, file, "renderer");
     RendererConfig renderer;
     if (node.contains("ambient"))
         renderer.ambient = glm::vec3(json::readVec3(node["ambient"], file, "renderer.ambient"));
     if (node.contains("clear_color"))
         renderer.clearColor =
             glm::vec3(json::readVec3(node["clear_color"], file, "renderer.clear_color"));
+    if (node.contains("shade_cache"))
+        renderer.shadeCache = json::readBool(node["shade_cache"], file, "renderer.shade_cache");
     return renderer;
 }
 

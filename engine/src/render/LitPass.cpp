@@ -4,6 +4,7 @@
 #include "engine/render/SceneGpu.h"
 #include "engine/scene/FrustumCull.h"
 #include "engine/scene/Scene.h"
+#include "engine/util/Hasher.h"
 
 #include <glm/gtc/type_ptr.hpp>
 
@@ -20,8 +21,11 @@ namespace {
 
 // Without a plugin every light is fully visible and nothing is dimmed.
 constexpr const char* kNoShadowsGlsl =
-    "vec2 lightVisibility(int lightSlot, vec3 eyePosition, vec3 eyeNormal) {\n"
-    "    return vec2(1.0, 0.0);\n"
+    "float lightVisibility(int lightSlot, vec3 eyePosition, vec3 eyeNormal) {\n"
+    "    return 1.0;\n"
+    "}\n"
+    "float lightDimming(int lightSlot) {\n"
+    "    return 0.0;\n"
     "}\n"
     "vec4 lightDebugColor(int lightSlot, vec3 eyePosition, vec3 eyeNormal) {\n"
     "    return vec4(0.3, 0.3, 0.3, 1.0);\n"
@@ -34,6 +38,32 @@ struct LightData {
     glm::vec4 radiance;
     glm::vec4 cone;
 };
+
+// What every pixel's shade depends on besides the hook's per-light inputs: the camera and
+// target size, and every surface the lit pass may draw (which mesh, where, whether it
+// receives shadows) with what decides its coverage (alpha mode, cutoff and base alpha,
+// sidedness). The scene generation covers what only changes with a new scene (meshes,
+// textures).
+std::uint64_t shadeViewKey(const Frame& frame, std::uint64_t sceneGeneration) {
+    Hasher hasher;
+    hasher.add(sceneGeneration);
+    hasher.add(frame.camera().eyeToWorld);
+    hasher.add(frame.camera().projection);
+    hasher.add(frame.camera().width);
+    hasher.add(frame.camera().height);
+    for (const MeshInstance& instance : frame.scene().meshInstances) {
+        hasher.add(instance.mesh);
+        hasher.add(instance.world);
+        hasher.add(instance.receiveShadows);
+    }
+    for (const Material& material : frame.scene().materials) {
+        hasher.add(material.alphaMode);
+        hasher.add(material.alphaCutoff);
+        hasher.add(material.baseColorFactor.a);
+        hasher.add(material.doubleSided);
+    }
+    return hasher.value();
+}
 
 int lightTypeCode(Light::Type type) {
     switch (type) {
@@ -52,16 +82,19 @@ LitPass::LitPass(const RendererConfig& config)
                                       GL_DYNAMIC_STORAGE_BIT)) {}
 
 const gl::Program& LitPass::programFor(const std::string& visibilityGlsl, int lightCount,
-                                      bool debugView) {
+                                      Output output, const std::string& shadeCacheGlsl) {
     const std::string header = "#version 450 core\n#define MAX_LIGHTS " + std::to_string(kMaxLights) +
                                "\n#define LIGHT_COUNT " + std::to_string(lightCount) + "\n" +
-                               (debugView ? "#define LIGHT_DEBUG_VIEW\n" : "");
-    const std::string key = header + visibilityGlsl;
+                               (output == Output::Comparison ? "#define LIGHT_DEBUG_VIEW\n" : "") +
+                               (output == Output::ShadowMask ? "#define LIGHT_MASK_VIEW\n" : "") +
+                               (shadeCacheGlsl.empty() ? "" : "#define SHADE_CACHE\n");
+    const std::string fragmentTail = visibilityGlsl + "\n" + shadeCacheGlsl;
+    const std::string key = header + fragmentTail;
     auto found = programs_.find(key);
     if (found != programs_.end()) return *found->second;
     auto program = std::make_unique<gl::Program>(gl::Program::compile(
         "lit", {{GL_VERTEX_SHADER, header + shaders::lit_vert},
-                {GL_FRAGMENT_SHADER, header + shaders::lit_frag + "\n" + visibilityGlsl}}));
+                {GL_FRAGMENT_SHADER, header + shaders::lit_frag + "\n" + fragmentTail}}));
     return *programs_.emplace(key, std::move(program)).first->second;
 }
 
@@ -135,8 +168,16 @@ void LitPass::addPass(Frame& frame, const std::string& name, ResourceHandle targ
     const auto& hook = frame.lightVisibility();
     const int lightCount =
         std::min(static_cast<int>(frame.scene().lightInstances.size()), kMaxLights);
-    const gl::Program& program =
-        programFor(hook ? hook->glsl : kNoShadowsGlsl, lightCount, output == Output::Comparison);
+    // Only the shaded image uses the shade cache: the per-light views always ask the hook.
+    if (output == Output::Color) {
+        const bool cacheable = config_.shadeCache && hook && !hook->shadeKeys.empty();
+        shadePlan_ = cacheable ? shadeCache_.plan(shadeViewKey(frame, sceneGeneration_), hook->shadeKeys,
+                                                  lightCount, frame.camera().width, frame.camera().height)
+                               : ShadeCache::uncached(lightCount);
+    }
+    const std::string shadeCacheGlsl = output == Output::Color ? shadePlan_.glsl() : std::string();
+    const gl::Program& program = programFor(hook ? hook->glsl : kNoShadowsGlsl, lightCount,
+                                            output, shadeCacheGlsl);
     // Setup runs inside addPass, after both callbacks were built: share the handles it
     // declares with the execute callback through one small heap object.
     struct Handles { ResourceHandle target, depth; };
@@ -160,6 +201,8 @@ void LitPass::addPass(Frame& frame, const std::string& name, ResourceHandle targ
                                       context.texture(handles->target), 0);
             glNamedFramebufferTexture(framebuffer.id(), GL_DEPTH_ATTACHMENT,
                                       context.texture(handles->depth), 0);
+            const ShadeCache::Plan* shadePlan = color && shadePlan_.layers > 0 ? &shadePlan_ : nullptr;
+            if (shadePlan) attachShadeCache(framebuffer, *shadePlan);
             framebuffer.requireComplete("lit pass framebuffer");
             glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.id());
             glViewport(0, 0, frame.camera().width, frame.camera().height);
@@ -171,14 +214,34 @@ void LitPass::addPass(Frame& frame, const std::string& name, ResourceHandle targ
             glEnable(GL_DEPTH_TEST);
             glDepthFunc(GL_LESS);
             program.use();
-            program.set("uOutputMode", static_cast<int>(output));
             program.set("uMaskLight", maskSlot);
             const auto& visibility = frame.lightVisibility();
             if (visibility && visibility->bind) visibility->bind(program, context);
             drawScene(frame, program, context);
             glDisable(GL_FRAMEBUFFER_SRGB);
             glBindFramebuffer(GL_FRAMEBUFFER, 0);
+            if (shadePlan) {
+                glBindTextureUnit(ShadeCache::kTextureUnit, 0);
+                shadeCache_.commit(*shadePlan);
+            }
         });
+}
+
+void LitPass::attachShadeCache(const gl::Framebuffer& framebuffer, const ShadeCache::Plan& plan) {
+    if (plan.readArray) glBindTextureUnit(ShadeCache::kTextureUnit, plan.readArray);
+    if (!plan.writeArray) return;
+    std::vector<GLenum> drawBuffers{GL_COLOR_ATTACHMENT0};
+    for (int layer = 0; layer < plan.layers; ++layer) {
+        const GLenum attachment = GL_COLOR_ATTACHMENT1 + layer;
+        glNamedFramebufferTextureLayer(framebuffer.id(), attachment, plan.writeArray, 0, layer);
+        drawBuffers.push_back(attachment);
+    }
+    glNamedFramebufferDrawBuffers(framebuffer.id(), static_cast<GLsizei>(drawBuffers.size()), drawBuffers.data());
+}
+
+void LitPass::sceneChanged() {
+    ++sceneGeneration_;
+    shadeCache_.clear();
 }
 
 void LitPass::addTo(Frame& frame, ResourceHandle colorTarget) {

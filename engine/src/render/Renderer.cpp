@@ -8,6 +8,25 @@
 
 namespace engine {
 
+namespace {
+
+// Which lights the shaded image took from the shade cache, which it recomputed (and
+// cached), and which it evaluated without caching, by light slot.
+nlohmann::json shadeCacheStats(const ShadeCache::Plan& plan) {
+    nlohmann::json fetched = nlohmann::json::array(), computed = nlohmann::json::array(),
+                   uncached = nlohmann::json::array();
+    for (std::size_t slot = 0; slot < plan.sources.size(); ++slot) {
+        switch (plan.sources[slot]) {
+        case ShadeCache::Source::Fetch: fetched.push_back(slot); break;
+        case ShadeCache::Source::Compute: computed.push_back(slot); break;
+        case ShadeCache::Source::Inline: uncached.push_back(slot); break;
+        }
+    }
+    return {{"layers", plan.layers}, {"fetched", fetched}, {"computed", computed}, {"uncached", uncached}};
+}
+
+} // namespace
+
 Renderer::Renderer(const RendererConfig& config, std::vector<RenderPlugin*> plugins)
     : config_(config), plugins_(std::move(plugins)), litPass_(std::make_unique<LitPass>(config)) {}
 
@@ -16,6 +35,7 @@ Renderer::~Renderer() = default;
 void Renderer::setScene(const Scene& scene) {
     scene_ = &scene;
     gpu_ = std::make_unique<SceneGpu>(scene);
+    litPass_->sceneChanged();
     for (RenderPlugin* plugin : plugins_) plugin->prepareScene(scene);
 }
 
@@ -90,6 +110,7 @@ FrameResult Renderer::renderFrame(const FrameRequest& request) {
     result.graphviz = graph.graphviz();
     result.shadowTermProvided = frame.lightVisibility().has_value();
     result.litInstancesCulled = litPass_->culledInstances();
+    result.shadeCache = shadeCacheStats(litPass_->shadePlan());
     for (RenderPlugin* plugin : plugins_) result.pluginStats[plugin->name()] = plugin->frameStats();
     result.frameMs =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();

@@ -27,6 +27,7 @@ struct LightShadowFrame {
     std::uint64_t draws = 0, triangles = 0, castersCulled = 0;
     std::vector<std::string> openCasters;  // backface: casters drawn two-sided
     bool cacheHit = false;                 // the map was still right: no depth pass
+    std::uint64_t mapKey = 0;              // what the map holds this frame (MapCacheKey.h)
 };
 
 struct LightShadow {

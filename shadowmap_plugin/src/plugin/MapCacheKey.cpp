@@ -1,37 +1,13 @@
 #include "plugin/MapCacheKey.h"
 
 #include "engine/scene/FrustumCull.h"
-
-#include <cstring>
+#include "engine/util/Hasher.h"
 
 namespace shadowmap {
 
-namespace {
-
-// FNV-1a over the bytes of what is fed in: simple, and the inputs are few.
-class Hasher {
-public:
-    template <typename T>
-    void add(const T& value) {
-        unsigned char bytes[sizeof(T)];
-        std::memcpy(bytes, &value, sizeof(T));
-        for (unsigned char byte : bytes) hash_ = (hash_ ^ byte) * 1099511628211ull;
-    }
-    void add(const glm::dmat4& m) {
-        for (int c = 0; c < 4; ++c)
-            for (int r = 0; r < 4; ++r) add(m[c][r]);
-    }
-    std::uint64_t value() const { return hash_; }
-
-private:
-    std::uint64_t hash_ = 14695981039346656037ull;
-};
-
-} // namespace
-
 std::uint64_t mapCacheKey(const LightShadow& light, const engine::Scene& scene,
                           std::uint64_t sceneGeneration) {
-    Hasher hasher;
+    engine::Hasher hasher;
     hasher.add(sceneGeneration);
     const ShadowSettings& s = light.settings;
     hasher.add(static_cast<int>(s.variant));

@@ -9,11 +9,11 @@
 #include "engine/render/Frame.h"
 #include "engine/scene/Scene.h"
 #include "engine/util/Error.h"
+#include "engine/util/Hasher.h"
 
 #include <epoxy/gl.h>
 
 #include <cmath>
-#include <cstring>
 #include <iostream>
 
 namespace shadowmap {
@@ -64,12 +64,11 @@ float offsetClamp(const LightShadow& light) {
 // The map cache key (MapCacheKey.h) with the depth settings that change a map without
 // changing its view-projection: reversed Z's depth state and the slope-offset clamp.
 std::uint64_t withDepthSettings(std::uint64_t key, const ShadowSettings& settings) {
-    const auto mix = [&key](std::uint64_t value) { key = (key ^ value) * 1099511628211ull; };
-    mix(settings.reversedZ ? 1u : 0u);
-    std::uint32_t clampBits = 0;
-    std::memcpy(&clampBits, &settings.polygonOffsetClamp, sizeof clampBits);
-    mix(clampBits);
-    return key;
+    engine::Hasher hasher;
+    hasher.add(key);
+    hasher.add(settings.reversedZ);
+    hasher.add(settings.polygonOffsetClamp);
+    return hasher.value();
 }
 
 } // namespace
@@ -313,6 +312,7 @@ engine::LightVisibilityHook ShadowMapPlugin::makeHook(const engine::Frame& frame
     std::vector<float> pointFar(engine::kMaxLights, 1.0f);
     std::vector<std::pair<int, unsigned>> units;      // texture unit, map (comparing)
     std::vector<std::pair<int, unsigned>> rawUnits;   // texture unit, map (raw depth, debug)
+    std::vector<std::uint64_t> shadeKeys(lights_.size(), 0);  // 0: no map, a constant shade
 
     // The generated part of the hook: one sampler per shadowed light and a dispatch on the
     // slot with constant arguments (see visibility.glsl for why).
@@ -351,6 +351,13 @@ engine::LightVisibilityHook ShadowMapPlugin::makeHook(const engine::Frame& frame
                          : 0.0f;
         params[light.slot] = glm::vec4(light.settings.reversedZ ? 1.0f : 0.0f, referenceBias,
                                        light.settings.dimming, outsideShade);
+        // The lit pass may reuse this light's shade per pixel while this key (and the camera
+        // and geometry, which the engine adds) holds: the map's content and how it is read.
+        engine::Hasher shadeKey;
+        shadeKey.add(light.frame.mapKey);
+        shadeKey.add(params[light.slot]);
+        shadeKey.add(light.settings.filter);
+        shadeKeys[light.slot] = shadeKey.value();
         const std::string slot = std::to_string(light.slot);
         const std::string unit = std::to_string(kFirstUnit + light.slot);
         units.emplace_back(kFirstUnit + light.slot, light.map.id());
@@ -371,8 +378,8 @@ engine::LightVisibilityHook ShadowMapPlugin::makeHook(const engine::Frame& frame
             // Ee = Epo * V with Epo = S * P_light * L^-1, composed in double (DESIGN.md).
             eyePlanes[light.slot] = uploaded;
             samplers += "layout(binding = " + unit + ") uniform sampler2DShadow uShadowMap" + slot + ";\n";
-            dispatch += "    if (lightSlot == " + slot + ") return vec2(shadowMap2D(" + slot +
-                        ", eyePosition, uShadowMap" + slot + "), uShadowParams[" + slot + "].z);\n";
+            dispatch += "    if (lightSlot == " + slot + ") return shadowMap2D(" + slot +
+                        ", eyePosition, uShadowMap" + slot + ");\n";
         } else {
             const glm::dvec3 lightPosition = frame.scene().lightInstances[light.slot].position();
             pointLight[light.slot] = glm::vec4(glm::vec3(view * glm::dvec4(lightPosition, 1.0)),
@@ -381,16 +388,18 @@ engine::LightVisibilityHook ShadowMapPlugin::makeHook(const engine::Frame& frame
             pointFar[light.slot] = std::isinf(plan.pointViews.farPlane) ? 0.0f
                                                                         : static_cast<float>(plan.pointViews.farPlane);
             samplers += "layout(binding = " + unit + ") uniform samplerCubeShadow uShadowMap" + slot + ";\n";
-            dispatch += "    if (lightSlot == " + slot + ") return vec2(shadowMapCube(" + slot +
-                        ", eyePosition, uShadowMap" + slot + "), uShadowParams[" + slot + "].z);\n";
+            dispatch += "    if (lightSlot == " + slot + ") return shadowMapCube(" + slot +
+                        ", eyePosition, uShadowMap" + slot + ");\n";
         }
     }
 
     engine::LightVisibilityHook hook;
     hook.owner = name();
+    hook.shadeKeys = std::move(shadeKeys);
     hook.glsl = std::string(shaders::visibility_glsl) + samplers +
-                "vec2 lightVisibility(int lightSlot, vec3 eyePosition, vec3 eyeNormal) {\n" + dispatch +
-                "    return uShadowParams[lightSlot].wz;\n}\n" +
+                "float lightVisibility(int lightSlot, vec3 eyePosition, vec3 eyeNormal) {\n" + dispatch +
+                "    return uShadowParams[lightSlot].w;\n}\n" +
+                "float lightDimming(int lightSlot) {\n    return uShadowParams[lightSlot].z;\n}\n" +
                 "vec4 lightDebugColor(int lightSlot, vec3 eyePosition, vec3 eyeNormal) {\n" +
                 debugDispatch + "    return vec4(0.4, 0.4, 0.4, 1.0);\n}\n";
     const unsigned rawSampler = rawDepthSampler().id();
@@ -435,6 +444,7 @@ void ShadowMapPlugin::addPasses(engine::Frame& frame) {
         // Reversed Z compares the other way round (lit where r >= stored: near is 1).
         light.map.setParameter(GL_TEXTURE_COMPARE_FUNC, light.settings.reversedZ ? GL_GEQUAL : GL_LEQUAL);
         const std::uint64_t key = withDepthSettings(mapCacheKey(light, frame.scene(), sceneGeneration_), light.settings);
+        light.frame.mapKey = key;
         light.frame.cacheHit = cacheMaps_ && key == light.renderedKey;
         const int size = light.settings.resolution;
         const engine::TextureDesc desc{size, size, graphFormat(light.settings.depthFormat), 1,

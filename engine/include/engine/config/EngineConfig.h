@@ -3,7 +3,8 @@
 // {
 //   "plugin_dirs": ["relative/or/absolute/dir", ...],     optional; relative to the config
 //   "plugins": [ {"library": "shadowmap_plugin", "settings": {...}} ],
-//   "renderer": {"ambient": [r,g,b], "clear_color": [r,g,b]}          optional
+//   "renderer": {"ambient": [r,g,b], "clear_color": [r,g,b],          optional
+//                "shade_cache": true}
 // }
 // Unknown keys are errors (a typo must not silently change nothing). Plugins are searched
 // only in plugin_dirs and then in the build's plugin folder (ENGINE_DEFAULT_PLUGIN_DIR).
@@ -24,6 +25,9 @@ struct PluginConfig {
 struct RendererConfig {
     glm::vec3 ambient{0.04f};      // linear ambient light, multiplied by albedo
     glm::vec3 clearColor{0.0f};    // linear background
+    // Reuse a light's per-pixel shade while camera, geometry and light are unchanged
+    // (ShadeCache.h); off: every frame asks the visibility hook for every pixel.
+    bool shadeCache = true;
 };
 
 struct EngineConfig {

@@ -34,18 +34,27 @@ struct FrameCamera {
 // The per-light visibility term of the lit pass (DESIGN.md "ambient-retaining modulate").
 // `glsl` is inserted into the lit fragment shader (GLSL 4.50 core, after the engine's own
 // declarations) and must define
-//     vec2 lightVisibility(int lightSlot, vec3 eyePosition, vec3 eyeNormal);
-// returning (shade in [0,1], dimming in [0,1]) for that light at that eye-space point, and
+//     float lightVisibility(int lightSlot, vec3 eyePosition, vec3 eyeNormal);
+// the shade in [0,1] of that light at that eye-space point,
+//     float lightDimming(int lightSlot);
+// the light's dimming d in [0,1], and
 //     vec4 lightDebugColor(int lightSlot, vec3 eyePosition, vec3 eyeNormal);
 // a picture of how it decided (engine-render --shadow-compare shows it).
-// The lit pass then uses diffuseShade = dimming + (1 - dimming) * shade for diffuse and
-// shade for specular. `bind` runs before the lit pass draws (uniforms; textures on units
+// The lit pass then uses diffuseShade = d + (1 - d) * shade for diffuse and shade for
+// specular. `bind` runs before the lit pass draws (uniforms; textures on units
 // >= kFirstPluginTextureUnit), and `reads` are the graph resources it samples.
+//
+// `shadeKeys` (by light slot; missing or 0 = "evaluate every frame") lets the lit pass
+// reuse a light's shade from the previous frame, per pixel (ShadeCache.h): a plugin gives
+// a light a key that changes whenever lightVisibility could return something else for the
+// same eye-space point under the same camera (its map, its parameters). The engine adds
+// the camera and the visible geometry to the key itself.
 struct LightVisibilityHook {
     std::string owner;  // plugin name, for messages
     std::string glsl;
     std::vector<ResourceHandle> reads;
     std::function<void(const gl::Program&, const PassContext&)> bind;
+    std::vector<std::uint64_t> shadeKeys;
 };
 
 class Frame {

@@ -5,8 +5,10 @@
 // used.
 #include "engine/config/EngineConfig.h"
 #include "engine/gl/Buffer.h"
+#include "engine/gl/Framebuffer.h"
 #include "engine/gl/Program.h"
 #include "engine/render/Frame.h"
+#include "engine/render/ShadeCache.h"
 
 #include <map>
 #include <memory>
@@ -22,6 +24,10 @@ public:
     void addTo(Frame& frame, ResourceHandle colorTarget);
     // Mesh instances the last drawn pass skipped because they lie outside the view.
     int culledInstances() const { return culledInstances_; }
+    // Where the last shaded image took each light's shade from (ShadeCache.h).
+    const ShadeCache::Plan& shadePlan() const { return shadePlan_; }
+    // A new scene: nothing cached is still right.
+    void sceneChanged();
 
     // What a per-light view shows: the shade (gray, 255 = lit) or the hook's debug picture.
     enum class LightView { ShadowMask, Comparison };
@@ -29,11 +35,15 @@ public:
     void addLightViewTo(Frame& frame, int slot, LightView view, ResourceHandle target);
 
 private:
-    enum class Output { Color = 0, ShadowMask = 1, Comparison = 2 };  // lit.frag's modes
+    enum class Output { Color, ShadowMask, Comparison };  // lit.frag's views
     void addPass(Frame& frame, const std::string& name, ResourceHandle target, Output output,
                  int maskSlot);
-    // One program per hook source, light count and debug variant, compiled on first use.
-    const gl::Program& programFor(const std::string& visibilityGlsl, int lightCount, bool debugView);
+    // One program per hook source, light count, output view and shade-cache plan
+    // (fetched / computed lights), compiled on first use.
+    const gl::Program& programFor(const std::string& visibilityGlsl, int lightCount, Output output,
+                                  const std::string& shadeCacheGlsl);
+    // Binds the array the plan fetches from and attaches the one it writes as outputs 1...
+    void attachShadeCache(const gl::Framebuffer& framebuffer, const ShadeCache::Plan& plan);
     void uploadLights(const Scene& scene, const FrameCamera& camera);
     void drawScene(const Frame& frame, const gl::Program& program, PassContext& context);
 
@@ -42,6 +52,9 @@ private:
     gl::Buffer lightBuffer_;
     int lightCount_ = 0;
     int culledInstances_ = 0;
+    ShadeCache shadeCache_;
+    ShadeCache::Plan shadePlan_;  // of this frame's shaded image
+    std::uint64_t sceneGeneration_ = 0;
 };
 
 } // namespace engine

@@ -1,0 +1,71 @@
+#pragma once
+// The lit pass's screen-space shade cache.
+// Looking a shadow up per pixel (texgen, comparison, filtering) costs llvmpipe ~20 ms per
+// light at 1280x720, several unshadowed frames, even when the map itself is cached. While
+// the camera, the visible geometry and a light's visibility inputs (the hook's shade key,
+// Frame.h) stay the same, that light's shade at every pixel is what an earlier frame
+// computed, so the lit pass reads it back instead: one texelFetch per four lights.
+//
+// Storage: an RGBA32F 2D array, four lights per layer, exact floats (a frame that reads the
+// cache shades exactly like the frame that filled it). When some light's shade is stale,
+// the lit pass computes it and writes every layer of a second array through extra color
+// outputs (stale lights computed, fresh ones copied from the first array); then the two
+// swap, so no array is ever read and written by one pass. The value written at a pixel is
+// the one of the fragment that wins the depth test (the one whose color lands in the
+// image), so overdraw cannot leave a hidden surface's shade behind; and since the key
+// covers camera and geometry, the next frame covers exactly the same pixels.
+#include "engine/gl/Texture.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace engine {
+
+class ShadeCache {
+public:
+    // Where the lit pass takes a light's shade from this frame.
+    enum class Source {
+        Inline,   // the hook gave no key: evaluated, not cached
+        Fetch,    // still valid: read from the cache
+        Compute,  // stale or new: evaluated and written to the cache
+    };
+    struct Plan {
+        std::vector<Source> sources;  // by light slot
+        std::vector<int> channels;    // by slot: layer * 4 + component, or -1 (Inline)
+        int layers = 0;               // 0: nothing cached, the lit pass runs without the cache
+        unsigned readArray = 0;       // the array fetched from (0 if nothing is fetched)
+        unsigned writeArray = 0;      // the array written (0 if nothing is computed)
+        std::vector<std::uint64_t> writtenKeys;  // by channel, once writeArray is drawn
+
+        int count(Source source) const;
+        // GLSL appended to the lit fragment shader when layers > 0 (which then defines
+        // SHADE_CACHE, see lit.frag): the cache's sampler and outputs and loadShades(),
+        // which fills every light's shade from its source.
+        std::string glsl() const;
+    };
+
+    // lightCount: the lit pass's lights; shadeKeys: the hook's (by slot, 0 = none);
+    // viewKey: what the engine adds (camera, target size, visible geometry).
+    Plan plan(std::uint64_t viewKey, const std::vector<std::uint64_t>& shadeKeys, int lightCount,
+              int width, int height);
+    // Every light evaluated, nothing cached (the cache is off, or the hook gives no keys).
+    static Plan uncached(int lightCount);
+    // The lit pass has drawn `plan`: its written array is now the valid one.
+    void commit(const Plan& plan);
+    // Forget everything (a new scene).
+    void clear();
+
+    // Texture unit of the cache's sampler: one of the engine's own units (below
+    // kFirstPluginTextureUnit; unit 0 is the base color texture).
+    static constexpr int kTextureUnit = 1;
+
+private:
+    void ensureArrays(int width, int height, int layers);
+
+    gl::Texture arrays_[2];
+    int current_ = 0;                          // the array channelKeys_ describes
+    std::vector<std::uint64_t> channelKeys_;   // per channel of arrays_[current_]; 0 = invalid
+};
+
+} // namespace engine

@@ -1,0 +1,113 @@
+#include "engine/render/ShadeCache.h"
+
+#include "engine/util/Hasher.h"
+
+#include <algorithm>
+
+namespace engine {
+
+namespace {
+constexpr int kChannelsPerLayer = 4;
+const char* const kComponents[kChannelsPerLayer] = {"x", "y", "z", "w"};
+} // namespace
+
+int ShadeCache::Plan::count(Source source) const {
+    return static_cast<int>(std::count(sources.begin(), sources.end(), source));
+}
+
+std::string ShadeCache::Plan::glsl() const {
+    if (layers == 0) return {};
+    const int lightCount = static_cast<int>(sources.size());
+    const bool writes = writeArray != 0;
+    std::string code = "layout(binding = " + std::to_string(kTextureUnit) + ") uniform sampler2DArray uShadeCache;\n";
+    if (writes)
+        code += "layout(location = 1) out vec4 outShadeCache[" + std::to_string(layers) + "];\n";
+    code += "void loadShades(out float shades[LIGHT_COUNT], vec3 eyePosition, vec3 eyeNormal) {\n";
+    // One fetch per layer that holds a still-valid light.
+    std::vector<bool> fetched(layers, false);
+    for (int slot = 0; slot < lightCount; ++slot)
+        if (sources[slot] == Source::Fetch) fetched[channels[slot] / kChannelsPerLayer] = true;
+    for (int layer = 0; layer < layers; ++layer)
+        if (fetched[layer])
+            code += "    vec4 cached" + std::to_string(layer) +
+                    " = texelFetch(uShadeCache, ivec3(gl_FragCoord.xy, " + std::to_string(layer) + "), 0);\n";
+    std::vector<std::string> layerValues(layers * kChannelsPerLayer, "0.0");
+    for (int slot = 0; slot < lightCount; ++slot) {
+        const std::string target = "    shades[" + std::to_string(slot) + "] = ";
+        const int channel = channels[slot];
+        if (sources[slot] == Source::Fetch)
+            code += target + "cached" + std::to_string(channel / kChannelsPerLayer) + "." +
+                    kComponents[channel % kChannelsPerLayer] + ";\n";
+        else
+            code += target + "shadeOf(" + std::to_string(slot) + ", eyePosition, eyeNormal);\n";
+        if (channel >= 0) layerValues[channel] = "shades[" + std::to_string(slot) + "]";
+    }
+    if (writes)
+        for (int layer = 0; layer < layers; ++layer) {
+            code += "    outShadeCache[" + std::to_string(layer) + "] = vec4(";
+            for (int c = 0; c < kChannelsPerLayer; ++c)
+                code += layerValues[layer * kChannelsPerLayer + c] + (c + 1 < kChannelsPerLayer ? ", " : ");\n");
+        }
+    code += "}\n";
+    return code;
+}
+
+void ShadeCache::ensureArrays(int width, int height, int layers) {
+    const gl::Texture& current = arrays_[current_];
+    if (current.id() && current.width() == width && current.height() == height && current.layers() == layers)
+        return;
+    for (gl::Texture& array : arrays_) array = gl::Texture::create2DArray(GL_RGBA32F, width, height, layers);
+    current_ = 0;
+    channelKeys_.assign(static_cast<std::size_t>(layers) * kChannelsPerLayer, 0);
+}
+
+ShadeCache::Plan ShadeCache::uncached(int lightCount) {
+    Plan plan;
+    plan.sources.assign(lightCount, Source::Inline);
+    plan.channels.assign(lightCount, -1);
+    return plan;
+}
+
+ShadeCache::Plan ShadeCache::plan(std::uint64_t viewKey, const std::vector<std::uint64_t>& shadeKeys,
+                                  int lightCount, int width, int height) {
+    Plan plan = uncached(lightCount);
+    int cached = 0;
+    for (int slot = 0; slot < lightCount; ++slot)
+        if (slot < static_cast<int>(shadeKeys.size()) && shadeKeys[slot] != 0) plan.channels[slot] = cached++;
+    if (cached == 0) return plan;
+    plan.layers = (cached + kChannelsPerLayer - 1) / kChannelsPerLayer;
+    ensureArrays(width, height, plan.layers);
+
+    plan.writtenKeys.assign(channelKeys_.size(), 0);
+    bool fetches = false, computes = false;
+    for (int slot = 0; slot < lightCount; ++slot) {
+        const int channel = plan.channels[slot];
+        if (channel < 0) continue;
+        // A channel is valid for this slot under this view with this hook key only.
+        Hasher hasher;
+        hasher.add(viewKey);
+        hasher.add(slot);
+        hasher.add(shadeKeys[slot]);
+        const std::uint64_t key = std::max<std::uint64_t>(hasher.value(), 1);  // 0 = invalid
+        plan.writtenKeys[channel] = key;
+        const bool valid = channelKeys_[channel] == key;
+        plan.sources[slot] = valid ? Source::Fetch : Source::Compute;
+        fetches = fetches || valid;
+        computes = computes || !valid;
+    }
+    if (fetches) plan.readArray = arrays_[current_].id();
+    if (computes) plan.writeArray = arrays_[1 - current_].id();
+    return plan;
+}
+
+void ShadeCache::commit(const Plan& plan) {
+    if (plan.writeArray == 0 || plan.writeArray != arrays_[1 - current_].id()) return;
+    current_ = 1 - current_;
+    channelKeys_ = plan.writtenKeys;
+}
+
+void ShadeCache::clear() {
+    std::fill(channelKeys_.begin(), channelKeys_.end(), 0);
+}
+
+} // namespace engine

@@ -1,0 +1,170 @@
+// The lit pass's shade cache (engine/render/ShadeCache.h) with the shadow plugin's shade
+// keys: which lights a frame reuses and which it recomputes (from FrameResult::shadeCache),
+// and that reused shade never goes stale: every frame's image equals the image of a
+// renderer that caches neither maps nor shade.
+#include "../../gl/GlTestContext.h"
+#include "AnalyticShadows.h"
+
+#include "engine/scene/SceneEdit.h"
+
+namespace {
+
+using engine::Light;
+using engine::test::SceneBuilder;
+
+std::vector<int> slots(const engine::FrameResult& result, const char* source) {
+    return result.shadeCache.at(source).get<std::vector<int>>();
+}
+
+class ShadeCacheTest : public engine::test::ShadowPluginTest {
+protected:
+    static void SetUpTestSuite() { loadPlugin({{"resolution", 256}}); }
+
+    struct Lit {
+        SceneBuilder builder;
+        int spot = -1;
+    };
+    // A box over a floor, a shadowed spot (slot 0), a shadowed point light (slot 1) and a
+    // spot without shadows (slot 2, variant none: no map, nothing to cache).
+    static Lit boxTwoShadowedLightsAndOneWithout() {
+        Lit lit;
+        lit.builder.addBox("floor", {-10, -0.2, -10}, {10, 0, 10});
+        lit.builder.addBox("box", {-1, 1, -1}, {1, 2, 1});
+        lit.spot = lit.builder.addLight("spot", Light::Type::Spot, {-3, 8, -2}, {0, 0, 0});
+        lit.builder.addLight("bulb", Light::Type::Point, {1, 4, 2}, {1, 0, 2});
+        lit.builder.addLight("plain", Light::Type::Spot, {3, 6, 3}, {0, 0, 0}, {{"variant", "none"}});
+        return lit;
+    }
+    static engine::FrameCamera camera() { return engine::test::cameraLooking({0, 12, 10}, {0, 0, 0}, 96, 72); }
+};
+
+} // namespace
+
+TEST_F(ShadeCacheTest, AStaticSceneComputesEachShadeOnceThenFetchesIt) {
+    Lit lit = boxTwoShadowedLightsAndOneWithout();
+    engine::Scene scene = lit.builder.build();
+    engine::Renderer renderer({}, plugins());
+    renderer.setScene(scene);
+    engine::FrameRequest request;
+    request.camera = camera();
+    const engine::FrameResult first = renderer.renderFrame(request);
+    EXPECT_EQ(first.shadeCache["layers"], 1);
+    EXPECT_EQ(slots(first, "computed"), (std::vector<int>{0, 1}));
+    EXPECT_EQ(slots(first, "uncached"), (std::vector<int>{2}));
+    for (int frame = 1; frame < 4; ++frame) {
+        const engine::FrameResult later = renderer.renderFrame(request);
+        EXPECT_EQ(slots(later, "fetched"), (std::vector<int>{0, 1})) << "frame " << frame;
+        EXPECT_TRUE(slots(later, "computed").empty()) << "frame " << frame;
+    }
+}
+
+TEST_F(ShadeCacheTest, MovingOneLightRecomputesOnlyItsShade) {
+    Lit lit = boxTwoShadowedLightsAndOneWithout();
+    engine::Scene scene = lit.builder.build();
+    engine::Renderer renderer({}, plugins());
+    renderer.setScene(scene);
+    engine::FrameRequest request;
+    request.camera = camera();
+    renderer.renderFrame(request);
+    for (int frame = 1; frame < 3; ++frame) {
+        engine::orbitNode(scene, lit.spot, {0, 0, 0}, 0.1);
+        const engine::FrameResult result = renderer.renderFrame(request);
+        EXPECT_EQ(slots(result, "computed"), (std::vector<int>{0})) << "frame " << frame;
+        EXPECT_EQ(slots(result, "fetched"), (std::vector<int>{1})) << "frame " << frame;
+    }
+}
+
+TEST_F(ShadeCacheTest, MovingTheCameraOrAnyMeshRecomputesEveryShade) {
+    Lit lit = boxTwoShadowedLightsAndOneWithout();
+    const int farAway = lit.builder.addBox("far_away", {40, 0, 40}, {41, 1, 41});
+    engine::Scene scene = lit.builder.build();
+    engine::Renderer renderer({}, plugins());
+    renderer.setScene(scene);
+    engine::FrameRequest request;
+    request.camera = camera();
+    renderer.renderFrame(request);
+
+    request.camera.eyeToWorld = engine::orbitTransform(request.camera.eyeToWorld, {0, 0, 0}, 0.05);
+    EXPECT_EQ(slots(renderer.renderFrame(request), "computed"), (std::vector<int>{0, 1}));
+    EXPECT_EQ(slots(renderer.renderFrame(request), "fetched"), (std::vector<int>{0, 1}));
+
+    // A mesh no light and no camera sees still counts: the key covers every surface the
+    // lit pass may draw, so nothing visible can have changed without a recompute.
+    scene.nodes[farAway].local[3].x += 1.0;
+    scene.updateWorldTransforms();
+    EXPECT_EQ(slots(renderer.renderFrame(request), "computed"), (std::vector<int>{0, 1}));
+
+    // A new scene forgets everything.
+    renderer.setScene(scene);
+    EXPECT_EQ(slots(renderer.renderFrame(request), "computed"), (std::vector<int>{0, 1}));
+}
+
+TEST_F(ShadeCacheTest, ShadeCacheOffOrNoShadowedLightMeansNoCache) {
+    Lit lit = boxTwoShadowedLightsAndOneWithout();
+    engine::Scene scene = lit.builder.build();
+    engine::RendererConfig config;
+    config.shadeCache = false;
+    engine::Renderer renderer(config, plugins());
+    renderer.setScene(scene);
+    engine::FrameRequest request;
+    request.camera = camera();
+    renderer.renderFrame(request);
+    const engine::FrameResult off = renderer.renderFrame(request);
+    EXPECT_EQ(off.shadeCache["layers"], 0);
+    EXPECT_EQ(slots(off, "uncached"), (std::vector<int>{0, 1, 2}));
+
+    SceneBuilder unshadowed;
+    unshadowed.addBox("floor", {-10, -0.2, -10}, {10, 0, 10});
+    unshadowed.addLight("plain", Light::Type::Spot, {3, 6, 3}, {0, 0, 0}, {{"variant", "none"}});
+    engine::Scene plain = unshadowed.build();
+    engine::Renderer plainRenderer({}, plugins());
+    plainRenderer.setScene(plain);
+    EXPECT_EQ(plainRenderer.renderFrame(request).shadeCache["layers"], 0);
+}
+
+TEST_F(ShadeCacheTest, ReusedShadeGivesTheImageOfAFreshFrame) {
+    // Five shadowed lights (two cache layers) and a camera, lights and a caster that move
+    // and stop: after every change and every still frame, the image equals that of a
+    // renderer that caches neither maps nor shade. Shade is cached as exact floats, so
+    // the images are compared exactly.
+    SceneBuilder builder;
+    builder.addBox("floor", {-10, -0.2, -10}, {10, 0, 10});
+    const int box = builder.addBox("box", {-1, 1, -1}, {1, 2, 1});
+    builder.addBox("pillar", {2, 0, -3}, {2.5, 3, -2.5});
+    const int spot = builder.addLight("spot", Light::Type::Spot, {-3, 8, -2}, {0, 0, 0});
+    builder.addLight("bulb", Light::Type::Point, {1, 4, 2}, {1, 0, 2});
+    builder.addLight("sun", Light::Type::Directional, {4, 9, 3}, {0, 0, 0});
+    builder.addLight("spot2", Light::Type::Spot, {5, 7, -4}, {0, 0, 0}, {{"filter", "nearest"}});
+    builder.addLight("bulb2", Light::Type::Point, {-3, 3, 3}, {0, 0, 0}, {{"variant", "backface"}});
+    engine::Scene scene = builder.build();
+
+    engine::PluginHost freshHost;
+    freshHost.load({"shadowmap_plugin", {{"resolution", 256}, {"cache_maps", false}}}, {ENGINE_PLUGIN_DIR});
+    engine::RendererConfig noCache;
+    noCache.shadeCache = false;
+    engine::Renderer cached({}, plugins()), fresh(noCache, freshHost.renderPlugins());
+    cached.setScene(scene);
+    fresh.setScene(scene);
+    engine::FrameRequest request;
+    request.camera = camera();
+    int fetchedFrames = 0;
+    for (int frame = 0; frame < 9; ++frame) {
+        if (frame == 2) engine::orbitNode(scene, spot, {0, 0, 0}, 0.3);
+        if (frame == 4) request.camera.eyeToWorld = engine::orbitTransform(request.camera.eyeToWorld, {0, 0, 0}, 0.2);
+        if (frame == 6) {
+            scene.nodes[box].local[3].x += 0.5;
+            scene.updateWorldTransforms();
+        }
+        const engine::FrameResult result = cached.renderFrame(request);
+        fresh.renderFrame(request);
+        EXPECT_EQ(result.shadeCache["layers"], 2);
+        fetchedFrames += !slots(result, "fetched").empty();
+        const std::vector<std::uint8_t> image = cached.readColor(), expected = fresh.readColor();
+        ASSERT_EQ(image.size(), expected.size());
+        int differing = 0;
+        for (std::size_t i = 0; i < image.size(); ++i) differing += image[i] != expected[i];
+        EXPECT_EQ(differing, 0) << "frame " << frame;
+    }
+    // Frames 0, 4 (camera) and 6 (caster) recompute everything; frame 2 only the spot.
+    EXPECT_EQ(fetchedFrames, 6);
+}
