@@ -82,13 +82,12 @@ LitPass::LitPass(const RendererConfig& config)
                                       GL_DYNAMIC_STORAGE_BIT)) {}
 
 const gl::Program& LitPass::programFor(const std::string& visibilityGlsl, int lightCount,
-                                      Output output, const std::string& shadeCacheGlsl) {
+                                      Output output, const std::string& loadShadesGlsl) {
     const std::string header = "#version 450 core\n#define MAX_LIGHTS " + std::to_string(kMaxLights) +
                                "\n#define LIGHT_COUNT " + std::to_string(lightCount) + "\n" +
                                (output == Output::Comparison ? "#define LIGHT_DEBUG_VIEW\n" : "") +
-                               (output == Output::ShadowMask ? "#define LIGHT_MASK_VIEW\n" : "") +
-                               (shadeCacheGlsl.empty() ? "" : "#define SHADE_CACHE\n");
-    const std::string fragmentTail = visibilityGlsl + "\n" + shadeCacheGlsl;
+                               (output == Output::ShadowMask ? "#define LIGHT_MASK_VIEW\n" : "");
+    const std::string fragmentTail = visibilityGlsl + "\n" + loadShadesGlsl;
     const std::string key = header + fragmentTail;
     auto found = programs_.find(key);
     if (found != programs_.end()) return *found->second;
@@ -175,9 +174,10 @@ void LitPass::addPass(Frame& frame, const std::string& name, ResourceHandle targ
                                                   lightCount, frame.camera().width, frame.camera().height)
                                : ShadeCache::uncached(lightCount);
     }
-    const std::string shadeCacheGlsl = output == Output::Color ? shadePlan_.glsl() : std::string();
+    const std::string loadShadesGlsl =
+        output == Output::Color ? shadePlan_.glsl() : ShadeCache::uncached(lightCount).glsl();
     const gl::Program& program = programFor(hook ? hook->glsl : kNoShadowsGlsl, lightCount,
-                                            output, shadeCacheGlsl);
+                                            output, loadShadesGlsl);
     // Setup runs inside addPass, after both callbacks were built: share the handles it
     // declares with the execute callback through one small heap object.
     struct Handles { ResourceHandle target, depth; };

@@ -16,10 +16,12 @@ int ShadeCache::Plan::count(Source source) const {
 }
 
 std::string ShadeCache::Plan::glsl() const {
-    if (layers == 0) return {};
     const int lightCount = static_cast<int>(sources.size());
+    if (lightCount == 0) return {};
     const bool writes = writeArray != 0;
-    std::string code = "layout(binding = " + std::to_string(kTextureUnit) + ") uniform sampler2DArray uShadeCache;\n";
+    std::string code;
+    if (layers > 0)
+        code += "layout(binding = " + std::to_string(kTextureUnit) + ") uniform sampler2DArray uShadeCache;\n";
     if (writes)
         code += "layout(location = 1) out vec4 outShadeCache[" + std::to_string(layers) + "];\n";
     code += "void loadShades(out float shades[LIGHT_COUNT], vec3 eyePosition, vec3 eyeNormal) {\n";

@@ -39,9 +39,9 @@ public:
         std::vector<std::uint64_t> writtenKeys;  // by channel, once writeArray is drawn
 
         int count(Source source) const;
-        // GLSL appended to the lit fragment shader when layers > 0 (which then defines
-        // SHADE_CACHE, see lit.frag): the cache's sampler and outputs and loadShades(),
-        // which fills every light's shade from its source.
+        // GLSL appended to the lit fragment shader (see lit.frag): loadShades(), which
+        // fills every light's shade from its source, and the cache's sampler and outputs
+        // when it has layers. Empty without lights.
         std::string glsl() const;
     };
 
