@@ -36,23 +36,31 @@ protected:
         return lit;
     }
     static engine::FrameCamera camera() { return engine::test::cameraLooking({0, 12, 10}, {0, 0, 0}, 96, 72); }
+
+    // A renderer with the plugin over a scene, and the test camera.
+    struct Session {
+        engine::Scene scene;
+        engine::Renderer renderer;
+        engine::FrameRequest request;
+        explicit Session(engine::Scene built, const engine::RendererConfig& config = {})
+            : scene(std::move(built)), renderer(config, plugins()) {
+            renderer.setScene(scene);
+            request.camera = camera();
+        }
+        engine::FrameResult frame() { return renderer.renderFrame(request); }
+    };
 };
 
 } // namespace
 
 TEST_F(ShadeCacheTest, AStaticSceneComputesEachShadeOnceThenFetchesIt) {
-    Lit lit = boxTwoShadowedLightsAndOneWithout();
-    engine::Scene scene = lit.builder.build();
-    engine::Renderer renderer({}, plugins());
-    renderer.setScene(scene);
-    engine::FrameRequest request;
-    request.camera = camera();
-    const engine::FrameResult first = renderer.renderFrame(request);
+    Session session(boxTwoShadowedLightsAndOneWithout().builder.build());
+    const engine::FrameResult first = session.frame();
     EXPECT_EQ(first.shadeCache["layers"], 1);
     EXPECT_EQ(slots(first, "computed"), (std::vector<int>{0, 1}));
     EXPECT_EQ(slots(first, "uncached"), (std::vector<int>{2}));
     for (int frame = 1; frame < 4; ++frame) {
-        const engine::FrameResult later = renderer.renderFrame(request);
+        const engine::FrameResult later = session.frame();
         EXPECT_EQ(slots(later, "fetched"), (std::vector<int>{0, 1})) << "frame " << frame;
         EXPECT_TRUE(slots(later, "computed").empty()) << "frame " << frame;
     }
@@ -60,15 +68,11 @@ TEST_F(ShadeCacheTest, AStaticSceneComputesEachShadeOnceThenFetchesIt) {
 
 TEST_F(ShadeCacheTest, MovingOneLightRecomputesOnlyItsShade) {
     Lit lit = boxTwoShadowedLightsAndOneWithout();
-    engine::Scene scene = lit.builder.build();
-    engine::Renderer renderer({}, plugins());
-    renderer.setScene(scene);
-    engine::FrameRequest request;
-    request.camera = camera();
-    renderer.renderFrame(request);
+    Session session(lit.builder.build());
+    session.frame();
     for (int frame = 1; frame < 3; ++frame) {
-        engine::orbitNode(scene, lit.spot, {0, 0, 0}, 0.1);
-        const engine::FrameResult result = renderer.renderFrame(request);
+        engine::orbitNode(session.scene, lit.spot, {0, 0, 0}, 0.1);
+        const engine::FrameResult result = session.frame();
         EXPECT_EQ(slots(result, "computed"), (std::vector<int>{0})) << "frame " << frame;
         EXPECT_EQ(slots(result, "fetched"), (std::vector<int>{1})) << "frame " << frame;
     }
@@ -77,49 +81,38 @@ TEST_F(ShadeCacheTest, MovingOneLightRecomputesOnlyItsShade) {
 TEST_F(ShadeCacheTest, MovingTheCameraOrAnyMeshRecomputesEveryShade) {
     Lit lit = boxTwoShadowedLightsAndOneWithout();
     const int farAway = lit.builder.addBox("far_away", {40, 0, 40}, {41, 1, 41});
-    engine::Scene scene = lit.builder.build();
-    engine::Renderer renderer({}, plugins());
-    renderer.setScene(scene);
-    engine::FrameRequest request;
-    request.camera = camera();
-    renderer.renderFrame(request);
+    Session session(lit.builder.build());
+    session.frame();
 
-    request.camera.eyeToWorld = engine::orbitTransform(request.camera.eyeToWorld, {0, 0, 0}, 0.05);
-    EXPECT_EQ(slots(renderer.renderFrame(request), "computed"), (std::vector<int>{0, 1}));
-    EXPECT_EQ(slots(renderer.renderFrame(request), "fetched"), (std::vector<int>{0, 1}));
+    session.request.camera.eyeToWorld = engine::orbitTransform(session.request.camera.eyeToWorld, {0, 0, 0}, 0.05);
+    EXPECT_EQ(slots(session.frame(), "computed"), (std::vector<int>{0, 1}));
+    EXPECT_EQ(slots(session.frame(), "fetched"), (std::vector<int>{0, 1}));
 
     // A mesh no light and no camera sees still counts: the key covers every surface the
     // lit pass may draw, so nothing visible can have changed without a recompute.
-    scene.nodes[farAway].local[3].x += 1.0;
-    scene.updateWorldTransforms();
-    EXPECT_EQ(slots(renderer.renderFrame(request), "computed"), (std::vector<int>{0, 1}));
+    session.scene.nodes[farAway].local[3].x += 1.0;
+    session.scene.updateWorldTransforms();
+    EXPECT_EQ(slots(session.frame(), "computed"), (std::vector<int>{0, 1}));
 
     // A new scene forgets everything.
-    renderer.setScene(scene);
-    EXPECT_EQ(slots(renderer.renderFrame(request), "computed"), (std::vector<int>{0, 1}));
+    session.renderer.setScene(session.scene);
+    EXPECT_EQ(slots(session.frame(), "computed"), (std::vector<int>{0, 1}));
 }
 
 TEST_F(ShadeCacheTest, ShadeCacheOffOrNoShadowedLightMeansNoCache) {
-    Lit lit = boxTwoShadowedLightsAndOneWithout();
-    engine::Scene scene = lit.builder.build();
     engine::RendererConfig config;
     config.shadeCache = false;
-    engine::Renderer renderer(config, plugins());
-    renderer.setScene(scene);
-    engine::FrameRequest request;
-    request.camera = camera();
-    renderer.renderFrame(request);
-    const engine::FrameResult off = renderer.renderFrame(request);
+    Session session(boxTwoShadowedLightsAndOneWithout().builder.build(), config);
+    session.frame();
+    const engine::FrameResult off = session.frame();
     EXPECT_EQ(off.shadeCache["layers"], 0);
     EXPECT_EQ(slots(off, "uncached"), (std::vector<int>{0, 1, 2}));
 
     SceneBuilder unshadowed;
     unshadowed.addBox("floor", {-10, -0.2, -10}, {10, 0, 10});
     unshadowed.addLight("plain", Light::Type::Spot, {3, 6, 3}, {0, 0, 0}, {{"variant", "none"}});
-    engine::Scene plain = unshadowed.build();
-    engine::Renderer plainRenderer({}, plugins());
-    plainRenderer.setScene(plain);
-    EXPECT_EQ(plainRenderer.renderFrame(request).shadeCache["layers"], 0);
+    Session plain(unshadowed.build());
+    EXPECT_EQ(plain.frame().shadeCache["layers"], 0);
 }
 
 TEST_F(ShadeCacheTest, ReusedShadeGivesTheImageOfAFreshFrame) {
