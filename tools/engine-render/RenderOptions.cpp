@@ -1,5 +1,7 @@
 #include "RenderOptions.h"
 
+#include "CommandLine.h"
+
 #include <cerrno>
 #include <cstdlib>
 #include <stdexcept>
@@ -39,20 +41,11 @@ std::pair<std::string, std::string> parseAssignment(const std::string& flag,
 RenderOptions parseRenderOptions(int argc, char** argv) {
     RenderOptions options;
     bool sawScene = false, sawOut = false;
-    for (int i = 1; i < argc; ++i) {
-        const std::string flag = argv[i];
-        if (flag == "--help" || flag == "-h") {
-            options.help = true;
-            return options;
-        }
-        if (flag.rfind("--", 0) != 0) throw std::invalid_argument("unexpected argument \"" + flag + "\"");
-        if (flag == "--orbit-camera" || flag == "--truth") {
-            (flag == "--truth" ? options.truth : options.orbitCamera) = true;
-            continue;
-        }
-        if (i + 1 >= argc) throw std::invalid_argument(flag + ": missing value");
-        const std::string value = argv[++i];
-        if (flag == "--config") options.config = value;
+    options.help = tools::parseFlags(argc, argv, {"--orbit-camera", "--truth"},
+                                     [&](const std::string& flag, const std::string& value) {
+        if (flag == "--orbit-camera") options.orbitCamera = true;
+        else if (flag == "--truth") options.truth = true;
+        else if (flag == "--config") options.config = value;
         else if (flag == "--scene") { options.scene = value; sawScene = true; }
         else if (flag == "--out") { options.out = value; sawOut = true; }
         else if (flag == "--width") options.width = parsePositive(flag, value, 16384);
@@ -72,8 +65,10 @@ RenderOptions parseRenderOptions(int argc, char** argv) {
                 throw std::invalid_argument("--key-light: \"" + value + "\" is not spot, point or directional");
             options.keyLight = value;
         } else if (flag == "--orbit-light") options.orbitLight = value;
-        else throw std::invalid_argument("unknown option " + flag);
-    }
+        else return false;
+        return true;
+    });
+    if (options.help) return options;
     if (!sawScene) throw std::invalid_argument("--scene is required");
     if (!sawOut) throw std::invalid_argument("--out is required");
     return options;

@@ -1,5 +1,7 @@
 #include "ViewOptions.h"
 
+#include "CommandLine.h"
+
 #include <cerrno>
 #include <cstdlib>
 #include <stdexcept>
@@ -31,15 +33,7 @@ int parseSize(const std::string& flag, const std::string& text) {
 ViewOptions parseViewOptions(int argc, char** argv) {
     ViewOptions options;
     bool sawScene = false;
-    for (int i = 1; i < argc; ++i) {
-        const std::string flag = argv[i];
-        if (flag == "--help" || flag == "-h") {
-            options.help = true;
-            return options;
-        }
-        if (flag.rfind("--", 0) != 0) throw std::invalid_argument("unexpected argument \"" + flag + "\"");
-        if (i + 1 >= argc) throw std::invalid_argument(flag + ": missing value");
-        const std::string value = argv[++i];
+    options.help = tools::parseFlags(argc, argv, [&](const std::string& flag, const std::string& value) {
         if (flag == "--config") options.config = value;
         else if (flag == "--scene") { options.scene = value; sawScene = true; }
         else if (flag == "--camera") options.camera = value;
@@ -48,8 +42,10 @@ ViewOptions parseViewOptions(int argc, char** argv) {
         else if (flag == "--script") options.script = value;
         else if (flag == "--screenshot") options.screenshot = value;
         else if (flag == "--save-settings") options.saveSettings = value;
-        else throw std::invalid_argument("unknown option " + flag);
-    }
+        else return false;
+        return true;
+    });
+    if (options.help) return options;
     if (!sawScene) throw std::invalid_argument("--scene is required");
     return options;
 }

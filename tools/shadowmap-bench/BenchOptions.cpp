@@ -1,5 +1,7 @@
 #include "BenchOptions.h"
 
+#include "CommandLine.h"
+
 #include <cerrno>
 #include <cstdlib>
 #include <stdexcept>
@@ -113,15 +115,7 @@ BenchOptions parseBenchOptions(int argc, char** argv) {
     options.depthFormats = kKnownFormats;
     options.filters = kKnownFilters;
 
-    for (int i = 1; i < argc; ++i) {
-        const std::string flag = argv[i];
-        if (flag == "--help" || flag == "-h") {
-            options.help = true;
-            return options;
-        }
-        if (flag.rfind("--", 0) != 0) throw std::invalid_argument("unexpected argument \"" + flag + "\"");
-        if (i + 1 >= argc) throw std::invalid_argument(flag + ": missing value");
-        const std::string value = argv[++i];
+    options.help = tools::parseFlags(argc, argv, [&](const std::string& flag, const std::string& value) {
         if (flag == "--config") options.config = value;
         else if (flag == "--scene") {
             options.defaultScenes = false;
@@ -136,8 +130,10 @@ BenchOptions parseBenchOptions(int argc, char** argv) {
         else if (flag == "--filters") options.filters = parseNames(flag, value, kKnownFilters);
         else if (flag == "--key-light") options.keyLight = parseKeyLight(value);
         else if (flag == "--out") options.out = value;
-        else throw std::invalid_argument("unknown option " + flag);
-    }
+        else return false;
+        return true;
+    });
+    if (options.help) return options;
     if (options.out.empty()) throw std::invalid_argument("--out is required");
     if (options.defaultScenes)
         options.scenes = {std::string(BENCH_CONTENT_DIR) + "/scenes/showcase.gltf", kEngineModel};

@@ -1,0 +1,43 @@
+#pragma once
+// The flag loop of the tools' option parsers (engine-render, engine-view, shadowmap-bench):
+// every argument is a "--flag VALUE" pair or a value-less switch, and -h/--help stops parsing.
+// Each tool keeps its own flags, value checks and required flags; the loop owns the errors
+// they share (thrown as std::invalid_argument, which toolMain reports as one line).
+#include <algorithm>
+#include <functional>
+#include <initializer_list>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+
+namespace tools {
+
+// Called once per flag; value is empty for a switch. Returns false for a flag the tool does
+// not know.
+using FlagHandler = std::function<bool(const std::string& flag, const std::string& value)>;
+
+// Walks argv[1..] and hands every flag to handleFlag. Returns true when -h or --help was
+// given: parsing stops there, so the caller returns at once (no required-flag checks).
+// Every flag not listed in switches takes the next argument as its value, whatever it looks
+// like. The value is fetched before the flag is looked up, so a typo as the last argument
+// reads "--typo: missing value", as the tools have always said.
+inline bool parseFlags(int argc, char** argv, std::initializer_list<std::string_view> switches,
+                       const FlagHandler& handleFlag) {
+    for (int i = 1; i < argc; ++i) {
+        const std::string flag = argv[i];
+        if (flag == "--help" || flag == "-h") return true;
+        if (flag.rfind("--", 0) != 0) throw std::invalid_argument("unexpected argument \"" + flag + "\"");
+        const bool isSwitch = std::find(switches.begin(), switches.end(), flag) != switches.end();
+        if (!isSwitch && i + 1 >= argc) throw std::invalid_argument(flag + ": missing value");
+        const std::string value = isSwitch ? std::string() : argv[++i];
+        if (!handleFlag(flag, value)) throw std::invalid_argument("unknown option " + flag);
+    }
+    return false;
+}
+
+// For a tool whose flags all take a value.
+inline bool parseFlags(int argc, char** argv, const FlagHandler& handleFlag) {
+    return parseFlags(argc, argv, {}, handleFlag);
+}
+
+} // namespace tools
