@@ -7,46 +7,20 @@
 //     a bufferView and a file URI ('tex.png', also next to the fuzzed file), materials,
 //     both camera types, KHR_lights_punctual, node hierarchies with TRS and matrices.
 // Small on purpose: libFuzzer mutates short inputs much faster.
-#include <nlohmann/json.hpp>
+#include "gltf_writer.h"  // tests/unit/: the loader tests' glTF writer
+
 #include <stb_image_write.h>
 
 #include <cstdint>
 #include <cstdio>
-#include <cstring>
+#include <exception>
 #include <filesystem>
-#include <fstream>
 #include <string>
 #include <vector>
 
-namespace fs = std::filesystem;
-using nlohmann::json;
-
 namespace {
 
-constexpr int kUnsignedByte = 5121, kUnsignedShort = 5123, kUnsignedInt = 5125, kFloat = 5126;
-
-void writeBytes(const fs::path& path, const void* data, std::size_t size) {
-    std::ofstream out(path, std::ios::binary | std::ios::trunc);
-    out.write(static_cast<const char*>(data), static_cast<std::streamsize>(size));
-    if (!out) {
-        std::fprintf(stderr, "make_seeds: cannot write %s\n", path.c_str());
-        std::exit(1);
-    }
-}
-
-std::string base64(const std::vector<std::uint8_t>& bytes) {
-    static const char* alphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-    std::string out;
-    for (std::size_t i = 0; i < bytes.size(); i += 3) {
-        const std::uint32_t n = (bytes[i] << 16) | (i + 1 < bytes.size() ? bytes[i + 1] << 8 : 0) |
-                                (i + 2 < bytes.size() ? bytes[i + 2] : 0);
-        out += alphabet[(n >> 18) & 63];
-        out += alphabet[(n >> 12) & 63];
-        out += i + 1 < bytes.size() ? alphabet[(n >> 6) & 63] : '=';
-        out += i + 2 < bytes.size() ? alphabet[n & 63] : '=';
-    }
-    return out;
-}
+using namespace gltf_writer;
 
 std::vector<std::uint8_t> encodeImage(bool jpeg) {
     // 2x2 RGB: red, green, blue, white.
@@ -61,100 +35,35 @@ std::vector<std::uint8_t> encodeImage(bool jpeg) {
     return out;
 }
 
-// A glTF document and its one binary buffer (as tests/unit/gltf_test_support.h builds them).
-struct Builder {
-    json doc = {{"asset", {{"version", "2.0"}, {"generator", "tools/fuzz/make_seeds"}}}};
-    std::vector<std::uint8_t> bin;
-
-    int addView(const void* data, std::size_t size, std::size_t stride = 0) {
-        while (bin.size() % 4 != 0) bin.push_back(0);
-        json view = {{"buffer", 0}, {"byteOffset", bin.size()}, {"byteLength", size}};
-        if (stride != 0) view["byteStride"] = stride;
-        const auto* bytes = static_cast<const std::uint8_t*>(data);
-        bin.insert(bin.end(), bytes, bytes + size);
-        doc["bufferViews"].push_back(view);
-        return static_cast<int>(doc["bufferViews"].size() - 1);
-    }
-    int addAccessor(json accessor) {
-        doc["accessors"].push_back(std::move(accessor));
-        return static_cast<int>(doc["accessors"].size() - 1);
-    }
-    int addFloats(const std::vector<float>& values, std::size_t components, const char* type) {
-        const int view = addView(values.data(), values.size() * sizeof(float));
-        return addAccessor({{"bufferView", view}, {"componentType", kFloat},
-                            {"count", values.size() / components}, {"type", type}});
-    }
-    template <typename Index>
-    int addIndices(const std::vector<Index>& indices) {
-        const int type = sizeof(Index) == 1 ? kUnsignedByte : sizeof(Index) == 2 ? kUnsignedShort : kUnsignedInt;
-        const int view = addView(indices.data(), indices.size() * sizeof(Index));
-        return addAccessor({{"bufferView", view}, {"componentType", type}, {"count", indices.size()}, {"type", "SCALAR"}});
-    }
-    int add(const char* array, json value) {
-        doc[array].push_back(std::move(value));
-        return static_cast<int>(doc[array].size() - 1);
-    }
-
-    void writeGltf(const fs::path& path) const {
-        json out = doc;
-        if (!bin.empty())
-            out["buffers"] = json::array(
-                {{{"byteLength", bin.size()}, {"uri", "data:application/octet-stream;base64," + base64(bin)}}});
-        const std::string text = out.dump(1);
-        writeBytes(path, text.data(), text.size());
-    }
-    void writeGlb(const fs::path& path) const {
-        json out = doc;
-        if (!bin.empty()) out["buffers"] = json::array({{{"byteLength", bin.size()}}});
-        std::string text = out.dump();
-        while (text.size() % 4 != 0) text += ' ';
-        std::vector<std::uint8_t> payload = bin;
-        while (payload.size() % 4 != 0) payload.push_back(0);
-        std::vector<std::uint8_t> glb;
-        const auto u32 = [&](std::uint32_t v) {
-            const std::size_t at = glb.size();
-            glb.resize(at + 4);
-            std::memcpy(glb.data() + at, &v, 4);
-        };
-        u32(0x46546C67);  // "glTF"
-        u32(2);
-        u32(static_cast<std::uint32_t>(12 + 8 + text.size() + (payload.empty() ? 0 : 8 + payload.size())));
-        u32(static_cast<std::uint32_t>(text.size()));
-        u32(0x4E4F534A);  // "JSON"
-        glb.insert(glb.end(), text.begin(), text.end());
-        if (!payload.empty()) {
-            u32(static_cast<std::uint32_t>(payload.size()));
-            u32(0x004E4942);  // "BIN\0"
-            glb.insert(glb.end(), payload.begin(), payload.end());
-        }
-        writeBytes(path, glb.data(), glb.size());
-    }
-};
+// Every seed names its generator.
+GltfBuilder seedBuilder() {
+    GltfBuilder b;
+    b.doc["asset"]["generator"] = "tools/fuzz/make_seeds";
+    return b;
+}
 
 const std::vector<float> kQuadPositions = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0};
 
 // One indexed triangle: the smallest scene that loads and draws.
-Builder triangle() {
-    Builder b;
+GltfBuilder triangle() {
+    GltfBuilder b = seedBuilder();
     const int positions = b.addFloats({0, 0, 0, 1, 0, 0, 0, 1, 0}, 3, "VEC3");
     const int indices = b.addIndices(std::vector<std::uint8_t>{0, 1, 2});
-    b.add("meshes", {{"primitives", {{{"attributes", {{"POSITION", positions}}}, {"indices", indices}}}}});
-    b.add("nodes", {{"mesh", 0}});
-    b.doc["scenes"] = json::array({{{"nodes", {0}}}});
-    b.doc["scene"] = 0;
+    b.addMesh({{"attributes", {{"POSITION", positions}}}, {"indices", indices}});
+    b.addNode({{"mesh", 0}});
+    b.setScene({0});
     return b;
 }
 
 // A textured quad: NORMAL, normalized TEXCOORD_0, material, image in a bufferView (PNG or
 // JPEG), a perspective camera on a TRS node.
-Builder texturedQuad(bool jpeg) {
-    Builder b;
+GltfBuilder texturedQuad(bool jpeg) {
+    GltfBuilder b = seedBuilder();
     const int positions = b.addFloats(kQuadPositions, 3, "VEC3");
     const int normals = b.addFloats({0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1}, 3, "VEC3");
     const std::vector<std::uint8_t> uv = {0, 255, 255, 255, 255, 0, 0, 0};
     const int uvView = b.addView(uv.data(), uv.size());
-    const int texcoords = b.addAccessor({{"bufferView", uvView}, {"componentType", kUnsignedByte},
-                                         {"normalized", true}, {"count", 4}, {"type", "VEC2"}});
+    const int texcoords = b.addAccessor(uvView, kUnsignedByte, 4, "VEC2", /*normalized=*/true);
     const int indices = b.addIndices(std::vector<std::uint16_t>{0, 1, 2, 0, 2, 3});
     const std::vector<std::uint8_t> image = encodeImage(jpeg);
     const int imageView = b.addView(image.data(), image.size());
@@ -183,8 +92,8 @@ Builder texturedQuad(bool jpeg) {
 
 // Lights, a hierarchy with matrix and TRS nodes, an orthographic camera, extras, an image
 // from a file URI and one from a data URI, a second scene.
-Builder lightsAndHierarchy() {
-    Builder b;
+GltfBuilder lightsAndHierarchy() {
+    GltfBuilder b = seedBuilder();
     const int positions = b.addFloats(kQuadPositions, 3, "VEC3");
     const int indices = b.addIndices(std::vector<std::uint32_t>{0, 1, 2, 2, 3, 0});
     b.add("images", {{"uri", "tex.png"}, {"name", "file"}});
@@ -220,15 +129,15 @@ Builder lightsAndHierarchy() {
 
 // Strips, fans, points and lines; an interleaved view (byteStride); accessor byteOffsets;
 // no scenes (every root is shown).
-Builder primitiveModes() {
-    Builder b;
+GltfBuilder primitiveModes() {
+    GltfBuilder b = seedBuilder();
     // x y z nx ny nz per vertex, interleaved.
     const std::vector<float> interleaved = {0, 0, 0, 0, 0, 1, 1, 0, 0, 0, 0, 1, 0, 1, 0, 0, 0, 1,
                                             1, 1, 0, 0, 0, 1, 0, 2, 0, 0, 0, 1};
     const int view = b.addView(interleaved.data(), interleaved.size() * sizeof(float), 24);
-    const int positions = b.addAccessor({{"bufferView", view}, {"componentType", kFloat}, {"count", 5}, {"type", "VEC3"}});
-    const int normals = b.addAccessor({{"bufferView", view}, {"byteOffset", 12}, {"componentType", kFloat},
-                                       {"count", 5}, {"type", "VEC3"}});
+    const int positions = b.addAccessor(view, kFloat, 5, "VEC3");
+    const int normals = b.add("accessors", {{"bufferView", view}, {"byteOffset", 12}, {"componentType", kFloat},
+                                            {"count", 5}, {"type", "VEC3"}});
     const int strip = b.addIndices(std::vector<std::uint16_t>{0, 1, 2, 3, 4});
     const int fan = b.addIndices(std::vector<std::uint32_t>{0, 1, 3, 2});
     const json attributes = {{"POSITION", positions}, {"NORMAL", normals}};
@@ -243,8 +152,8 @@ Builder primitiveModes() {
 
 // An accessor without a bufferView (all zeros, glTF 2.0), alone so that the other seeds
 // still load if the loader refuses these.
-Builder zeroAccessor() {
-    Builder b = triangle();
+GltfBuilder zeroAccessor() {
+    GltfBuilder b = triangle();
     b.doc["accessors"][0].erase("bufferView");
     return b;
 }
@@ -262,17 +171,24 @@ int main(int argc, char** argv) {
         if (entry.path().extension() == ".gltf" || entry.path().extension() == ".glb")
             fs::copy_file(entry.path(), out / entry.path().filename(), fs::copy_options::overwrite_existing);
 
-    const std::string minimal = R"({"asset":{"version":"2.0"}})";
-    writeBytes(out / "minimal.gltf", minimal.data(), minimal.size());
-    triangle().writeGltf(out / "triangle.gltf");
-    triangle().writeGlb(out / "triangle.glb");
-    texturedQuad(false).writeGlb(out / "quad-png.glb");
-    texturedQuad(true).writeGlb(out / "quad-jpeg.glb");
-    texturedQuad(false).writeGltf(out / "quad-png.gltf");
-    lightsAndHierarchy().writeGltf(out / "lights.gltf");
-    lightsAndHierarchy().writeGlb(out / "lights.glb");
-    primitiveModes().writeGlb(out / "modes.glb");
-    primitiveModes().writeGltf(out / "modes.gltf");
-    zeroAccessor().writeGltf(out / "zeros.gltf");
+    // Buffers inline (data URIs), so every seed is one file.
+    const auto gltf = [&](const GltfBuilder& b, const char* name) { writeText(out / name, b.gltfText(BufferStorage::DataUri)); };
+    const auto glb = [&](const GltfBuilder& b, const char* name) { writeBytes(out / name, b.glbBytes()); };
+    try {
+        writeText(out / "minimal.gltf", R"({"asset":{"version":"2.0"}})");
+        gltf(triangle(), "triangle.gltf");
+        glb(triangle(), "triangle.glb");
+        glb(texturedQuad(false), "quad-png.glb");
+        glb(texturedQuad(true), "quad-jpeg.glb");
+        gltf(texturedQuad(false), "quad-png.gltf");
+        gltf(lightsAndHierarchy(), "lights.gltf");
+        glb(lightsAndHierarchy(), "lights.glb");
+        glb(primitiveModes(), "modes.glb");
+        gltf(primitiveModes(), "modes.gltf");
+        gltf(zeroAccessor(), "zeros.gltf");
+    } catch (const std::exception& error) {
+        std::fprintf(stderr, "make_seeds: %s\n", error.what());
+        return 1;
+    }
     return 0;
 }
