@@ -13,10 +13,14 @@ out vec3 vEyePosition;
 out vec3 vEyeNormal;
 out vec2 vTexcoord;
 
+// The visibility hook's vertex part (Frame.h), appended by the engine.
+void lightTexgen(vec3 eyePosition);
+
 void main() {
     vec4 eyePosition = uModelView * vec4(inPosition, 1.0);
     vEyePosition = eyePosition.xyz;
     vEyeNormal = uNormalMatrix * inNormal;
     vTexcoord = inTexcoord;
     gl_Position = uProjection * eyePosition;
+    lightTexgen(eyePosition.xyz);
 }

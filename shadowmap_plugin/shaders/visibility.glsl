@@ -1,19 +1,19 @@
 // The shadow plugin's per-light visibility hook, inserted into the engine's lit fragment
 // shader (see engine/render/Frame.h). It returns a light's shade (lightDimming its dimming):
-//   2D maps (spot, directional): (s,t,r,q) = Ee * x_e with the eye planes
-//     Ee = S * P_light * L^-1 * V composed in double on the CPU (EYE_LINEAR texgen with
-//     world-space planes specified under modelview V^-1), and the hardware comparison
-//     r/q <= map(s/q, t/q) through a sampler2DShadow (GL_LINEAR = 2x2 PCF);
-//   cube maps (point): the major-axis depth of (x_world - light) against a samplerCubeShadow.
+//   2D maps (spot, directional): (s,t,r,q) = Ee * x_e, interpolated from the vertex part
+//     (texgen.glsl), and the hardware comparison r/q <= map(s/q, t/q) through a
+//     sampler2DShadow (GL_LINEAR = 2x2 PCF);
+//   cube maps (point): the major-axis depth of (x_world - light), also interpolated,
+//     against a samplerCubeShadow.
 // Points the map cannot speak for are decided here, explicitly, never by clamping:
 //   q <= 0 (behind the light): never lit, no back-projection;
 //   outside the map laterally: unlit for spot lights (outside the cone), lit for
 //   directional lights (their frustum is fitted to every receiver the camera sees);
 //   nearer than the near plane: lit (near is fitted to the nearest caster);
 //   beyond the far plane: compared at r = 1, i.e. behind everything the map holds.
-// The plugin generates, after this file, one sampler per shadowed light (texture unit
-// SHADOW_FIRST_UNIT + its slot) and lightVisibility() calling the functions below with
-// constant slots: only the lookups a frame needs exist in the shader. (A generic version
+// The plugin generates, after this file, one sampler and one interpolated input per
+// shadowed light (texture unit SHADOW_FIRST_UNIT + its slot) and lightVisibility() calling
+// the functions below with constant slots: only the lookups a frame needs exist in the shader. (A generic version
 // indexing sampler arrays cost llvmpipe 40 ms per 1280x720 frame even with every light
 // unshadowed: it runs the texture fetches of untaken branches.)
 
@@ -23,17 +23,15 @@
 // point of a light without a map this frame (1 for lights without shadows, 0 for a spot
 // light whose frustum holds nothing the camera sees: every visible point is outside it).
 uniform vec4 uShadowParams[MAX_LIGHTS];
-uniform mat4 uShadowEyePlanes[MAX_LIGHTS];   // Ee, rows s,t,r,q (2D maps)
 uniform vec4 uShadowPointLight[MAX_LIGHTS];  // eye-space light position, near (cube maps)
 uniform float uShadowPointFar[MAX_LIGHTS];   // far (cube maps); 0 = infinite
-uniform mat3 uShadowEyeToWorld;              // rotation of V: cube lookups use world axes
 
 // Branch-free on purpose: llvmpipe runs a fragment shader on SIMD lanes, and early returns
 // cost it more than always sampling (measured: 34.6 -> 28 ms for one light at 1280x720).
 // Reversed Z flips the depth range: nearer than near is r > 1, beyond far is r < 0, and
 // "behind everything the map holds" is r = 0.
-float shadowMap2D(int slot, vec3 eyePosition, sampler2DShadow map) {
-    vec4 coord = uShadowEyePlanes[slot] * vec4(eyePosition, 1.0);
+// coord: (s,t,r,q) from the vertex part (texgen.glsl).
+float shadowMap2D(int slot, vec4 coord, sampler2DShadow map) {
     vec3 p = coord.xyz / coord.w;
     bool reversed = uShadowParams[slot].x > 0.5;
     float reference = p.z - uShadowParams[slot].y;
@@ -70,8 +68,7 @@ vec4 comparisonColor(float reference, float stored) {
     return reference > stored ? vec4(0.85, 0.1, 0.1, 1.0) : vec4(0.1, 0.2, 0.9, 1.0);
 }
 
-vec4 comparison2D(int slot, vec3 eyePosition, sampler2D depth) {
-    vec4 coord = uShadowEyePlanes[slot] * vec4(eyePosition, 1.0);
+vec4 comparison2D(int slot, vec4 coord, sampler2D depth) {
     vec3 p = coord.xyz / coord.w;
     if (coord.w <= 0.0 || any(lessThan(p, vec3(0.0))) || any(greaterThan(p, vec3(1.0))))
         return vec4(0.4, 0.4, 0.4, 1.0);
@@ -80,8 +77,7 @@ vec4 comparison2D(int slot, vec3 eyePosition, sampler2D depth) {
     return uShadowParams[slot].x > 0.5 ? comparisonColor(stored, p.z) : comparisonColor(p.z, stored);
 }
 
-vec4 comparisonCube(int slot, vec3 eyePosition, samplerCube depth) {
-    vec3 toPoint = uShadowEyeToWorld * (eyePosition - uShadowPointLight[slot].xyz);
+vec4 comparisonCube(int slot, vec3 toPoint, samplerCube depth) {
     float major = max(max(abs(toPoint.x), abs(toPoint.y)), abs(toPoint.z));
     float reference = cubeReferenceDepth(slot, major);
     bool reversed = uShadowParams[slot].x > 0.5;
@@ -91,8 +87,8 @@ vec4 comparisonCube(int slot, vec3 eyePosition, samplerCube depth) {
     return reversed ? comparisonColor(stored, reference) : comparisonColor(reference, stored);
 }
 
-float shadowMapCube(int slot, vec3 eyePosition, samplerCubeShadow map) {
-    vec3 toPoint = uShadowEyeToWorld * (eyePosition - uShadowPointLight[slot].xyz);
+// toPoint: light -> point along world axes, from the vertex part (texgen.glsl).
+float shadowMapCube(int slot, vec3 toPoint, samplerCubeShadow map) {
     float major = max(max(abs(toPoint.x), abs(toPoint.y)), abs(toPoint.z));
     if (major < uShadowPointLight[slot].w) return 1.0;
     float depth = cubeReferenceDepth(slot, major) - uShadowParams[slot].y;

@@ -31,6 +31,9 @@ constexpr const char* kNoShadowsGlsl =
     "    return vec4(0.3, 0.3, 0.3, 1.0);\n"
     "}\n";
 
+// A hook without a vertex part.
+constexpr const char* kNoTexgenGlsl = "void lightTexgen(vec3 eyePosition) {}\n";
+
 // std140 layout of lit.frag's LightData.
 struct LightData {
     glm::vec4 positionRange;
@@ -81,18 +84,20 @@ LitPass::LitPass(const RendererConfig& config)
       lightBuffer_(gl::Buffer::create(sizeof(LightData) * kMaxLights, nullptr,
                                       GL_DYNAMIC_STORAGE_BIT)) {}
 
-const gl::Program& LitPass::programFor(const std::string& visibilityGlsl, int lightCount,
+const gl::Program& LitPass::programFor(const LightVisibilityHook* hook, int lightCount,
                                       Output output, const std::string& loadShadesGlsl) {
+    const std::string visibilityGlsl = hook ? hook->glsl : kNoShadowsGlsl;
+    const std::string vertexTail = hook && !hook->vertexGlsl.empty() ? hook->vertexGlsl : kNoTexgenGlsl;
     const std::string header = "#version 450 core\n#define MAX_LIGHTS " + std::to_string(kMaxLights) +
                                "\n#define LIGHT_COUNT " + std::to_string(lightCount) + "\n" +
                                (output == Output::Comparison ? "#define LIGHT_DEBUG_VIEW\n" : "") +
                                (output == Output::ShadowMask ? "#define LIGHT_MASK_VIEW\n" : "");
     const std::string fragmentTail = visibilityGlsl + "\n" + loadShadesGlsl;
-    const std::string key = header + fragmentTail;
+    const std::string key = header + vertexTail + fragmentTail;
     auto found = programs_.find(key);
     if (found != programs_.end()) return *found->second;
     auto program = std::make_unique<gl::Program>(gl::Program::compile(
-        "lit", {{GL_VERTEX_SHADER, header + shaders::lit_vert},
+        "lit", {{GL_VERTEX_SHADER, header + shaders::lit_vert + "\n" + vertexTail},
                 {GL_FRAGMENT_SHADER, header + shaders::lit_frag + "\n" + fragmentTail}}));
     return *programs_.emplace(key, std::move(program)).first->second;
 }
@@ -176,8 +181,7 @@ void LitPass::addPass(Frame& frame, const std::string& name, ResourceHandle targ
     }
     const std::string loadShadesGlsl =
         output == Output::Color ? shadePlan_.glsl() : ShadeCache::uncached(lightCount).glsl();
-    const gl::Program& program = programFor(hook ? hook->glsl : kNoShadowsGlsl, lightCount,
-                                            output, loadShadesGlsl);
+    const gl::Program& program = programFor(hook ? &*hook : nullptr, lightCount, output, loadShadesGlsl);
     // Setup runs inside addPass, after both callbacks were built: share the handles it
     // declares with the execute callback through one small heap object.
     struct Handles { ResourceHandle target, depth; };

@@ -20,6 +20,7 @@ namespace shadowmap {
 
 namespace shaders {
 extern const char visibility_glsl[];
+extern const char texgen_glsl[];
 }
 
 namespace {
@@ -314,9 +315,10 @@ engine::LightVisibilityHook ShadowMapPlugin::makeHook(const engine::Frame& frame
     std::vector<std::pair<int, unsigned>> rawUnits;   // texture unit, map (raw depth, debug)
     std::vector<std::uint64_t> shadeKeys(lights_.size(), 0);  // 0: no map, a constant shade
 
-    // The generated part of the hook: one sampler per shadowed light and a dispatch on the
-    // slot with constant arguments (see visibility.glsl for why).
-    std::string samplers, dispatch, debugDispatch;
+    // The generated part of the hook: per shadowed light one sampler, one interpolated
+    // coordinate set per vertex, and a dispatch on the slot with constant arguments (see
+    // visibility.glsl for why).
+    std::string declarations, dispatch, debugDispatch, texgenOutputs, texgen;
     for (const LightShadow& light : lights_) {
         const LightShadowFrame& plan = light.frame;
         // Outside a spot light's frustum is outside its cone: never lit by it. Directional
@@ -367,19 +369,25 @@ engine::LightVisibilityHook ShadowMapPlugin::makeHook(const engine::Frame& frame
         const bool debuggable = rawUnit < maxTextureUnits_;
         if (debuggable) rawUnits.emplace_back(rawUnit, light.map.id());
         const bool cube = plan.kind == MapKind::Cube;
+        // The lookup's coordinates come interpolated from the vertex part (texgen.glsl).
+        const std::string coordinate = (cube ? "vShadowToPoint" : "vShadowCoord") + slot;
+        const std::string coordinateType = cube ? "vec3 " : "vec4 ";
+        texgenOutputs += "out " + coordinateType + coordinate + ";\n";
+        texgen += "    " + coordinate + (cube ? " = shadowToPoint(" : " = shadowCoord(") + slot + ", eyePosition);\n";
+        declarations += "in " + coordinateType + coordinate + ";\n";
         if (debuggable) {
-            samplers += "layout(binding = " + std::to_string(rawUnit) + ") uniform " +
+            declarations += "layout(binding = " + std::to_string(rawUnit) + ") uniform " +
                         (cube ? "samplerCube" : "sampler2D") + " uShadowDepth" + slot + ";\n";
             debugDispatch += "    if (lightSlot == " + slot + ") return " +
-                             (cube ? "comparisonCube(" : "comparison2D(") + slot +
-                             ", eyePosition, uShadowDepth" + slot + ");\n";
+                             (cube ? "comparisonCube(" : "comparison2D(") + slot + ", " + coordinate +
+                             ", uShadowDepth" + slot + ");\n";
         }
         if (plan.kind == MapKind::Map2D) {
             // Ee = Epo * V with Epo = S * P_light * L^-1, composed in double (DESIGN.md).
             eyePlanes[light.slot] = uploaded;
-            samplers += "layout(binding = " + unit + ") uniform sampler2DShadow uShadowMap" + slot + ";\n";
-            dispatch += "    if (lightSlot == " + slot + ") return shadowMap2D(" + slot +
-                        ", eyePosition, uShadowMap" + slot + ");\n";
+            declarations += "layout(binding = " + unit + ") uniform sampler2DShadow uShadowMap" + slot + ";\n";
+            dispatch += "    if (lightSlot == " + slot + ") return shadowMap2D(" + slot + ", " + coordinate +
+                        ", uShadowMap" + slot + ");\n";
         } else {
             const glm::dvec3 lightPosition = frame.scene().lightInstances[light.slot].position();
             pointLight[light.slot] = glm::vec4(glm::vec3(view * glm::dvec4(lightPosition, 1.0)),
@@ -387,21 +395,23 @@ engine::LightVisibilityHook ShadowMapPlugin::makeHook(const engine::Frame& frame
             // 0 stands for an infinite far plane (GLSL has no infinity to pass).
             pointFar[light.slot] = std::isinf(plan.pointViews.farPlane) ? 0.0f
                                                                         : static_cast<float>(plan.pointViews.farPlane);
-            samplers += "layout(binding = " + unit + ") uniform samplerCubeShadow uShadowMap" + slot + ";\n";
-            dispatch += "    if (lightSlot == " + slot + ") return shadowMapCube(" + slot +
-                        ", eyePosition, uShadowMap" + slot + ");\n";
+            declarations += "layout(binding = " + unit + ") uniform samplerCubeShadow uShadowMap" + slot + ";\n";
+            dispatch += "    if (lightSlot == " + slot + ") return shadowMapCube(" + slot + ", " + coordinate +
+                        ", uShadowMap" + slot + ");\n";
         }
     }
 
     engine::LightVisibilityHook hook;
     hook.owner = name();
     hook.shadeKeys = std::move(shadeKeys);
-    hook.glsl = std::string(shaders::visibility_glsl) + samplers +
+    hook.glsl = std::string(shaders::visibility_glsl) + declarations +
                 "float lightVisibility(int lightSlot, vec3 eyePosition, vec3 eyeNormal) {\n" + dispatch +
                 "    return uShadowParams[lightSlot].w;\n}\n" +
                 "float lightDimming(int lightSlot) {\n    return uShadowParams[lightSlot].z;\n}\n" +
                 "vec4 lightDebugColor(int lightSlot, vec3 eyePosition, vec3 eyeNormal) {\n" +
                 debugDispatch + "    return vec4(0.4, 0.4, 0.4, 1.0);\n}\n";
+    hook.vertexGlsl = std::string(shaders::texgen_glsl) + texgenOutputs +
+                      "void lightTexgen(vec3 eyePosition) {\n" + texgen + "}\n";
     const unsigned rawSampler = rawDepthSampler().id();
     const glm::mat3 eyeToWorldRotation = glm::mat3(glm::dmat3(eyeToWorld));
     hook.bind = [=](const engine::gl::Program& program, const engine::PassContext&) {

@@ -40,6 +40,10 @@ struct FrameCamera {
 // the light's dimming d in [0,1], and
 //     vec4 lightDebugColor(int lightSlot, vec3 eyePosition, vec3 eyeNormal);
 // a picture of how it decided (engine-render --shadow-compare shows it).
+// `vertexGlsl` (optional) is inserted into the lit vertex shader and must then define
+//     void lightTexgen(vec3 eyePosition);
+// called once per vertex with its eye-space position, to set the hook's own outputs
+// (e.g. shadow-map coordinates, which the fragment part declares as inputs).
 // The lit pass then uses diffuseShade = d + (1 - d) * shade for diffuse and shade for
 // specular. `bind` runs before the lit pass draws (uniforms; textures on units
 // >= kFirstPluginTextureUnit), and `reads` are the graph resources it samples.
@@ -52,6 +56,7 @@ struct FrameCamera {
 struct LightVisibilityHook {
     std::string owner;  // plugin name, for messages
     std::string glsl;
+    std::string vertexGlsl;
     std::vector<ResourceHandle> reads;
     std::function<void(const gl::Program&, const PassContext&)> bind;
     std::vector<std::uint64_t> shadeKeys;

@@ -40,7 +40,7 @@ private:
                  int maskSlot);
     // One program per hook source, light count, output view and shade-cache plan
     // (fetched / computed lights), compiled on first use.
-    const gl::Program& programFor(const std::string& visibilityGlsl, int lightCount, Output output,
+    const gl::Program& programFor(const LightVisibilityHook* hook, int lightCount, Output output,
                                   const std::string& loadShadesGlsl);
     // Binds the array the plan fetches from and attaches the one it writes as outputs 1...
     void attachShadeCache(const gl::Framebuffer& framebuffer, const ShadeCache::Plan& plan);
