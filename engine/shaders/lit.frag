@@ -24,6 +24,7 @@ layout(std140, binding = 0) uniform Lights {
     LightData uLights[MAX_LIGHTS];
 };
 uniform vec3 uAmbient;
+uniform float uLightDimming[MAX_LIGHTS];  // the visibility hook's d per light
 
 uniform vec4 uBaseColorFactor;
 uniform float uMetallic;
@@ -48,7 +49,6 @@ in vec2 vTexcoord;
 layout(location = 0) out vec4 outColor;
 
 float lightVisibility(int lightSlot, vec3 eyePosition, vec3 eyeNormal);
-float lightDimming(int lightSlot);
 vec4 lightDebugColor(int lightSlot, vec3 eyePosition, vec3 eyeNormal);
 
 float shadeOf(int lightSlot, vec3 eyePosition, vec3 eyeNormal) {
@@ -124,8 +124,10 @@ void main() {
                         pow(max(dot(N, H), 0.0), shininess) * radiance;
 
         float shade = shades[i];
-        float dimming = lightDimming(i);
-        float diffuseShade = dimming + (1.0 - dimming) * shade;
+        float dimming = uLightDimming[i];
+        // d + (1 - d) * shade, written so that a constant shade of 1 (no shadows) folds
+        // away at compile time whatever d is.
+        float diffuseShade = 1.0 - (1.0 - dimming) * (1.0 - shade);
         color += diffuseShade * diffuse + shade * specular;
     }
 #endif

@@ -1,5 +1,5 @@
 // The shadow plugin's per-light visibility hook, inserted into the engine's lit fragment
-// shader (see engine/render/Frame.h). It returns a light's shade (lightDimming its dimming):
+// shader (see engine/render/Frame.h). It returns a light's shade (its dimming goes to the engine as a number):
 //   2D maps (spot, directional): (s,t,r,q) = Ee * x_e, interpolated from the vertex part
 //     (texgen.glsl), and the hardware comparison r/q <= map(s/q, t/q) through a
 //     sampler2DShadow (GL_LINEAR = 2x2 PCF);
@@ -19,7 +19,8 @@
 
 // x: 1 = reversed Z (ShadowSettings reversed_z: window depth 1 at near, 0 at far, and the
 // map compares with GL_GEQUAL), y: bias subtracted from the reference depth (d32f without
-// reversed Z, see ShadowSettings.h), z: dimming, w: the shade outside the map (2D maps) or of every
+// reversed Z, see ShadowSettings.h), z: dimming (applied by the engine, hook.dimming), w: the
+// shade outside the map (2D maps) or of every
 // point of a light without a map this frame (1 for lights without shadows, 0 for a spot
 // light whose frustum holds nothing the camera sees: every visible point is outside it).
 uniform vec4 uShadowParams[MAX_LIGHTS];

@@ -8,6 +8,7 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 namespace engine {
@@ -24,9 +25,7 @@ constexpr const char* kNoShadowsGlsl =
     "float lightVisibility(int lightSlot, vec3 eyePosition, vec3 eyeNormal) {\n"
     "    return 1.0;\n"
     "}\n"
-    "float lightDimming(int lightSlot) {\n"
-    "    return 0.0;\n"
-    "}\n"
+
     "vec4 lightDebugColor(int lightSlot, vec3 eyePosition, vec3 eyeNormal) {\n"
     "    return vec4(0.3, 0.3, 0.3, 1.0);\n"
     "}\n";
@@ -181,7 +180,15 @@ void LitPass::addPass(Frame& frame, const std::string& name, ResourceHandle targ
     }
     const std::string loadShadesGlsl =
         output == Output::Color ? shadePlan_.glsl() : ShadeCache::uncached(lightCount).glsl();
-    const gl::Program& program = programFor(hook ? &*hook : nullptr, lightCount, output, loadShadesGlsl);
+    // A shaded image that takes every light's shade from the cache needs none of the hook's
+    // code: leaving it out spares llvmpipe its interpolated inputs and uniforms (measured:
+    // 16.8 -> 15.7 ms for the showcase at 1280x720, whose unshadowed frame takes 14.0).
+    const bool evaluatesHook = output != Output::Color || shadePlan_.evaluatesHook();
+    const LightVisibilityHook* shading = hook && evaluatesHook ? &*hook : nullptr;
+    const gl::Program& program = programFor(shading, lightCount, output, loadShadesGlsl);
+    std::vector<float> dimming(kMaxLights, 0.0f);
+    if (hook)
+        std::copy_n(hook->dimming.begin(), std::min<std::size_t>(hook->dimming.size(), kMaxLights), dimming.begin());
     // Setup runs inside addPass, after both callbacks were built: share the handles it
     // declares with the execute callback through one small heap object.
     struct Handles { ResourceHandle target, depth; };
@@ -190,14 +197,14 @@ void LitPass::addPass(Frame& frame, const std::string& name, ResourceHandle targ
     frame.graph().addPass(
         name,
         [&](PassBuilder& builder) {
-            if (hook)
-                for (ResourceHandle read : hook->reads) builder.read(read);
+            if (shading)
+                for (ResourceHandle read : shading->reads) builder.read(read);
             handles->depth = builder.create(
                 name + "_depth",
                 {frame.camera().width, frame.camera().height, TextureFormat::Depth32F});
             handles->target = builder.write(target);
         },
-        [this, &frame, &program, handles, output, maskSlot](PassContext& context) {
+        [this, &frame, &program, handles, output, maskSlot, shading, dimming](PassContext& context) {
             const bool color = output == Output::Color;
             if (color) uploadLights(frame.scene(), frame.camera());
             gl::Framebuffer framebuffer = gl::Framebuffer::create();
@@ -219,8 +226,8 @@ void LitPass::addPass(Frame& frame, const std::string& name, ResourceHandle targ
             glDepthFunc(GL_LESS);
             program.use();
             program.set("uMaskLight", maskSlot);
-            const auto& visibility = frame.lightVisibility();
-            if (visibility && visibility->bind) visibility->bind(program, context);
+            program.set("uLightDimming", dimming);
+            if (shading && shading->bind) shading->bind(program, context);
             drawScene(frame, program, context);
             glDisable(GL_FRAMEBUFFER_SRGB);
             glBindFramebuffer(GL_FRAMEBUFFER, 0);

@@ -404,10 +404,10 @@ engine::LightVisibilityHook ShadowMapPlugin::makeHook(const engine::Frame& frame
     engine::LightVisibilityHook hook;
     hook.owner = name();
     hook.shadeKeys = std::move(shadeKeys);
+    for (const glm::vec4& light : params) hook.dimming.push_back(light.z);
     hook.glsl = std::string(shaders::visibility_glsl) + declarations +
                 "float lightVisibility(int lightSlot, vec3 eyePosition, vec3 eyeNormal) {\n" + dispatch +
                 "    return uShadowParams[lightSlot].w;\n}\n" +
-                "float lightDimming(int lightSlot) {\n    return uShadowParams[lightSlot].z;\n}\n" +
                 "vec4 lightDebugColor(int lightSlot, vec3 eyePosition, vec3 eyeNormal) {\n" +
                 debugDispatch + "    return vec4(0.4, 0.4, 0.4, 1.0);\n}\n";
     hook.vertexGlsl = std::string(shaders::texgen_glsl) + texgenOutputs +

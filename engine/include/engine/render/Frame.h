@@ -35,30 +35,31 @@ struct FrameCamera {
 // `glsl` is inserted into the lit fragment shader (GLSL 4.50 core, after the engine's own
 // declarations) and must define
 //     float lightVisibility(int lightSlot, vec3 eyePosition, vec3 eyeNormal);
-// the shade in [0,1] of that light at that eye-space point,
-//     float lightDimming(int lightSlot);
-// the light's dimming d in [0,1], and
+// the shade in [0,1] of that light at that eye-space point, and
 //     vec4 lightDebugColor(int lightSlot, vec3 eyePosition, vec3 eyeNormal);
 // a picture of how it decided (engine-render --shadow-compare shows it).
 // `vertexGlsl` (optional) is inserted into the lit vertex shader and must then define
 //     void lightTexgen(vec3 eyePosition);
 // called once per vertex with its eye-space position, to set the hook's own outputs
 // (e.g. shadow-map coordinates, which the fragment part declares as inputs).
-// The lit pass then uses diffuseShade = d + (1 - d) * shade for diffuse and shade for
-// specular. `bind` runs before the lit pass draws (uniforms; textures on units
+// `dimming` (by light slot; missing = 0) is each light's dimming d in [0,1]: the lit pass
+// uses diffuseShade = d + (1 - d) * shade for diffuse and shade for specular.
+// `bind` runs before the lit pass draws (uniforms; textures on units
 // >= kFirstPluginTextureUnit), and `reads` are the graph resources it samples.
 //
 // `shadeKeys` (by light slot; missing or 0 = "evaluate every frame") lets the lit pass
 // reuse a light's shade from the previous frame, per pixel (ShadeCache.h): a plugin gives
 // a light a key that changes whenever lightVisibility could return something else for the
 // same eye-space point under the same camera (its map, its parameters). The engine adds
-// the camera and the visible geometry to the key itself.
+// the camera and the visible geometry to the key itself. A frame that takes every light's
+// shade from the cache leaves the hook's code (both parts) and `bind` out of its program.
 struct LightVisibilityHook {
     std::string owner;  // plugin name, for messages
     std::string glsl;
     std::string vertexGlsl;
     std::vector<ResourceHandle> reads;
     std::function<void(const gl::Program&, const PassContext&)> bind;
+    std::vector<float> dimming;
     std::vector<std::uint64_t> shadeKeys;
 };
 

@@ -39,6 +39,8 @@ public:
         std::vector<std::uint64_t> writtenKeys;  // by channel, once writeArray is drawn
 
         int count(Source source) const;
+        // Some light's shade comes from the visibility hook this frame (not all fetched).
+        bool evaluatesHook() const { return count(Source::Inline) + count(Source::Compute) > 0; }
         // GLSL appended to the lit fragment shader (see lit.frag): loadShades(), which
         // fills every light's shade from its source, and the cache's sampler and outputs
         // when it has layers. Empty without lights.
