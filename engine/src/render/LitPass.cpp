@@ -173,9 +173,9 @@ void LitPass::addPass(Frame& frame, const std::string& name, ResourceHandle targ
         std::min(static_cast<int>(frame.scene().lightInstances.size()), kMaxLights);
     // Only the shaded image uses the shade cache: the per-light views always ask the hook.
     if (output == Output::Color) {
-        const bool cacheable = config_.shadeCache && hook && !hook->shadeKeys.empty();
-        shadePlan_ = cacheable ? shadeCache_.plan(shadeViewKey(frame, sceneGeneration_), hook->shadeKeys,
-                                                  lightCount, frame.camera().width, frame.camera().height)
+        const bool cacheable = config_.shadeCache && hook;
+        shadePlan_ = cacheable ? shadeCache_.plan(shadeViewKey(frame, sceneGeneration_), *hook, lightCount,
+                                                  frame.camera().width, frame.camera().height)
                                : ShadeCache::uncached(lightCount);
     }
     const std::string loadShadesGlsl =

@@ -3,12 +3,20 @@
 #include "engine/util/Hasher.h"
 
 #include <algorithm>
+#include <cstdio>
 
 namespace engine {
 
 namespace {
 constexpr int kChannelsPerLayer = 4;
 const char* const kComponents[kChannelsPerLayer] = {"x", "y", "z", "w"};
+
+// A GLSL float literal that reads back as exactly `value`.
+std::string glslFloat(float value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.9e", static_cast<double>(value));
+    return text;
+}
 } // namespace
 
 int ShadeCache::Plan::count(Source source) const {
@@ -40,6 +48,8 @@ std::string ShadeCache::Plan::glsl() const {
         if (sources[slot] == Source::Fetch)
             code += target + "cached" + std::to_string(channel / kChannelsPerLayer) + "." +
                     kComponents[channel % kChannelsPerLayer] + ";\n";
+        else if (sources[slot] == Source::Constant)  // a literal: 1 folds away entirely
+            code += target + "uReceiveShadows ? " + glslFloat(constants[slot]) + " : 1.0;\n";
         else
             code += target + "shadeOf(" + std::to_string(slot) + ", eyePosition, eyeNormal);\n";
         if (channel >= 0) layerValues[channel] = "shades[" + std::to_string(slot) + "]";
@@ -67,15 +77,23 @@ ShadeCache::Plan ShadeCache::uncached(int lightCount) {
     Plan plan;
     plan.sources.assign(lightCount, Source::Inline);
     plan.channels.assign(lightCount, -1);
+    plan.constants.assign(lightCount, 1.0f);
     return plan;
 }
 
-ShadeCache::Plan ShadeCache::plan(std::uint64_t viewKey, const std::vector<std::uint64_t>& shadeKeys,
-                                  int lightCount, int width, int height) {
+ShadeCache::Plan ShadeCache::plan(std::uint64_t viewKey, const LightVisibilityHook& hook, int lightCount,
+                                  int width, int height) {
     Plan plan = uncached(lightCount);
+    const std::vector<std::uint64_t>& shadeKeys = hook.shadeKeys;
     int cached = 0;
-    for (int slot = 0; slot < lightCount; ++slot)
-        if (slot < static_cast<int>(shadeKeys.size()) && shadeKeys[slot] != 0) plan.channels[slot] = cached++;
+    for (int slot = 0; slot < lightCount; ++slot) {
+        if (const auto constant = hook.constantShades.find(slot); constant != hook.constantShades.end()) {
+            plan.sources[slot] = Source::Constant;
+            plan.constants[slot] = constant->second;
+        } else if (slot < static_cast<int>(shadeKeys.size()) && shadeKeys[slot] != 0) {
+            plan.channels[slot] = cached++;
+        }
+    }
     if (cached == 0) return plan;
     plan.layers = (cached + kChannelsPerLayer - 1) / kChannelsPerLayer;
     ensureArrays(width, height, plan.layers);

@@ -403,6 +403,10 @@ engine::LightVisibilityHook ShadowMapPlugin::makeHook(const engine::Frame& frame
 
     engine::LightVisibilityHook hook;
     hook.owner = name();
+    // A light without a map this frame has one shade everywhere (1, or 0 for a spot light
+    // whose frustum holds nothing visible): the lit pass needs no lookup for it.
+    for (const LightShadow& light : lights_)
+        if (shadeKeys[light.slot] == 0) hook.constantShades[light.slot] = params[light.slot].w;
     hook.shadeKeys = std::move(shadeKeys);
     for (const glm::vec4& light : params) hook.dimming.push_back(light.z);
     hook.glsl = std::string(shaders::visibility_glsl) + declarations +

@@ -58,11 +58,15 @@ TEST_F(ShadeCacheTest, AStaticSceneComputesEachShadeOnceThenFetchesIt) {
     const engine::FrameResult first = session.frame();
     EXPECT_EQ(first.shadeCache["layers"], 1);
     EXPECT_EQ(slots(first, "computed"), (std::vector<int>{0, 1}));
-    EXPECT_EQ(slots(first, "uncached"), (std::vector<int>{2}));
+    EXPECT_EQ(slots(first, "constant"), (std::vector<int>{2}));  // variant none: shade 1
+    EXPECT_NE(first.graphviz.find(" -> p"), std::string::npos) << first.graphviz;
     for (int frame = 1; frame < 4; ++frame) {
         const engine::FrameResult later = session.frame();
         EXPECT_EQ(slots(later, "fetched"), (std::vector<int>{0, 1})) << "frame " << frame;
         EXPECT_TRUE(slots(later, "computed").empty()) << "frame " << frame;
+        // Every shade reused: the lit pass reads no shadow map (the graph has no edge from
+        // a resource into a pass; frame 0's lit pass reads both maps).
+        EXPECT_EQ(later.graphviz.find(" -> p"), std::string::npos) << later.graphviz;
     }
 }
 
@@ -116,7 +120,7 @@ TEST_F(ShadeCacheTest, ShadeCacheOffOrNoShadowedLightMeansNoCache) {
 }
 
 TEST_F(ShadeCacheTest, ReusedShadeGivesTheImageOfAFreshFrame) {
-    // Five shadowed lights (two cache layers) and a camera, lights and a caster that move
+    // Five shadowed lights (two cache layers), two constant ones, and a camera, lights and a caster that move
     // and stop: after every change and every still frame, the image equals that of a
     // renderer that caches neither maps nor shade. Shade is cached as exact floats, so
     // the images are compared exactly.
@@ -129,6 +133,10 @@ TEST_F(ShadeCacheTest, ReusedShadeGivesTheImageOfAFreshFrame) {
     builder.addLight("sun", Light::Type::Directional, {4, 9, 3}, {0, 0, 0});
     builder.addLight("spot2", Light::Type::Spot, {5, 7, -4}, {0, 0, 0}, {{"filter", "nearest"}});
     builder.addLight("bulb2", Light::Type::Point, {-3, 3, 3}, {0, 0, 0}, {{"variant", "backface"}});
+    // Two lights with one shade everywhere: no shadows (1), and a spot facing the sky,
+    // whose frustum holds nothing the camera sees (0).
+    builder.addLight("plain", Light::Type::Spot, {3, 6, 3}, {0, 0, 0}, {{"variant", "none"}});
+    builder.addLight("skyward", Light::Type::Spot, {0, 5, 0}, {0, 10, 0});
     engine::Scene scene = builder.build();
 
     engine::PluginHost freshHost;
@@ -151,6 +159,7 @@ TEST_F(ShadeCacheTest, ReusedShadeGivesTheImageOfAFreshFrame) {
         const engine::FrameResult result = cached.renderFrame(request);
         fresh.renderFrame(request);
         EXPECT_EQ(result.shadeCache["layers"], 2);
+        EXPECT_EQ(slots(result, "constant"), (std::vector<int>{5, 6}));
         fetchedFrames += !slots(result, "fetched").empty();
         const std::vector<std::uint8_t> image = cached.readColor(), expected = fresh.readColor();
         ASSERT_EQ(image.size(), expected.size());

@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -53,6 +54,9 @@ struct FrameCamera {
 // same eye-space point under the same camera (its map, its parameters). The engine adds
 // the camera and the visible geometry to the key itself. A frame that takes every light's
 // shade from the cache leaves the hook's code (both parts) and `bind` out of its program.
+// `constantShades` (by light slot) names lights whose shade is the same at every point this
+// frame (e.g. no map: 1, or 0 for a spot whose frustum holds nothing visible); the lit pass
+// then uses that number instead of calling lightVisibility for them.
 struct LightVisibilityHook {
     std::string owner;  // plugin name, for messages
     std::string glsl;
@@ -61,6 +65,7 @@ struct LightVisibilityHook {
     std::function<void(const gl::Program&, const PassContext&)> bind;
     std::vector<float> dimming;
     std::vector<std::uint64_t> shadeKeys;
+    std::map<int, float> constantShades;
 };
 
 class Frame {

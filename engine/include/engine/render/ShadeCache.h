@@ -15,6 +15,7 @@
 // image), so overdraw cannot leave a hidden surface's shade behind; and since the key
 // covers camera and geometry, the next frame covers exactly the same pixels.
 #include "engine/gl/Texture.h"
+#include "engine/render/Frame.h"
 
 #include <cstdint>
 #include <string>
@@ -27,12 +28,14 @@ public:
     // Where the lit pass takes a light's shade from this frame.
     enum class Source {
         Inline,   // the hook gave no key: evaluated, not cached
+        Constant, // the hook says it is one number everywhere: that number
         Fetch,    // still valid: read from the cache
         Compute,  // stale or new: evaluated and written to the cache
     };
     struct Plan {
         std::vector<Source> sources;  // by light slot
-        std::vector<int> channels;    // by slot: layer * 4 + component, or -1 (Inline)
+        std::vector<int> channels;    // by slot: layer * 4 + component, or -1 (not cached)
+        std::vector<float> constants; // by slot: the shade of a Constant light
         int layers = 0;               // 0: nothing cached, the lit pass runs without the cache
         unsigned readArray = 0;       // the array fetched from (0 if nothing is fetched)
         unsigned writeArray = 0;      // the array written (0 if nothing is computed)
@@ -47,10 +50,9 @@ public:
         std::string glsl() const;
     };
 
-    // lightCount: the lit pass's lights; shadeKeys: the hook's (by slot, 0 = none);
+    // lightCount: the lit pass's lights; the hook's shade keys and constant shades;
     // viewKey: what the engine adds (camera, target size, visible geometry).
-    Plan plan(std::uint64_t viewKey, const std::vector<std::uint64_t>& shadeKeys, int lightCount,
-              int width, int height);
+    Plan plan(std::uint64_t viewKey, const LightVisibilityHook& hook, int lightCount, int width, int height);
     // Every light evaluated, nothing cached (the cache is off, or the hook gives no keys).
     static Plan uncached(int lightCount);
     // The lit pass has drawn `plan`: its written array is now the valid one.
