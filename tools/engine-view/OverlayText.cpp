@@ -26,6 +26,19 @@ bool OverlayText::lightPassMs(const engine::FrameResult& frame, const std::strin
     return ran;
 }
 
+std::string OverlayText::shadeSource(const nlohmann::json& shadeCache, int slot) {
+    static const std::pair<const char*, const char*> kSources[] = {
+        {"fetched", "shade reused"}, {"computed", "shade computed"},
+        {"uncached", "shade live"}, {"constant", "shade constant"}};
+    for (const auto& [key, text] : kSources) {
+        const auto list = shadeCache.find(key);
+        if (list == shadeCache.end() || !list->is_array()) continue;
+        for (const nlohmann::json& entry : *list)
+            if (entry.is_number_integer() && entry.get<int>() == slot) return text;
+    }
+    return {};
+}
+
 void OverlayText::recordFrame(const engine::FrameResult& frame, const ViewerState& state) {
     for (const ViewedLight& light : state.lights()) {
         double ms = 0.0;
@@ -66,6 +79,8 @@ std::vector<OverlayLine> OverlayText::lines(const ViewerState& state, const engi
                 const auto last = lastMs_.find(light.name);
                 line += last != lastMs_.end() ? format("\t%.2f ms\tcached", last->second) : std::string("\t\tcached");
             }
+            line += '\t';
+            line += shadeSource(frame.shadeCache, light.slot);
         }
         out.push_back({line, static_cast<int>(i) == selected ? kSelected : kPlain});
     }

@@ -1,6 +1,7 @@
 #pragma once
 // What the overlay says: one line per light (variant, map size, depth format, filter,
-// polygon offset, dimming, ms of its passes, cached or rendered), the frame's time, view
+// polygon offset, dimming, ms of its passes, cached or rendered, where the lit pass took its
+// shade from), the frame's time, view
 // and camera, the view's notes, a transient status message, and the keys.
 #include "Overlay.h"
 #include "ViewerState.h"
@@ -24,6 +25,11 @@ public:
     // The wall time of light `name`'s passes in `frame` ("shadow_<name>" and, for woo,
     // "shadow_<name>_first_layer"); false when none ran (cached, none, culled).
     static bool lightPassMs(const engine::FrameResult& frame, const std::string& name, double& ms);
+
+    // Where the frame's lit pass took light `slot`'s shade from, from FrameResult::shadeCache:
+    // "shade reused" (shade cache), "shade computed" (and cached), "shade live" (evaluated,
+    // not cached), "shade constant", or "" when the frame does not say.
+    static std::string shadeSource(const nlohmann::json& shadeCache, int slot);
 
 private:
     std::map<std::string, double> lastMs_;

@@ -1,6 +1,7 @@
 // engine-view without a window: saving settings in place (every other byte kept), the
 // script grammar and its errors, and the per-light edits the keys make.
 #include "JsonSpans.h"
+#include "OverlayText.h"
 #include "SaveSettings.h"
 #include "Script.h"
 #include "ViewerState.h"
@@ -213,4 +214,16 @@ TEST(ViewerState, ViewsHaveNames) {
     for (int i = 0; i < kDebugViewCount; ++i)
         EXPECT_EQ(parseView(viewName(static_cast<DebugView>(i))), static_cast<DebugView>(i));
     EXPECT_FALSE(parseView("sideways"));
+}
+
+TEST(OverlayText, SaysWhereEachLightsShadeCameFrom) {
+    const nlohmann::json shadeCache = {{"layers", 1}, {"fetched", {0, 2}}, {"computed", {1}},
+                                       {"uncached", nlohmann::json::array()}, {"constant", {3}}};
+    EXPECT_EQ(OverlayText::shadeSource(shadeCache, 0), "shade reused");
+    EXPECT_EQ(OverlayText::shadeSource(shadeCache, 1), "shade computed");
+    EXPECT_EQ(OverlayText::shadeSource(shadeCache, 2), "shade reused");
+    EXPECT_EQ(OverlayText::shadeSource(shadeCache, 3), "shade constant");
+    EXPECT_EQ(OverlayText::shadeSource({{"uncached", {4}}}, 4), "shade live");
+    EXPECT_EQ(OverlayText::shadeSource(shadeCache, 7), "");
+    EXPECT_EQ(OverlayText::shadeSource(nlohmann::json::object(), 0), "");
 }
