@@ -10,7 +10,8 @@ namespace {
 
 // Plugin-wide keys besides the per-light defaults of ShadowSettings.h:
 //   "cache_maps": true (default) keeps a light's map across frames while nothing it
-//   depends on changed; false re-renders every map every frame (for timing the passes).
+//   depends on changed, and lets the lit pass reuse its shade; false re-renders every map
+//   and recomputes every shade every frame (for timing the passes).
 void registerShadowMap(engine::PluginRegistry* registry, const char* settingsJson) {
     nlohmann::json settings = nlohmann::json::parse(settingsJson);
     bool cacheMaps = true;

@@ -313,7 +313,10 @@ engine::LightVisibilityHook ShadowMapPlugin::makeHook(const engine::Frame& frame
     std::vector<float> pointFar(engine::kMaxLights, 1.0f);
     std::vector<std::pair<int, unsigned>> units;      // texture unit, map (comparing)
     std::vector<std::pair<int, unsigned>> rawUnits;   // texture unit, map (raw depth, debug)
-    std::vector<std::uint64_t> shadeKeys(lights_.size(), 0);  // 0: no map, a constant shade
+    std::vector<std::uint64_t> shadeKeys(lights_.size(), 0);  // 0: not to be reused
+    // A light without a map this frame has one shade everywhere (1, or 0 for a spot light
+    // whose frustum holds nothing visible): the lit pass needs no lookup for it.
+    std::map<int, float> constantShades;
 
     // The generated part of the hook: per shadowed light one sampler, one interpolated
     // coordinate set per vertex, and a dispatch on the slot with constant arguments (see
@@ -326,6 +329,7 @@ engine::LightVisibilityHook ShadowMapPlugin::makeHook(const engine::Frame& frame
         const float outsideShade = light.type == engine::Light::Type::Spot ? 0.0f : 1.0f;
         if (plan.kind == MapKind::None) {
             if (plan.emptyFrustum) params[light.slot] = glm::vec4(0.0f, 0.0f, 0.0f, outsideShade);
+            constantShades[light.slot] = params[light.slot].w;
             continue;
         }
         // What the lookup uploads must be finite: a light whose eye planes (or eye-space
@@ -340,6 +344,7 @@ engine::LightVisibilityHook ShadowMapPlugin::makeHook(const engine::Frame& frame
             for (int r = 0; r < 4; ++r) finite = finite && std::isfinite(uploaded[c][r]);
         if (!finite) {
             warnOnce(light, "no shadow: its texgen planes for this camera are not finite");
+            constantShades[light.slot] = params[light.slot].w;
             continue;
         }
         // x: 1 = reversed Z (near 1, far 0: GL_GEQUAL, out of range flipped);
@@ -359,7 +364,9 @@ engine::LightVisibilityHook ShadowMapPlugin::makeHook(const engine::Frame& frame
         shadeKey.add(light.frame.mapKey);
         shadeKey.add(params[light.slot]);
         shadeKey.add(light.settings.filter);
-        shadeKeys[light.slot] = shadeKey.value();
+        // Without map caching nothing is reused: a depth pass whose map no pass reads
+        // would be culled, and timing runs (bench, cache_maps false) would time nothing.
+        if (cacheMaps_) shadeKeys[light.slot] = shadeKey.value();
         const std::string slot = std::to_string(light.slot);
         const std::string unit = std::to_string(kFirstUnit + light.slot);
         units.emplace_back(kFirstUnit + light.slot, light.map.id());
@@ -403,10 +410,7 @@ engine::LightVisibilityHook ShadowMapPlugin::makeHook(const engine::Frame& frame
 
     engine::LightVisibilityHook hook;
     hook.owner = name();
-    // A light without a map this frame has one shade everywhere (1, or 0 for a spot light
-    // whose frustum holds nothing visible): the lit pass needs no lookup for it.
-    for (const LightShadow& light : lights_)
-        if (shadeKeys[light.slot] == 0) hook.constantShades[light.slot] = params[light.slot].w;
+    hook.constantShades = std::move(constantShades);
     hook.shadeKeys = std::move(shadeKeys);
     for (const glm::vec4& light : params) hook.dimming.push_back(light.z);
     hook.glsl = std::string(shaders::visibility_glsl) + declarations +

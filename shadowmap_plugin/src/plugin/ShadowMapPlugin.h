@@ -18,7 +18,8 @@ namespace shadowmap {
 
 class ShadowMapPlugin final : public engine::RenderPlugin {
 public:
-    // cacheMaps: keep a light's map across frames while its inputs are unchanged.
+    // cacheMaps: keep a light's map across frames while its inputs are unchanged, and give
+    // the lit pass shade keys so it may reuse the lights' shade too.
     ShadowMapPlugin(const ShadowSettings& defaults, bool cacheMaps)
         : defaults_(defaults), cacheMaps_(cacheMaps) {}
 

@@ -170,3 +170,25 @@ TEST_F(ShadeCacheTest, ReusedShadeGivesTheImageOfAFreshFrame) {
     // Frames 0, 4 (camera) and 6 (caster) recompute everything; frame 2 only the spot.
     EXPECT_EQ(fetchedFrames, 6);
 }
+
+TEST_F(ShadeCacheTest, WithoutMapCachingEveryFrameRendersEveryMapAndShade) {
+    // cache_maps false is how the bench and the showcase time the passes: no map and no
+    // shade may be reused, or a depth pass nobody reads would be culled and time nothing.
+    engine::PluginHost host;
+    host.load({"shadowmap_plugin", {{"resolution", 256}, {"cache_maps", false}}}, {ENGINE_PLUGIN_DIR});
+    engine::Scene scene = boxTwoShadowedLightsAndOneWithout().builder.build();
+    engine::Renderer renderer({}, host.renderPlugins());
+    renderer.setScene(scene);
+    engine::FrameRequest request;
+    request.camera = camera();
+    for (int frame = 0; frame < 3; ++frame) {
+        const engine::FrameResult result = renderer.renderFrame(request);
+        EXPECT_EQ(slots(result, "uncached"), (std::vector<int>{0, 1})) << "frame " << frame;
+        EXPECT_EQ(slots(result, "constant"), (std::vector<int>{2})) << "frame " << frame;
+        for (const char* pass : {"shadow_spot", "shadow_bulb"}) {
+            bool ran = false;
+            for (const engine::PassReport& report : result.passes) ran = ran || (report.name == pass && !report.culled);
+            EXPECT_TRUE(ran) << pass << ", frame " << frame;
+        }
+    }
+}
