@@ -98,6 +98,12 @@ TEST_F(ShadeCacheTest, MovingTheCameraOrAnyMeshRecomputesEveryShade) {
     session.scene.updateWorldTransforms();
     EXPECT_EQ(slots(session.frame(), "computed"), (std::vector<int>{0, 1}));
 
+    // So does a new target size (the cache arrays are recreated at it).
+    session.request.camera.width = 80;
+    session.request.camera.height = 60;
+    EXPECT_EQ(slots(session.frame(), "computed"), (std::vector<int>{0, 1}));
+    EXPECT_EQ(slots(session.frame(), "fetched"), (std::vector<int>{0, 1}));
+
     // A new scene forgets everything.
     session.renderer.setScene(session.scene);
     EXPECT_EQ(slots(session.frame(), "computed"), (std::vector<int>{0, 1}));
@@ -120,10 +126,10 @@ TEST_F(ShadeCacheTest, ShadeCacheOffOrNoShadowedLightMeansNoCache) {
 }
 
 TEST_F(ShadeCacheTest, ReusedShadeGivesTheImageOfAFreshFrame) {
-    // Five shadowed lights (two cache layers), two constant ones, and a camera, lights and a caster that move
-    // and stop: after every change and every still frame, the image equals that of a
-    // renderer that caches neither maps nor shade. Shade is cached as exact floats, so
-    // the images are compared exactly.
+    // Five shadowed lights (two cache layers) and two constant ones; a light, the camera
+    // and a caster move and stop, and the target size changes. After every change and
+    // every still frame the image equals that of a renderer that caches neither maps nor
+    // shade. Shade is cached as exact floats, so the images are compared exactly.
     SceneBuilder builder;
     builder.addBox("floor", {-10, -0.2, -10}, {10, 0, 10});
     const int box = builder.addBox("box", {-1, 1, -1}, {1, 2, 1});
@@ -149,12 +155,16 @@ TEST_F(ShadeCacheTest, ReusedShadeGivesTheImageOfAFreshFrame) {
     engine::FrameRequest request;
     request.camera = camera();
     int fetchedFrames = 0;
-    for (int frame = 0; frame < 9; ++frame) {
+    for (int frame = 0; frame < 11; ++frame) {
         if (frame == 2) engine::orbitNode(scene, spot, {0, 0, 0}, 0.3);
         if (frame == 4) request.camera.eyeToWorld = engine::orbitTransform(request.camera.eyeToWorld, {0, 0, 0}, 0.2);
         if (frame == 6) {
             scene.nodes[box].local[3].x += 0.5;
             scene.updateWorldTransforms();
+        }
+        if (frame == 9) {
+            request.camera.width = 80;
+            request.camera.height = 60;
         }
         const engine::FrameResult result = cached.renderFrame(request);
         fresh.renderFrame(request);
@@ -167,8 +177,8 @@ TEST_F(ShadeCacheTest, ReusedShadeGivesTheImageOfAFreshFrame) {
         for (std::size_t i = 0; i < image.size(); ++i) differing += image[i] != expected[i];
         EXPECT_EQ(differing, 0) << "frame " << frame;
     }
-    // Frames 0, 4 (camera) and 6 (caster) recompute everything; frame 2 only the spot.
-    EXPECT_EQ(fetchedFrames, 6);
+    // Frames 0, 4 (camera), 6 (caster) and 9 (size) recompute everything; 2 only the spot.
+    EXPECT_EQ(fetchedFrames, 7);
 }
 
 TEST_F(ShadeCacheTest, WithoutMapCachingEveryFrameRendersEveryMapAndShade) {
