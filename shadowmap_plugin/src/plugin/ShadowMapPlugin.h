@@ -52,7 +52,8 @@ private:
     std::unique_ptr<DepthRenderer> depth_;             // created with the first frame (needs GL)
     int maxTextureUnits_ = 16;                         // GL_MAX_TEXTURE_IMAGE_UNITS
     engine::gl::Sampler rawDepthSampler_;
-    std::set<std::string> warned_;
+    std::set<std::string> warned_;                     // warnings already printed
+    std::string scenePath_;                            // the scene's file, for messages
     bool cacheMaps_ = true;
     std::uint64_t sceneGeneration_ = 0;
     std::uint64_t cacheHits_ = 0, cacheMisses_ = 0;  // since the scene was prepared
