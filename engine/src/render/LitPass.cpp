@@ -2,7 +2,7 @@
 
 #include "engine/gl/Framebuffer.h"
 #include "engine/render/SceneGpu.h"
-#include "engine/scene/FrustumCull.h"
+#include "engine/scene/DrawOrder.h"
 #include "engine/scene/Scene.h"
 #include "engine/util/Hasher.h"
 
@@ -130,13 +130,12 @@ void LitPass::drawScene(const Frame& frame, const gl::Program& program, PassCont
 
     static const Material kDefaultMaterial{};
     const glm::dmat4 viewProjection = frame.camera().projection * view;
-    culledInstances_ = 0;
-    for (const MeshInstance& instance : scene.meshInstances) {
-        // Camera culling: a mesh whose bounds miss the view frustum costs no draw.
-        if (!boxIntersectsFrustum(viewProjection, instance.worldBounds)) {
-            ++culledInstances_;
-            continue;
-        }
+    // Camera culling (a mesh whose bounds miss the view frustum costs no draw), nearest
+    // first so the depth test spares hidden fragments their shading.
+    const DrawOrder order = nearestFirst(scene, viewProjection, frame.camera().position());
+    culledInstances_ = order.culled;
+    for (const int index : order.instances) {
+        const MeshInstance& instance = scene.meshInstances[index];
         // Compose in double so only the camera-relative result is rounded to float.
         const glm::dmat4 modelView = view * frame.gpu().modelMatrix(instance);
         const glm::dmat3 normalMatrix = glm::transpose(glm::inverse(glm::dmat3(modelView)));
