@@ -184,7 +184,7 @@ int run(const RenderOptions& options, std::unique_ptr<engine::GlContext>& contex
     std::map<std::string, PassSummary> passes;
     engine::FrameResult last;
     nlohmann::json shadeCacheFrames = nlohmann::json::array();  // per timed frame
-    int framesComputingShade = 0;  // timed frames whose lit pass recomputed a cached light
+    int framesComputingShade = 0;  // timed frames whose lit pass recomputed a cacheable light
     for (int frame = 0; frame < options.warmup; ++frame) renderer.renderFrame(request);
     for (int frame = 0; frame < options.frames; ++frame) {
         if (frame > 0 && orbitingLight >= 0) engine::orbitNode(scene, orbitingLight, orbitCenter, kOrbitStep);
@@ -193,7 +193,11 @@ int run(const RenderOptions& options, std::unique_ptr<engine::GlContext>& contex
         last = renderer.renderFrame(request);
         frameMs.push_back(last.frameMs);
         shadeCacheFrames.push_back(last.shadeCache);
-        if (!last.shadeCache.value("computed", nlohmann::json::array()).empty()) ++framesComputingShade;
+        for (const char* recomputed : {"computed", "moving"})
+            if (!last.shadeCache.value(recomputed, nlohmann::json::array()).empty()) {
+                ++framesComputingShade;
+                break;
+            }
         for (const engine::PassReport& report : last.passes) {
             auto [it, inserted] = passes.try_emplace(report.name);
             if (inserted) order.push_back(report.name);
@@ -238,10 +242,11 @@ int run(const RenderOptions& options, std::unique_ptr<engine::GlContext>& contex
     }
     const nlohmann::json& shadeCache = last.shadeCache;
     if (shadeCache.value("layers", 0) > 0)
-        std::printf("  shade cache: last frame fetched lights %s, computed %s, uncached %s; "
+        std::printf("  shade cache: last frame fetched lights %s, computed %s, moving %s, uncached %s; "
                     "lights recomputed in %d of %d frames\n",
                     shadeCache["fetched"].dump().c_str(), shadeCache["computed"].dump().c_str(),
-                    shadeCache["uncached"].dump().c_str(), framesComputingShade, options.frames);
+                    shadeCache["moving"].dump().c_str(), shadeCache["uncached"].dump().c_str(),
+                    framesComputingShade, options.frames);
     nlohmann::json stats = statsJson(options, frameMs, order, passes, last);
     stats["shade_cache"] = shadeCacheFrames;
     if (options.truth) stats["lights"] = printLightErrors(renderer, scene, request.camera, passes);

@@ -28,7 +28,7 @@ bool OverlayText::lightPassMs(const engine::FrameResult& frame, const std::strin
 
 std::string OverlayText::shadeSource(const nlohmann::json& shadeCache, int slot) {
     static const std::pair<const char*, const char*> kSources[] = {
-        {"fetched", "shade reused"}, {"computed", "shade computed"},
+        {"fetched", "shade reused"}, {"computed", "shade computed"}, {"moving", "shade moving"},
         {"uncached", "shade live"}, {"constant", "shade constant"}};
     for (const auto& [key, text] : kSources) {
         const auto list = shadeCache.find(key);

@@ -11,20 +11,23 @@ namespace engine {
 namespace {
 
 // Which lights the shaded image took from the shade cache, which it recomputed (and
-// cached), which it evaluated without caching and which had one shade everywhere, by slot.
+// cached), which it evaluated without storing because they keep changing, which it
+// evaluated without caching and which had one shade everywhere, by slot.
 nlohmann::json shadeCacheStats(const ShadeCache::Plan& plan) {
     nlohmann::json fetched = nlohmann::json::array(), computed = nlohmann::json::array(),
-                   uncached = nlohmann::json::array(), constant = nlohmann::json::array();
+                   moving = nlohmann::json::array(), uncached = nlohmann::json::array(),
+                   constant = nlohmann::json::array();
     for (std::size_t slot = 0; slot < plan.sources.size(); ++slot) {
         switch (plan.sources[slot]) {
         case ShadeCache::Source::Fetch: fetched.push_back(slot); break;
         case ShadeCache::Source::Compute: computed.push_back(slot); break;
+        case ShadeCache::Source::Moving: moving.push_back(slot); break;
         case ShadeCache::Source::Inline: uncached.push_back(slot); break;
         case ShadeCache::Source::Constant: constant.push_back(slot); break;
         }
     }
     return {{"layers", plan.layers}, {"fetched", fetched}, {"computed", computed},
-            {"uncached", uncached}, {"constant", constant}};
+            {"moving", moving}, {"uncached", uncached}, {"constant", constant}};
 }
 
 } // namespace

@@ -99,21 +99,33 @@ ShadeCache::Plan ShadeCache::plan(std::uint64_t viewKey, const LightVisibilityHo
     ensureArrays(width, height, plan.layers);
 
     plan.writtenKeys.assign(channelKeys_.size(), 0);
+    previousKeys_.resize(std::max<std::size_t>(previousKeys_.size(), lightCount), 0);
+    changedLastFrame_.resize(previousKeys_.size(), false);
     bool fetches = false, computes = false;
     for (int slot = 0; slot < lightCount; ++slot) {
         const int channel = plan.channels[slot];
-        if (channel < 0) continue;
+        if (channel < 0) {
+            previousKeys_[slot] = 0;
+            changedLastFrame_[slot] = false;
+            continue;
+        }
         // A channel is valid for this slot under this view with this hook key only.
         Hasher hasher;
         hasher.add(viewKey);
         hasher.add(slot);
         hasher.add(shadeKeys[slot]);
         const std::uint64_t key = std::max<std::uint64_t>(hasher.value(), 1);  // 0 = invalid
+        // Written when another light's compute writes the array anyway: it is the shade
+        // of this key, so a moving light that stops next frame is fetched, not recomputed.
         plan.writtenKeys[channel] = key;
         const bool valid = channelKeys_[channel] == key;
-        plan.sources[slot] = valid ? Source::Fetch : Source::Compute;
+        const bool changed = previousKeys_[slot] != 0 && previousKeys_[slot] != key;
+        const bool moving = !valid && changed && changedLastFrame_[slot];
+        previousKeys_[slot] = key;
+        changedLastFrame_[slot] = changed;
+        plan.sources[slot] = valid ? Source::Fetch : moving ? Source::Moving : Source::Compute;
         fetches = fetches || valid;
-        computes = computes || !valid;
+        computes = computes || plan.sources[slot] == Source::Compute;
     }
     if (fetches) plan.readArray = arrays_[current_].id();
     if (computes) plan.writeArray = arrays_[1 - current_].id();
@@ -128,6 +140,8 @@ void ShadeCache::commit(const Plan& plan) {
 
 void ShadeCache::clear() {
     std::fill(channelKeys_.begin(), channelKeys_.end(), 0);
+    previousKeys_.clear();
+    changedLastFrame_.clear();
 }
 
 } // namespace engine

@@ -22,7 +22,7 @@ protected:
 
     struct Lit {
         SceneBuilder builder;
-        int spot = -1;
+        int spot = -1, bulb = -1;  // nodes
     };
     // A box over a floor, a shadowed spot (slot 0), a shadowed point light (slot 1) and a
     // spot without shadows (slot 2, variant none: no map, nothing to cache).
@@ -31,7 +31,7 @@ protected:
         lit.builder.addBox("floor", {-10, -0.2, -10}, {10, 0, 10});
         lit.builder.addBox("box", {-1, 1, -1}, {1, 2, 1});
         lit.spot = lit.builder.addLight("spot", Light::Type::Spot, {-3, 8, -2}, {0, 0, 0});
-        lit.builder.addLight("bulb", Light::Type::Point, {1, 4, 2}, {1, 0, 2});
+        lit.bulb = lit.builder.addLight("bulb", Light::Type::Point, {1, 4, 2}, {1, 0, 2});
         lit.builder.addLight("plain", Light::Type::Spot, {3, 6, 3}, {0, 0, 0}, {{"variant", "none"}});
         return lit;
     }
@@ -74,12 +74,44 @@ TEST_F(ShadeCacheTest, MovingOneLightRecomputesOnlyItsShade) {
     Lit lit = boxTwoShadowedLightsAndOneWithout();
     Session session(lit.builder.build());
     session.frame();
-    for (int frame = 1; frame < 3; ++frame) {
+    // Moved once: recomputed and stored, the other light fetched.
+    engine::orbitNode(session.scene, lit.spot, {0, 0, 0}, 0.1);
+    engine::FrameResult result = session.frame();
+    EXPECT_EQ(slots(result, "computed"), (std::vector<int>{0}));
+    EXPECT_EQ(slots(result, "fetched"), (std::vector<int>{1}));
+    // Moved again, and again: moving, recomputed without storing; the frame writes no cache
+    // array at all (nothing is computed), the other light is still fetched.
+    for (int frame = 2; frame < 4; ++frame) {
         engine::orbitNode(session.scene, lit.spot, {0, 0, 0}, 0.1);
-        const engine::FrameResult result = session.frame();
-        EXPECT_EQ(slots(result, "computed"), (std::vector<int>{0})) << "frame " << frame;
+        result = session.frame();
+        EXPECT_EQ(slots(result, "moving"), (std::vector<int>{0})) << "frame " << frame;
+        EXPECT_TRUE(slots(result, "computed").empty()) << "frame " << frame;
         EXPECT_EQ(slots(result, "fetched"), (std::vector<int>{1})) << "frame " << frame;
     }
+    // Stopped: stored on its first still frame, fetched from then on.
+    result = session.frame();
+    EXPECT_EQ(slots(result, "computed"), (std::vector<int>{0}));
+    EXPECT_TRUE(slots(result, "moving").empty());
+    EXPECT_EQ(slots(session.frame(), "fetched"), (std::vector<int>{0, 1}));
+}
+
+TEST_F(ShadeCacheTest, AMovingLightIsStoredWhenAnotherLightWritesTheCache) {
+    // The spot keeps moving while the bulb changes once: the frame that recomputes the bulb
+    // writes the array, and with it the spot's shade for that frame; the spot stopping
+    // then costs nothing.
+    Lit lit = boxTwoShadowedLightsAndOneWithout();
+    Session session(lit.builder.build());
+    session.frame();
+    for (int frame = 1; frame < 3; ++frame) {
+        engine::orbitNode(session.scene, lit.spot, {0, 0, 0}, 0.1);
+        session.frame();
+    }
+    engine::orbitNode(session.scene, lit.spot, {0, 0, 0}, 0.1);
+    engine::orbitNode(session.scene, lit.bulb, {0, 0, 0}, 0.1);
+    const engine::FrameResult both = session.frame();
+    EXPECT_EQ(slots(both, "moving"), (std::vector<int>{0}));
+    EXPECT_EQ(slots(both, "computed"), (std::vector<int>{1}));
+    EXPECT_EQ(slots(session.frame(), "fetched"), (std::vector<int>{0, 1}));
 }
 
 TEST_F(ShadeCacheTest, MovingTheCameraOrAnyMeshRecomputesEveryShade) {
@@ -96,6 +128,11 @@ TEST_F(ShadeCacheTest, MovingTheCameraOrAnyMeshRecomputesEveryShade) {
     // lit pass may draw, so nothing visible can have changed without a recompute.
     session.scene.nodes[farAway].local[3].x += 1.0;
     session.scene.updateWorldTransforms();
+    EXPECT_EQ(slots(session.frame(), "computed"), (std::vector<int>{0, 1}));
+
+    // Two changes in a row (the mesh above, the camera now): every light is moving.
+    session.request.camera.eyeToWorld = engine::orbitTransform(session.request.camera.eyeToWorld, {0, 0, 0}, 0.05);
+    EXPECT_EQ(slots(session.frame(), "moving"), (std::vector<int>{0, 1}));
     EXPECT_EQ(slots(session.frame(), "computed"), (std::vector<int>{0, 1}));
 
     // So does a new target size (the cache arrays are recreated at it).
@@ -126,8 +163,9 @@ TEST_F(ShadeCacheTest, ShadeCacheOffOrNoShadowedLightMeansNoCache) {
 }
 
 TEST_F(ShadeCacheTest, ReusedShadeGivesTheImageOfAFreshFrame) {
-    // Five shadowed lights (two cache layers) and two constant ones; a light, the camera
-    // and a caster move and stop, and the target size changes. After every change and
+    // Five shadowed lights (two cache layers) and two constant ones; a light moves for two
+    // frames (the second time it is moving: evaluated, not stored), the camera and a caster
+    // move and stop, and the target size changes. After every change and
     // every still frame the image equals that of a renderer that caches neither maps nor
     // shade. Shade is cached as exact floats, so the images are compared exactly.
     SceneBuilder builder;
@@ -156,7 +194,7 @@ TEST_F(ShadeCacheTest, ReusedShadeGivesTheImageOfAFreshFrame) {
     request.camera = camera();
     int fetchedFrames = 0;
     for (int frame = 0; frame < 11; ++frame) {
-        if (frame == 2) engine::orbitNode(scene, spot, {0, 0, 0}, 0.3);
+        if (frame == 2 || frame == 3) engine::orbitNode(scene, spot, {0, 0, 0}, 0.3);
         if (frame == 4) request.camera.eyeToWorld = engine::orbitTransform(request.camera.eyeToWorld, {0, 0, 0}, 0.2);
         if (frame == 6) {
             scene.nodes[box].local[3].x += 0.5;
@@ -171,13 +209,17 @@ TEST_F(ShadeCacheTest, ReusedShadeGivesTheImageOfAFreshFrame) {
         EXPECT_EQ(result.shadeCache["layers"], 2);
         EXPECT_EQ(slots(result, "constant"), (std::vector<int>{5, 6}));
         fetchedFrames += !slots(result, "fetched").empty();
+        if (frame == 3) {
+            EXPECT_EQ(slots(result, "moving"), (std::vector<int>{0}));
+        }
         const std::vector<std::uint8_t> image = cached.readColor(), expected = fresh.readColor();
         ASSERT_EQ(image.size(), expected.size());
         int differing = 0;
         for (std::size_t i = 0; i < image.size(); ++i) differing += image[i] != expected[i];
         EXPECT_EQ(differing, 0) << "frame " << frame;
     }
-    // Frames 0, 4 (camera), 6 (caster) and 9 (size) recompute everything; 2 only the spot.
+    // Frames 0, 4 (camera), 6 (caster) and 9 (size) recompute everything; 2 and 3 only
+    // the spot.
     EXPECT_EQ(fetchedFrames, 7);
 }
 

@@ -224,6 +224,7 @@ TEST(OverlayText, SaysWhereEachLightsShadeCameFrom) {
     EXPECT_EQ(OverlayText::shadeSource(shadeCache, 2), "shade reused");
     EXPECT_EQ(OverlayText::shadeSource(shadeCache, 3), "shade constant");
     EXPECT_EQ(OverlayText::shadeSource({{"uncached", {4}}}, 4), "shade live");
+    EXPECT_EQ(OverlayText::shadeSource({{"moving", {5}}}, 5), "shade moving");
     EXPECT_EQ(OverlayText::shadeSource(shadeCache, 7), "");
     EXPECT_EQ(OverlayText::shadeSource(nlohmann::json::object(), 0), "");
 }

@@ -43,7 +43,8 @@ struct FrameResult {
     bool shadowTermProvided = false;  // a plugin installed the lit pass's visibility hook
     int litInstancesCulled = 0;       // mesh instances outside the camera frustum (not drawn)
     // The shaded image's shade cache (ShadeCache.h): {"layers", and light slots
-    // "fetched" (reused), "computed" (recomputed and cached), "uncached", "constant"}.
+    // "fetched" (reused), "computed" (recomputed and cached), "moving" (recomputed, not
+    // stored: changed two frames running), "uncached", "constant"}.
     nlohmann::json shadeCache = nlohmann::json::object();
     std::map<std::string, DepthReadback> depthReadbacks;
 };
