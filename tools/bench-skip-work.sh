@@ -10,7 +10,7 @@
 # Usage: tools/bench-skip-work.sh [FRAMES]   (build first: tools/build.sh)
 set -euo pipefail
 cd "$(dirname "$0")/.."
-frames=${1:-20}
+frames=${1:-30}
 render=build/bin/engine-render
 engine_glb=/usr/share/assimp/models/glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb
 out=$(mktemp -d)
