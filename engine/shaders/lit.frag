@@ -4,9 +4,10 @@
 // DESIGN.md with the plugin's per-light visibility term:
 //   diffuseShade = d + (1 - d) * shade
 //   color = emissive + ambient * albedo + sum(diffuseShade * diffuse + shade * specular)
-// The engine prepends "#version 450 core", MAX_LIGHTS and LIGHT_COUNT (the scene's lights:
+// The engine prepends "#version 450 core", MAX_LIGHTS, LIGHT_COUNT (the scene's lights:
 // a compile-time count lets the compiler unroll the loop, so each iteration calls the
-// hook with a constant slot and its per-slot dispatch folds away), then appends the hook.
+// hook with a constant slot and its per-slot dispatch folds away) and LIGHT_TYPES (an int
+// array initializer: each light's LIGHT_* type by slot), then appends the hook.
 // With at least one light it also appends loadShades() (ShadeCache.h), which takes each
 // light's shade from the hook or from the shade cache, before the light loop.
 const int LIGHT_DIRECTIONAL = 0;
@@ -16,7 +17,7 @@ const float PI = 3.14159265358979;
 
 struct LightData {
     vec4 positionRange;   // eye space position; w = range (0 = infinite)
-    vec4 directionType;   // eye space direction the light shines along; w = type
+    vec4 direction;       // eye space direction the light shines along; w unused
     vec4 radiance;        // linear color * intensity
     vec4 cone;            // x = cos(outer), y = cos(inner)
 };
@@ -95,13 +96,17 @@ void main() {
     // pass 50 -> 21 ms), and implicit-LOD sampling belongs in uniform control flow anyway.
     float shades[LIGHT_COUNT];
     loadShades(shades, vEyePosition, N);
+    // Each light's type is a compile-time constant (LIGHT_TYPES, by slot): the unrolled
+    // loop keeps only its own type's code in each iteration (no cone for a point light, no
+    // distance for a directional one; showcase unshadowed 14.9 -> 14.2 ms at 1280x720).
+    const int kLightTypes[LIGHT_COUNT] = LIGHT_TYPES;
     for (int i = 0; i < LIGHT_COUNT; ++i) {
         LightData light = uLights[i];
-        int type = int(light.directionType.w);
+        int type = kLightTypes[i];
         vec3 L;
         float attenuation = 1.0;
         if (type == LIGHT_DIRECTIONAL) {
-            L = -light.directionType.xyz;
+            L = -light.direction.xyz;
         } else {
             vec3 toLight = light.positionRange.xyz - vEyePosition;
             float distance = length(toLight);
@@ -109,7 +114,7 @@ void main() {
             attenuation = rangeWindow(distance, light.positionRange.w) /
                           max(distance * distance, 1e-8);
             if (type == LIGHT_SPOT) {
-                float cosAngle = dot(-L, light.directionType.xyz);
+                float cosAngle = dot(-L, light.direction.xyz);
                 float t = clamp((cosAngle - light.cone.x) / max(light.cone.y - light.cone.x, 1e-4),
                                 0.0, 1.0);
                 attenuation *= t * t;

@@ -52,10 +52,12 @@ engine::Scene planeScene(float roughness) {
 }
 
 void addLight(engine::Scene& scene, engine::Light::Type type, const glm::dvec3& position,
-              float intensity) {
+              float intensity, double outerCone = 0.78539816339744831, double innerCone = 0.0) {
     engine::Light light;
     light.type = type;
     light.intensity = intensity;
+    light.outerConeAngle = outerCone;
+    light.innerConeAngle = innerCone;
     scene.lights.push_back(light);
     engine::Node node;
     node.light = static_cast<int>(scene.lights.size()) - 1;
@@ -81,7 +83,7 @@ glm::dvec3 surfacePoint(const engine::FrameCamera& frame, int x, int y) {
     return from + (to - from) * (from.z / (from.z - to.z));
 }
 
-// lit.frag for one light with shade = 1, metallic = 0, in double.
+// lit.frag for its lights (infinite range) with shade = 1, metallic = 0, in double.
 glm::dvec3 expectedColor(const engine::Scene& scene, const glm::dvec3& point, double roughness) {
     glm::dvec3 color = kAmbient * kAlbedo;
     const glm::dvec3 normal(0, 0, 1), toEye = glm::normalize(glm::dvec3(0, 0, 3) - point);
@@ -91,10 +93,16 @@ glm::dvec3 expectedColor(const engine::Scene& scene, const glm::dvec3& point, do
         const engine::Light& light = scene.lights[placed.light];
         glm::dvec3 toLight = -placed.direction();
         double attenuation = 1.0;
-        if (light.type == engine::Light::Type::Point) {
+        if (light.type != engine::Light::Type::Directional) {
             const glm::dvec3 offset = placed.position() - point;
             toLight = glm::normalize(offset);
             attenuation = 1.0 / glm::dot(offset, offset);
+        }
+        if (light.type == engine::Light::Type::Spot) {
+            const double cosOuter = std::cos(light.outerConeAngle), cosInner = std::cos(light.innerConeAngle);
+            const double t = std::clamp((glm::dot(-toLight, placed.direction()) - cosOuter) /
+                                            std::max(cosInner - cosOuter, 1e-4), 0.0, 1.0);
+            attenuation *= t * t;
         }
         const double nDotL = glm::dot(normal, toLight);
         if (nDotL <= 0.0) continue;
@@ -151,6 +159,17 @@ TEST_F(LitShading, DirectionalLightMatchesFormula) {
 TEST_F(LitShading, PointLightWithAttenuationAndHighlightMatchesFormula) {
     engine::Scene scene = planeScene(0.5f);
     addLight(scene, engine::Light::Type::Point, {0.4, -0.3, 1.5}, 3.0f);
+    EXPECT_LE(maxError(scene, 0.5), 2.0);
+}
+
+TEST_F(LitShading, MixedLightTypesEachShadeByTheirOwnType) {
+    // Each light's type is compiled into the shader by slot (LIGHT_TYPES): a spot, a point
+    // and a directional light in one scene, every slot a different type, so shading a slot
+    // as another's type (spot cone on the point, distance on the directional) fails.
+    engine::Scene scene = planeScene(0.5f);
+    addLight(scene, engine::Light::Type::Spot, {-0.5, 0.5, 2.0}, 2.0f, 0.5, 0.2);
+    addLight(scene, engine::Light::Type::Point, {0.4, -0.3, 1.5}, 1.0f);
+    addLight(scene, engine::Light::Type::Directional, {0, 0, 5}, 0.4f);
     EXPECT_LE(maxError(scene, 0.5), 2.0);
 }
 

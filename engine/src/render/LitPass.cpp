@@ -36,7 +36,7 @@ constexpr const char* kNoTexgenGlsl = "void lightTexgen(vec3 eyePosition) {}\n";
 // std140 layout of lit.frag's LightData.
 struct LightData {
     glm::vec4 positionRange;
-    glm::vec4 directionType;
+    glm::vec4 direction;
     glm::vec4 radiance;
     glm::vec4 cone;
 };
@@ -76,6 +76,18 @@ int lightTypeCode(Light::Type type) {
     return 2;
 }
 
+// lit.frag's light defines: how many lights the pass shades and each one's type by slot.
+std::string lightDefines(const Scene& scene, int lightCount) {
+    std::string defines = "#define LIGHT_COUNT " + std::to_string(lightCount) + "\n";
+    if (lightCount == 0) return defines;
+    defines += "#define LIGHT_TYPES int[](";
+    for (int slot = 0; slot < lightCount; ++slot) {
+        const Light& light = scene.lights[scene.lightInstances[slot].light];
+        defines += std::to_string(lightTypeCode(light.type)) + (slot + 1 < lightCount ? ", " : ")\n");
+    }
+    return defines;
+}
+
 } // namespace
 
 LitPass::LitPass(const RendererConfig& config)
@@ -83,12 +95,12 @@ LitPass::LitPass(const RendererConfig& config)
       lightBuffer_(gl::Buffer::create(sizeof(LightData) * kMaxLights, nullptr,
                                       GL_DYNAMIC_STORAGE_BIT)) {}
 
-const gl::Program& LitPass::programFor(const LightVisibilityHook* hook, int lightCount,
+const gl::Program& LitPass::programFor(const LightVisibilityHook* hook, const std::string& lightDefinesGlsl,
                                       Output output, const std::string& loadShadesGlsl) {
     const std::string visibilityGlsl = hook ? hook->glsl : kNoShadowsGlsl;
     const std::string vertexTail = hook && !hook->vertexGlsl.empty() ? hook->vertexGlsl : kNoTexgenGlsl;
-    const std::string header = "#version 450 core\n#define MAX_LIGHTS " + std::to_string(kMaxLights) +
-                               "\n#define LIGHT_COUNT " + std::to_string(lightCount) + "\n" +
+    const std::string header = "#version 450 core\n#define MAX_LIGHTS " + std::to_string(kMaxLights) + "\n" +
+                               lightDefinesGlsl +
                                (output == Output::Comparison ? "#define LIGHT_DEBUG_VIEW\n" : "") +
                                (output == Output::ShadowMask ? "#define LIGHT_MASK_VIEW\n" : "");
     const std::string fragmentTail = visibilityGlsl + "\n" + loadShadesGlsl;
@@ -113,7 +125,7 @@ void LitPass::uploadLights(const Scene& scene, const FrameCamera& camera) {
         const glm::dvec3 eyePosition = glm::dvec3(view * glm::dvec4(placed.position(), 1.0));
         const glm::dvec3 eyeDirection = glm::normalize(glm::dmat3(view) * placed.direction());
         data.positionRange = glm::vec4(glm::vec3(eyePosition), static_cast<float>(light.range));
-        data.directionType = glm::vec4(glm::vec3(eyeDirection), float(lightTypeCode(light.type)));
+        data.direction = glm::vec4(glm::vec3(eyeDirection), 0.0f);
         data.radiance = glm::vec4(light.color * light.intensity, 0.0f);
         data.cone = glm::vec4(static_cast<float>(std::cos(light.outerConeAngle)),
                               static_cast<float>(std::cos(light.innerConeAngle)), 0.0f, 0.0f);
@@ -184,7 +196,7 @@ void LitPass::addPass(Frame& frame, const std::string& name, ResourceHandle targ
     // 16.8 -> 15.7 ms for the showcase at 1280x720, whose unshadowed frame takes 14.0).
     const bool evaluatesHook = output != Output::Color || shadePlan_.evaluatesHook();
     const LightVisibilityHook* shading = hook && evaluatesHook ? &*hook : nullptr;
-    const gl::Program& program = programFor(shading, lightCount, output, loadShadesGlsl);
+    const gl::Program& program = programFor(shading, lightDefines(frame.scene(), lightCount), output, loadShadesGlsl);
     std::vector<float> dimming(kMaxLights, 0.0f);
     if (hook)
         std::copy_n(hook->dimming.begin(), std::min<std::size_t>(hook->dimming.size(), kMaxLights), dimming.begin());

@@ -38,10 +38,10 @@ private:
     enum class Output { Color, ShadowMask, Comparison };  // lit.frag's views
     void addPass(Frame& frame, const std::string& name, ResourceHandle target, Output output,
                  int maskSlot);
-    // One program per hook source, light count, output view and shade-cache plan
-    // (fetched / computed lights), compiled on first use.
-    const gl::Program& programFor(const LightVisibilityHook* hook, int lightCount, Output output,
-                                  const std::string& loadShadesGlsl);
+    // One program per hook source, lights (count and types), output view and shade-cache
+    // plan (fetched / computed lights), compiled on first use.
+    const gl::Program& programFor(const LightVisibilityHook* hook, const std::string& lightDefinesGlsl,
+                                  Output output, const std::string& loadShadesGlsl);
     // Binds the array the plan fetches from and attaches the one it writes as outputs 1...
     void attachShadeCache(const gl::Framebuffer& framebuffer, const ShadeCache::Plan& plan);
     void uploadLights(const Scene& scene, const FrameCamera& camera);
