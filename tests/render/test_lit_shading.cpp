@@ -163,7 +163,7 @@ TEST_F(LitShading, PointLightWithAttenuationAndHighlightMatchesFormula) {
 }
 
 TEST_F(LitShading, MixedLightTypesEachShadeByTheirOwnType) {
-    // Each light's type is compiled into the shader by slot (LIGHT_TYPES): a spot, a point
+    // Each light's type is compiled into the shader by slot (FOR_EACH_LIGHT): a spot, a point
     // and a directional light in one scene, every slot a different type, so shading a slot
     // as another's type (spot cone on the point, distance on the directional) fails.
     engine::Scene scene = planeScene(0.5f);

@@ -76,15 +76,17 @@ int lightTypeCode(Light::Type type) {
     return 2;
 }
 
-// lit.frag's light defines: how many lights the pass shades and each one's type by slot.
+// lit.frag's light defines: how many lights the pass shades, and FOR_EACH_LIGHT(F)
+// expanding to F(slot, type code) for each of them.
 std::string lightDefines(const Scene& scene, int lightCount) {
     std::string defines = "#define LIGHT_COUNT " + std::to_string(lightCount) + "\n";
     if (lightCount == 0) return defines;
-    defines += "#define LIGHT_TYPES int[](";
+    defines += "#define FOR_EACH_LIGHT(F)";
     for (int slot = 0; slot < lightCount; ++slot) {
         const Light& light = scene.lights[scene.lightInstances[slot].light];
-        defines += std::to_string(lightTypeCode(light.type)) + (slot + 1 < lightCount ? ", " : ")\n");
+        defines += " F(" + std::to_string(slot) + ", " + std::to_string(lightTypeCode(light.type)) + ")";
     }
+    defines += "\n";
     return defines;
 }
 
