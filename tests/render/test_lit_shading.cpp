@@ -13,6 +13,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <cmath>
+#include <functional>
 
 namespace {
 
@@ -83,9 +84,39 @@ glm::dvec3 surfacePoint(const engine::FrameCamera& frame, int x, int y) {
     return from + (to - from) * (from.z / (from.z - to.z));
 }
 
+double srgbDecode(double encoded) {
+    return encoded <= 0.04045 ? encoded / 12.92 : std::pow((encoded + 0.055) / 1.055, 2.4);
+}
+
+// The plane of planeScene() split at x = 0 into two primitives: the right half keeps
+// material 0 (kAlbedo), the left half gets material 1, white with a one-texel base color
+// texture of sRGB `texel` (every sample of it is that texel, whatever the filtering).
+void texturedLeftHalf(engine::Scene& scene, const glm::u8vec4& texel) {
+    engine::Primitive whole = scene.meshes[0].primitives[0];
+    engine::Primitive left = whole, right = whole;
+    left.positions = {{-2, -2, 0}, {0, -2, 0}, {0, 2, 0}, {-2, 2, 0}};
+    right.positions = {{0, -2, 0}, {2, -2, 0}, {2, 2, 0}, {0, 2, 0}};
+    left.texcoords = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+    left.material = 1;
+    for (engine::Primitive* half : {&left, &right}) {
+        half->bounds = {};
+        for (const glm::vec3& p : half->positions) half->bounds.extend(glm::dvec3(p));
+    }
+    scene.meshes[0].primitives = {left, right};
+    engine::Image image;
+    image.width = image.height = 1;
+    image.rgba8 = {texel.r, texel.g, texel.b, texel.a};
+    scene.images.push_back(image);
+    engine::Material textured = scene.materials[0];
+    textured.baseColorFactor = glm::vec4(1.0f);
+    textured.baseColorImage = 0;
+    scene.materials.push_back(textured);
+}
+
 // lit.frag for its lights (infinite range) with shade = 1, metallic = 0, in double.
-glm::dvec3 expectedColor(const engine::Scene& scene, const glm::dvec3& point, double roughness) {
-    glm::dvec3 color = kAmbient * kAlbedo;
+glm::dvec3 expectedColor(const engine::Scene& scene, const glm::dvec3& point, double roughness,
+                         const glm::dvec3& albedo = kAlbedo) {
+    glm::dvec3 color = kAmbient * albedo;
     const glm::dvec3 normal(0, 0, 1), toEye = glm::normalize(glm::dvec3(0, 0, 3) - point);
     const double alpha = std::max(roughness * roughness, 0.03);
     const double shininess = std::min(2.0 / (alpha * alpha) - 2.0, 2048.0);
@@ -108,7 +139,7 @@ glm::dvec3 expectedColor(const engine::Scene& scene, const glm::dvec3& point, do
         if (nDotL <= 0.0) continue;
         const glm::dvec3 radiance = glm::dvec3(light.intensity * attenuation * nDotL);
         const glm::dvec3 half = glm::normalize(toLight + toEye);
-        color += kAlbedo / kPi * radiance +
+        color += albedo / kPi * radiance +
                  0.04 * (shininess + 8.0) / (8.0 * kPi) *
                      std::pow(std::max(glm::dot(normal, half), 0.0), shininess) * radiance;
     }
@@ -129,14 +160,17 @@ protected:
         return renderer.readColor();
     }
 
-    // Every pixel against the formula: max error in 1/255 units.
-    double maxError(engine::Scene& scene, double roughness) {
+    // Every pixel against the formula: max error in 1/255 units. `albedoAt` gives the
+    // base color at a surface point (default: kAlbedo everywhere).
+    double maxError(engine::Scene& scene, double roughness,
+                    const std::function<glm::dvec3(const glm::dvec3&)>& albedoAt = nullptr) {
         const auto pixels = render(scene);
         double worst = 0.0;
         for (int y = 0; y < kSize; ++y)
             for (int x = 0; x < kSize; ++x) {
+                const glm::dvec3 point = surfacePoint(camera(), x, y);
                 const glm::dvec3 expected =
-                    expectedColor(scene, surfacePoint(camera(), x, y), roughness);
+                    expectedColor(scene, point, roughness, albedoAt ? albedoAt(point) : kAlbedo);
                 for (int c = 0; c < 3; ++c) {
                     const double actual = pixels[(y * kSize + x) * 4 + c];
                     worst = std::max(worst, std::abs(actual - 255.0 * srgbEncode(expected[c])));
@@ -171,6 +205,17 @@ TEST_F(LitShading, MixedLightTypesEachShadeByTheirOwnType) {
     addLight(scene, engine::Light::Type::Point, {0.4, -0.3, 1.5}, 1.0f);
     addLight(scene, engine::Light::Type::Directional, {0, 0, 5}, 0.4f);
     EXPECT_LE(maxError(scene, 0.5), 2.0);
+}
+
+TEST_F(LitShading, TexturedAndUntexturedMaterialsInOneFrame) {
+    // Textured primitives are drawn with their own program variant: both variants in one
+    // pass, each half against the formula with its own albedo (the texel decoded from sRGB).
+    engine::Scene scene = planeScene(0.5f);
+    const glm::u8vec4 texel{200, 90, 40, 255};
+    texturedLeftHalf(scene, texel);
+    addLight(scene, engine::Light::Type::Point, {0.4, -0.3, 1.5}, 1.5f);
+    const glm::dvec3 textured(srgbDecode(texel.r / 255.0), srgbDecode(texel.g / 255.0), srgbDecode(texel.b / 255.0));
+    EXPECT_LE(maxError(scene, 0.5, [&](const glm::dvec3& p) { return p.x < 0.0 ? textured : kAlbedo; }), 2.0);
 }
 
 TEST_F(LitShading, NoLightsRendersAmbientOnly) {

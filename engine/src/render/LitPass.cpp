@@ -76,6 +76,19 @@ int lightTypeCode(Light::Type type) {
     return 2;
 }
 
+// Which of lit.frag's base-color variants the scene's primitives need: {false} and/or
+// {true} (textured), in that order; {false} for a scene without primitives.
+std::vector<bool> texturedVariants(const Scene& scene, const SceneGpu& gpu) {
+    bool plain = false, textured = false;
+    for (int mesh = 0; mesh < static_cast<int>(scene.meshes.size()); ++mesh)
+        for (const SceneGpu::Primitive& primitive : gpu.primitives(mesh))
+            (gpu.baseColorTexture(primitive.material) != 0 ? textured : plain) = true;
+    std::vector<bool> variants;
+    if (plain || !textured) variants.push_back(false);
+    if (textured) variants.push_back(true);
+    return variants;
+}
+
 // lit.frag's light defines: how many lights the pass shades, and FOR_EACH_LIGHT(F)
 // expanding to F(slot, type code) for each of them.
 std::string lightDefines(const Scene& scene, int lightCount) {
@@ -98,13 +111,14 @@ LitPass::LitPass(const RendererConfig& config)
                                       GL_DYNAMIC_STORAGE_BIT)) {}
 
 const gl::Program& LitPass::programFor(const LightVisibilityHook* hook, const std::string& lightDefinesGlsl,
-                                      Output output, const std::string& loadShadesGlsl) {
+                                      Output output, const std::string& loadShadesGlsl, bool textured) {
     const std::string visibilityGlsl = hook ? hook->glsl : kNoShadowsGlsl;
     const std::string vertexTail = hook && !hook->vertexGlsl.empty() ? hook->vertexGlsl : kNoTexgenGlsl;
     const std::string header = "#version 450 core\n#define MAX_LIGHTS " + std::to_string(kMaxLights) + "\n" +
                                lightDefinesGlsl +
                                (output == Output::Comparison ? "#define LIGHT_DEBUG_VIEW\n" : "") +
-                               (output == Output::ShadowMask ? "#define LIGHT_MASK_VIEW\n" : "");
+                               (output == Output::ShadowMask ? "#define LIGHT_MASK_VIEW\n" : "") +
+                               (textured ? "#define BASE_COLOR_TEXTURE\n" : "");
     const std::string fragmentTail = visibilityGlsl + "\n" + loadShadesGlsl;
     const std::string key = header + vertexTail + fragmentTail;
     auto found = programs_.find(key);
@@ -135,12 +149,16 @@ void LitPass::uploadLights(const Scene& scene, const FrameCamera& camera) {
     lightBuffer_.update(0, sizeof(lights), lights);
 }
 
-void LitPass::drawScene(const Frame& frame, const gl::Program& program, PassContext& context) {
+void LitPass::drawScene(const Frame& frame, const Variants& programs, PassContext& context) {
     const Scene& scene = frame.scene();
     const glm::dmat4 view = glm::inverse(frame.camera().eyeToWorld);
-    program.set("uProjection", glm::mat4(frame.camera().projection));
-    program.set("uAmbient", config_.ambient);
+    for (const gl::Program* program : programs)
+        if (program) {
+            program->set("uProjection", glm::mat4(frame.camera().projection));
+            program->set("uAmbient", config_.ambient);
+        }
     glBindBufferBase(GL_UNIFORM_BUFFER, 0, lightBuffer_.id());
+    const gl::Program* current = nullptr;
 
     static const Material kDefaultMaterial{};
     const glm::dmat4 viewProjection = frame.camera().projection * view;
@@ -153,23 +171,27 @@ void LitPass::drawScene(const Frame& frame, const gl::Program& program, PassCont
         // Compose in double so only the camera-relative result is rounded to float.
         const glm::dmat4 modelView = view * frame.gpu().modelMatrix(instance);
         const glm::dmat3 normalMatrix = glm::transpose(glm::inverse(glm::dmat3(modelView)));
-        program.set("uModelView", glm::mat4(modelView));
-        program.set("uNormalMatrix", glm::mat3(normalMatrix));
-        program.set("uReceiveShadows", instance.receiveShadows ? 1 : 0);
         // A mirroring transform turns counter-clockwise triangles clockwise on screen.
         glFrontFace(glm::determinant(glm::dmat3(instance.world)) < 0.0 ? GL_CW : GL_CCW);
         for (const SceneGpu::Primitive& primitive : frame.gpu().primitives(instance.mesh)) {
             const Material& material = primitive.material >= 0 ? scene.materials[primitive.material]
                                                                : kDefaultMaterial;
+            const unsigned texture = frame.gpu().baseColorTexture(primitive.material);
+            const gl::Program& program = *programs[texture != 0];
+            if (&program != current) {
+                program.use();
+                current = &program;
+            }
+            program.set("uModelView", glm::mat4(modelView));
+            program.set("uNormalMatrix", glm::mat3(normalMatrix));
+            program.set("uReceiveShadows", instance.receiveShadows ? 1 : 0);
             program.set("uBaseColorFactor", material.baseColorFactor);
             program.set("uMetallic", material.metallicFactor);
             program.set("uRoughness", material.roughnessFactor);
             program.set("uEmissive", material.emissiveFactor);
             program.set("uAlphaCutoff",
                         material.alphaMode == AlphaMode::Mask ? material.alphaCutoff : -1.0f);
-            const unsigned texture = frame.gpu().baseColorTexture(primitive.material);
-            program.set("uHasBaseColorTexture", texture != 0 ? 1 : 0);
-            glBindTextureUnit(0, texture);
+            if (texture) glBindTextureUnit(0, texture);
             if (material.doubleSided) glDisable(GL_CULL_FACE);
             else glEnable(GL_CULL_FACE);
             context.countDraw(frame.gpu().draw(primitive));
@@ -198,7 +220,11 @@ void LitPass::addPass(Frame& frame, const std::string& name, ResourceHandle targ
     // 16.8 -> 15.7 ms for the showcase at 1280x720, whose unshadowed frame takes 14.0).
     const bool evaluatesHook = output != Output::Color || shadePlan_.evaluatesHook();
     const LightVisibilityHook* shading = hook && evaluatesHook ? &*hook : nullptr;
-    const gl::Program& program = programFor(shading, lightDefines(frame.scene(), lightCount), output, loadShadesGlsl);
+    // The variants the scene's primitives need (textured or not).
+    Variants programs{};
+    const std::string lights = lightDefines(frame.scene(), lightCount);
+    for (const bool textured : texturedVariants(frame.scene(), frame.gpu()))
+        programs[textured] = &programFor(shading, lights, output, loadShadesGlsl, textured);
     std::vector<float> dimming(kMaxLights, 0.0f);
     if (hook)
         std::copy_n(hook->dimming.begin(), std::min<std::size_t>(hook->dimming.size(), kMaxLights), dimming.begin());
@@ -217,7 +243,7 @@ void LitPass::addPass(Frame& frame, const std::string& name, ResourceHandle targ
                 {frame.camera().width, frame.camera().height, TextureFormat::Depth32F});
             handles->target = builder.write(target);
         },
-        [this, &frame, &program, handles, output, maskSlot, shading, dimming](PassContext& context) {
+        [this, &frame, programs, handles, output, maskSlot, shading, dimming](PassContext& context) {
             const bool color = output == Output::Color;
             if (color) uploadLights(frame.scene(), frame.camera());
             gl::Framebuffer framebuffer = gl::Framebuffer::create();
@@ -237,11 +263,13 @@ void LitPass::addPass(Frame& frame, const std::string& name, ResourceHandle targ
             glClearNamedFramebufferfv(framebuffer.id(), GL_DEPTH, 0, &farDepth);
             glEnable(GL_DEPTH_TEST);
             glDepthFunc(GL_LESS);
-            program.use();
-            program.set("uMaskLight", maskSlot);
-            program.set("uLightDimming", dimming);
-            if (shading && shading->bind) shading->bind(program, context);
-            drawScene(frame, program, context);
+            for (const gl::Program* program : programs) {
+                if (!program) continue;
+                program->set("uMaskLight", maskSlot);
+                program->set("uLightDimming", dimming);
+                if (shading && shading->bind) shading->bind(*program, context);
+            }
+            drawScene(frame, programs, context);
             glDisable(GL_FRAMEBUFFER_SRGB);
             glBindFramebuffer(GL_FRAMEBUFFER, 0);
             if (shadePlan) {

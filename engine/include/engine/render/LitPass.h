@@ -10,6 +10,7 @@
 #include "engine/render/Frame.h"
 #include "engine/render/ShadeCache.h"
 
+#include <array>
 #include <map>
 #include <memory>
 #include <string>
@@ -38,14 +39,18 @@ private:
     enum class Output { Color, ShadowMask, Comparison };  // lit.frag's views
     void addPass(Frame& frame, const std::string& name, ResourceHandle target, Output output,
                  int maskSlot);
-    // One program per hook source, lights (count and types), output view and shade-cache
-    // plan (fetched / computed lights), compiled on first use.
+    // One program per hook source, lights (count and types), output view, shade-cache
+    // plan (fetched / computed lights) and base color texture (with or without), compiled
+    // on first use.
     const gl::Program& programFor(const LightVisibilityHook* hook, const std::string& lightDefinesGlsl,
-                                  Output output, const std::string& loadShadesGlsl);
+                                  Output output, const std::string& loadShadesGlsl, bool textured);
+    // A pass's program variants, indexed by "the material has a base color texture"; null
+    // where no primitive of the scene needs that variant.
+    using Variants = std::array<const gl::Program*, 2>;
     // Binds the array the plan fetches from and attaches the one it writes as outputs 1...
     void attachShadeCache(const gl::Framebuffer& framebuffer, const ShadeCache::Plan& plan);
     void uploadLights(const Scene& scene, const FrameCamera& camera);
-    void drawScene(const Frame& frame, const gl::Program& program, PassContext& context);
+    void drawScene(const Frame& frame, const Variants& programs, PassContext& context);
 
     RendererConfig config_;
     std::map<std::string, std::unique_ptr<gl::Program>> programs_;  // by full header + hook
