@@ -161,16 +161,20 @@ protected:
     }
 
     // Every pixel against the formula: max error in 1/255 units. `albedoAt` gives the
-    // base color at a surface point (default: kAlbedo everywhere).
+    // base color at a surface point (default: kAlbedo everywhere); `discardedAt` the
+    // points where nothing may be drawn (expected: the clear color, black).
     double maxError(engine::Scene& scene, double roughness,
-                    const std::function<glm::dvec3(const glm::dvec3&)>& albedoAt = nullptr) {
+                    const std::function<glm::dvec3(const glm::dvec3&)>& albedoAt = nullptr,
+                    const std::function<bool(const glm::dvec3&)>& discardedAt = nullptr) {
         const auto pixels = render(scene);
         double worst = 0.0;
         for (int y = 0; y < kSize; ++y)
             for (int x = 0; x < kSize; ++x) {
                 const glm::dvec3 point = surfacePoint(camera(), x, y);
                 const glm::dvec3 expected =
-                    expectedColor(scene, point, roughness, albedoAt ? albedoAt(point) : kAlbedo);
+                    discardedAt && discardedAt(point)
+                        ? glm::dvec3(0.0)
+                        : expectedColor(scene, point, roughness, albedoAt ? albedoAt(point) : kAlbedo);
                 for (int c = 0; c < 3; ++c) {
                     const double actual = pixels[(y * kSize + x) * 4 + c];
                     worst = std::max(worst, std::abs(actual - 255.0 * srgbEncode(expected[c])));
@@ -215,6 +219,24 @@ TEST_F(LitShading, TexturedAndUntexturedMaterialsInOneFrame) {
     texturedLeftHalf(scene, texel);
     addLight(scene, engine::Light::Type::Point, {0.4, -0.3, 1.5}, 1.5f);
     const glm::dvec3 textured(srgbDecode(texel.r / 255.0), srgbDecode(texel.g / 255.0), srgbDecode(texel.b / 255.0));
+    EXPECT_LE(maxError(scene, 0.5, [&](const glm::dvec3& p) { return p.x < 0.0 ? textured : kAlbedo; }), 2.0);
+}
+
+TEST_F(LitShading, AlphaMaskedMaterialsDiscardBelowTheirCutoff) {
+    // Only alpha-masked materials' program variants can discard. The textured left half is
+    // masked with a texel alpha under its cutoff: nothing drawn there. The right half is
+    // masked too, untextured, its alpha above the cutoff: shaded by the formula.
+    engine::Scene scene = planeScene(0.5f);
+    texturedLeftHalf(scene, {200, 90, 40, 40});
+    for (engine::Material& material : scene.materials) {
+        material.alphaMode = engine::AlphaMode::Mask;
+        material.alphaCutoff = 0.5f;
+    }
+    addLight(scene, engine::Light::Type::Point, {0.4, -0.3, 1.5}, 1.5f);
+    EXPECT_LE(maxError(scene, 0.5, nullptr, [](const glm::dvec3& p) { return p.x < 0.0; }), 2.0);
+    // The same texel with the cutoff under its alpha is drawn.
+    scene.materials[1].alphaCutoff = 0.1f;
+    const glm::dvec3 textured(srgbDecode(200 / 255.0), srgbDecode(90 / 255.0), srgbDecode(40 / 255.0));
     EXPECT_LE(maxError(scene, 0.5, [&](const glm::dvec3& p) { return p.x < 0.0 ? textured : kAlbedo; }), 2.0);
 }
 

@@ -76,16 +76,36 @@ int lightTypeCode(Light::Type type) {
     return 2;
 }
 
-// Which of lit.frag's base-color variants the scene's primitives need: {false} and/or
-// {true} (textured), in that order; {false} for a scene without primitives.
-std::vector<bool> texturedVariants(const Scene& scene, const SceneGpu& gpu) {
-    bool plain = false, textured = false;
+// lit.frag's per-material parts, as bits of a program variant: a base color texture to
+// sample, an alpha test that may discard. llvmpipe pays for both even where a uniform
+// switches them off (it samples in untaken branches, and a shader that can discard defers
+// its depth writes), so each combination a scene uses is its own program.
+constexpr int kTexturedVariant = 1, kAlphaMaskVariant = 2;
+
+const Material& materialOf(const Scene& scene, const SceneGpu::Primitive& primitive) {
+    static const Material kDefaultMaterial{};
+    return primitive.material >= 0 ? scene.materials[primitive.material] : kDefaultMaterial;
+}
+
+int variantOf(const Scene& scene, const SceneGpu& gpu, const SceneGpu::Primitive& primitive) {
+    return (gpu.baseColorTexture(primitive.material) != 0 ? kTexturedVariant : 0) |
+           (materialOf(scene, primitive).alphaMode == AlphaMode::Mask ? kAlphaMaskVariant : 0);
+}
+
+std::string variantDefines(int variant) {
+    return std::string(variant & kTexturedVariant ? "#define BASE_COLOR_TEXTURE\n" : "") +
+           (variant & kAlphaMaskVariant ? "#define ALPHA_MASK\n" : "");
+}
+
+// The variants the scene's primitives use (at least the plain one, for an empty scene).
+std::vector<int> variantsInUse(const Scene& scene, const SceneGpu& gpu) {
+    std::vector<int> variants;
     for (int mesh = 0; mesh < static_cast<int>(scene.meshes.size()); ++mesh)
         for (const SceneGpu::Primitive& primitive : gpu.primitives(mesh))
-            (gpu.baseColorTexture(primitive.material) != 0 ? textured : plain) = true;
-    std::vector<bool> variants;
-    if (plain || !textured) variants.push_back(false);
-    if (textured) variants.push_back(true);
+            if (const int variant = variantOf(scene, gpu, primitive);
+                std::find(variants.begin(), variants.end(), variant) == variants.end())
+                variants.push_back(variant);
+    if (variants.empty()) variants.push_back(0);
     return variants;
 }
 
@@ -111,14 +131,14 @@ LitPass::LitPass(const RendererConfig& config)
                                       GL_DYNAMIC_STORAGE_BIT)) {}
 
 const gl::Program& LitPass::programFor(const LightVisibilityHook* hook, const std::string& lightDefinesGlsl,
-                                      Output output, const std::string& loadShadesGlsl, bool textured) {
+                                      Output output, const std::string& loadShadesGlsl, int variant) {
     const std::string visibilityGlsl = hook ? hook->glsl : kNoShadowsGlsl;
     const std::string vertexTail = hook && !hook->vertexGlsl.empty() ? hook->vertexGlsl : kNoTexgenGlsl;
     const std::string header = "#version 450 core\n#define MAX_LIGHTS " + std::to_string(kMaxLights) + "\n" +
                                lightDefinesGlsl +
                                (output == Output::Comparison ? "#define LIGHT_DEBUG_VIEW\n" : "") +
                                (output == Output::ShadowMask ? "#define LIGHT_MASK_VIEW\n" : "") +
-                               (textured ? "#define BASE_COLOR_TEXTURE\n" : "");
+                               variantDefines(variant);
     const std::string fragmentTail = visibilityGlsl + "\n" + loadShadesGlsl;
     const std::string key = header + vertexTail + fragmentTail;
     auto found = programs_.find(key);
@@ -160,7 +180,6 @@ void LitPass::drawScene(const Frame& frame, const Variants& programs, PassContex
     glBindBufferBase(GL_UNIFORM_BUFFER, 0, lightBuffer_.id());
     const gl::Program* current = nullptr;
 
-    static const Material kDefaultMaterial{};
     const glm::dmat4 viewProjection = frame.camera().projection * view;
     // Camera culling (a mesh whose bounds miss the view frustum costs no draw), nearest
     // first so the depth test spares hidden fragments their shading.
@@ -174,10 +193,8 @@ void LitPass::drawScene(const Frame& frame, const Variants& programs, PassContex
         // A mirroring transform turns counter-clockwise triangles clockwise on screen.
         glFrontFace(glm::determinant(glm::dmat3(instance.world)) < 0.0 ? GL_CW : GL_CCW);
         for (const SceneGpu::Primitive& primitive : frame.gpu().primitives(instance.mesh)) {
-            const Material& material = primitive.material >= 0 ? scene.materials[primitive.material]
-                                                               : kDefaultMaterial;
-            const unsigned texture = frame.gpu().baseColorTexture(primitive.material);
-            const gl::Program& program = *programs[texture != 0];
+            const Material& material = materialOf(scene, primitive);
+            const gl::Program& program = *programs[variantOf(scene, frame.gpu(), primitive)];
             if (&program != current) {
                 program.use();
                 current = &program;
@@ -189,9 +206,9 @@ void LitPass::drawScene(const Frame& frame, const Variants& programs, PassContex
             program.set("uMetallic", material.metallicFactor);
             program.set("uRoughness", material.roughnessFactor);
             program.set("uEmissive", material.emissiveFactor);
-            program.set("uAlphaCutoff",
-                        material.alphaMode == AlphaMode::Mask ? material.alphaCutoff : -1.0f);
-            if (texture) glBindTextureUnit(0, texture);
+            program.set("uAlphaCutoff", material.alphaCutoff);
+            if (const unsigned texture = frame.gpu().baseColorTexture(primitive.material))
+                glBindTextureUnit(0, texture);
             if (material.doubleSided) glDisable(GL_CULL_FACE);
             else glEnable(GL_CULL_FACE);
             context.countDraw(frame.gpu().draw(primitive));
@@ -220,11 +237,11 @@ void LitPass::addPass(Frame& frame, const std::string& name, ResourceHandle targ
     // 16.8 -> 15.7 ms for the showcase at 1280x720, whose unshadowed frame takes 14.0).
     const bool evaluatesHook = output != Output::Color || shadePlan_.evaluatesHook();
     const LightVisibilityHook* shading = hook && evaluatesHook ? &*hook : nullptr;
-    // The variants the scene's primitives need (textured or not).
+    // The material variants the scene's primitives need.
     Variants programs{};
     const std::string lights = lightDefines(frame.scene(), lightCount);
-    for (const bool textured : texturedVariants(frame.scene(), frame.gpu()))
-        programs[textured] = &programFor(shading, lights, output, loadShadesGlsl, textured);
+    for (const int variant : variantsInUse(frame.scene(), frame.gpu()))
+        programs[variant] = &programFor(shading, lights, output, loadShadesGlsl, variant);
     std::vector<float> dimming(kMaxLights, 0.0f);
     if (hook)
         std::copy_n(hook->dimming.begin(), std::min<std::size_t>(hook->dimming.size(), kMaxLights), dimming.begin());
