@@ -67,6 +67,7 @@ std::uint64_t shadeViewKey(const Frame& frame, std::uint64_t sceneGeneration) {
     return hasher.value();
 }
 
+// lit.frag's LIGHT_DIRECTIONAL, LIGHT_SPOT and LIGHT_POINT.
 int lightTypeCode(Light::Type type) {
     switch (type) {
     case Light::Type::Directional: return 0;
