@@ -5,11 +5,6 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 bash tools/install-deps.sh
 bash tools/build.sh build
-# Without Mesa's on-disk shader cache: results must not depend on what earlier runs left in
-# ~/.cache, and with cache hits GCC 12's LeakSanitizer crashed at exit while scanning
-# thread-local storage ("Tracer caught signal 11" in ScanRangeForPointers) in 2 of 324
-# tests, every run; with the cache off in none (same environment size, 3 runs each).
-export MESA_SHADER_CACHE_DISABLE=true
 (cd build && ctest --output-on-failure -j"$(nproc)")
 
 bash tools/build.sh build-asan -DENGINE_SANITIZE=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo
