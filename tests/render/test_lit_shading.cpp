@@ -109,7 +109,7 @@ void texturedLeftHalf(engine::Scene& scene, const glm::u8vec4& texel) {
     scene.images.push_back(image);
     engine::Material textured = scene.materials[0];
     textured.baseColorFactor = glm::vec4(1.0f);
-    textured.baseColorImage = 0;
+    textured.baseColorTexture.image = 0;
     scene.materials.push_back(textured);
 }
 

@@ -322,7 +322,7 @@ TEST(GltfLoader, ReadsMaterialsAndDecodesTheBaseColorImage) {
     const engine::Material& m = scene.materials[0];
     EXPECT_EQ(m.name, "paint");
     EXPECT_EQ(m.baseColorFactor, glm::vec4(0.5f, 0.25f, 1.0f, 0.75f));
-    EXPECT_EQ(m.baseColorImage, 1);
+    EXPECT_EQ(m.baseColorTexture.image, 1);
     EXPECT_EQ(m.metallicFactor, 0.0f);
     EXPECT_EQ(m.roughnessFactor, 0.3f);
     EXPECT_EQ(m.emissiveFactor, glm::vec3(0.1f, 0.2f, 0.3f));
@@ -346,7 +346,7 @@ TEST(GltfLoader, DefaultMaterialValuesWhenTheFileOmitsThem) {
     b.doc["materials"] = {json::object()};
     const engine::Material m = engine::loadGltf(b.writeGltf(dir.path(), "defaults")).materials[0];
     EXPECT_EQ(m.baseColorFactor, glm::vec4(1.0f));
-    EXPECT_EQ(m.baseColorImage, -1);
+    EXPECT_EQ(m.baseColorTexture.image, -1);
     EXPECT_EQ(m.emissiveFactor, glm::vec3(0.0f));
     EXPECT_EQ(m.alphaMode, engine::AlphaMode::Opaque);
     EXPECT_EQ(m.alphaCutoff, 0.5f);

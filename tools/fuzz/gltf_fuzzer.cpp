@@ -117,7 +117,7 @@ void checkSceneContract(const engine::Scene& scene) {
         }
     }
     for (const engine::Material& material : scene.materials)
-        if (!inRange(material.baseColorImage, scene.images.size(), true))
+        if (!inRange(material.baseColorTexture.image, scene.images.size(), true))
             finding("material '" + material.name + "': baseColorImage out of range");
     for (const engine::Image& image : scene.images)
         if (image.width <= 0 || image.height <= 0 ||

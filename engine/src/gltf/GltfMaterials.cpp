@@ -18,7 +18,7 @@ public:
         Material material;
         material.name = source_.name;
         material.baseColorFactor = glm::vec4(vector<4>("baseColorFactor", pbr.baseColorFactor, glm::dvec4(1.0), 1.0));
-        material.baseColorImage = baseColorImage(pbr.baseColorTexture.index);
+        material.baseColorTexture.image = baseColorImage(pbr.baseColorTexture.index);
         material.metallicFactor = static_cast<float>(inRange("metallicFactor", pbr.metallicFactor, 1.0));
         material.roughnessFactor = static_cast<float>(inRange("roughnessFactor", pbr.roughnessFactor, 1.0));
         // No upper bound: KHR_materials_emissive_strength files may exceed 1.

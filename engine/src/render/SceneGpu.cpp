@@ -66,7 +66,7 @@ SceneGpu::SceneGpu(const Scene& scene) {
         meshOrigins_.push_back(origin);
     }
     for (const Image& image : scene.images) images_.push_back(uploadImage(image));
-    for (const Material& material : scene.materials) materialImage_.push_back(material.baseColorImage);
+    for (const Material& material : scene.materials) materialImage_.push_back(material.baseColorTexture.image);
 }
 
 glm::dmat4 SceneGpu::modelMatrix(const MeshInstance& instance) const {

@@ -19,9 +19,16 @@ namespace engine {
 struct Primitive {
     std::vector<glm::vec3> positions;
     std::vector<glm::vec3> normals;    // always filled: generated (area-weighted) when absent
-    std::vector<glm::vec2> texcoords;  // empty when the primitive has no TEXCOORD_0
+    std::vector<glm::vec2> texcoords;   // empty when the primitive has no TEXCOORD_0
+    std::vector<glm::vec2> texcoords1;  // empty when the primitive has no TEXCOORD_1
+    // COLOR_0 as linear RGBA (vec3 colors get alpha 1); empty when absent (white).
+    std::vector<glm::vec4> colors;
     std::vector<std::uint32_t> indices;  // triangle list; 3 per triangle
     int material = -1;                   // index into Scene::materials, -1 = default material
+    // KHR_lights_shadows on the primitive (default true). They combine with the node's
+    // extras: a primitive casts only if both say so, and likewise for receiving.
+    bool castShadows = true;
+    bool receiveShadows = true;
     Aabb bounds;                         // object space
     std::size_t triangleCount() const { return indices.size() / 3; }
 };
@@ -45,17 +52,60 @@ struct Image {
 
 enum class AlphaMode { Opaque, Mask, Blend };
 
+// A glTF sampler, as the OpenGL enumerants glTF itself uses. An undefined filter takes the
+// engine's choice (trilinear minification, linear magnification).
+struct Sampler {
+    int magFilter = 0x2601;  // GL_LINEAR
+    int minFilter = 0x2703;  // GL_LINEAR_MIPMAP_LINEAR
+    int wrapS = 0x2901;      // GL_REPEAT
+    int wrapT = 0x2901;
+    bool operator==(const Sampler&) const = default;
+};
+
+// KHR_texture_transform: uv' = T(offset) * R(rotation) * S(scale) * uv. The rotation turns
+// the UVs counter-clockwise (the image clockwise): u' = cos*u + sin*v, v' = -sin*u + cos*v,
+// as the extension's example (the lower-left quadrant turned 90 degrees) requires.
+struct UvTransform {
+    glm::vec2 offset{0.0f};
+    float rotation = 0.0f;  // radians
+    glm::vec2 scale{1.0f};
+    // The 3x3 affine matrix (column-major, as GLSL takes it) that maps (u, v, 1).
+    glm::mat3 matrix() const;
+    glm::vec2 apply(const glm::vec2& uv) const { return glm::vec2(matrix() * glm::vec3(uv, 1.0f)); }
+    bool operator==(const UvTransform&) const = default;
+};
+
+// A material's reference to a texture: glTF textureInfo with its texture's image and sampler.
+struct TextureRef {
+    int image = -1;     // index into Scene::images, -1 = none
+    Sampler sampler;
+    int texCoord = 0;   // which TEXCOORD_n set (KHR_texture_transform's texCoord applied)
+    UvTransform transform;
+    bool present() const { return image >= 0; }
+};
+
 struct Material {
     std::string name;
     glm::vec4 baseColorFactor{1.0f};
-    int baseColorImage = -1;  // index into Scene::images, -1 = none
+    TextureRef baseColorTexture;
     float metallicFactor = 1.0f;
     float roughnessFactor = 1.0f;
     glm::vec3 emissiveFactor{0.0f};
     bool doubleSided = false;
     AlphaMode alphaMode = AlphaMode::Opaque;
     float alphaCutoff = 0.5f;
+    // BLEND materials cast shadow where their alpha reaches this (material extras
+    // "shadow_alpha_cutoff", default 0.5): a half-transparent pane blocks light as a mask
+    // would. 0 casts everywhere (as opaque), above 1 casts nothing.
+    float blendShadowCutoff = 0.5f;
 };
+
+// The alpha below which a caster made of `material` lets light through: MASK its
+// alphaCutoff, BLEND its blendShadowCutoff, OPAQUE (and a cutoff of 0) none: < 0.
+float shadowAlphaCutoff(const Material& material);
+// True when shadow casting must test alpha (shadowAlphaCutoff >= 0): such a caster is open,
+// whatever its geometry, and costs the depth passes a texture lookup.
+inline bool castsAlphaTested(const Material& material) { return shadowAlphaCutoff(material) >= 0.0f; }
 
 struct Camera {
     enum class Type { Perspective, Orthographic };
@@ -77,6 +127,9 @@ struct Light {
     double range = 0.0;  // 0 = infinite (glTF: undefined range)
     double innerConeAngle = 0.0;               // radians, spot only
     double outerConeAngle = 0.78539816339744831;  // pi/4, spot only
+    // KHR_lights_shadows "castShadows" on the light (default true): false means no shadow
+    // from this light, whatever its extras say.
+    bool castShadows = true;
     // The light object's "extras" (e.g. {"shadow":{...}}), kept for plugins to interpret.
     nlohmann::json extras = nlohmann::json::object();
 };
