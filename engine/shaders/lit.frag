@@ -30,23 +30,18 @@ layout(std140, binding = 0) uniform Lights {
 uniform vec3 uAmbient;
 uniform float uLightDimming[MAX_LIGHTS];  // the visibility hook's d per light
 
-uniform vec4 uBaseColorFactor;
+// The base color (factor, vertex color, texture) and the alpha test come from the material
+// parts the engine prepends (MaterialShading.h), each a program variant of its own:
+// llvmpipe samples in untaken branches too (showcase, no textures, three alternating
+// runs: unshadowed 8.10-8.17 -> 7.66-7.74 ms at 1280x720 once untextured materials got a
+// program without the fetch), and a shader that can discard defers its depth writes past
+// the shading (2CylinderEngine, no masked materials, unshadowed frame 24.95-25.43 ->
+// 21.27-21.89 ms).
 uniform float uMetallic;
 uniform float uRoughness;
 uniform vec3 uEmissive;
-#ifdef ALPHA_MASK
-// Only alpha-masked materials' variant can discard: in a shader that can, llvmpipe defers
-// depth writes past the shading (2CylinderEngine, no masked materials, unshadowed frame
-// 24.95-25.43 -> 21.27-21.89 ms at 1280x720, three alternating runs).
-uniform float uAlphaCutoff;
-#endif
-uniform bool uReceiveShadows;  // node extras "receive_shadows": false opts a mesh out
-#ifdef BASE_COLOR_TEXTURE
-// Textured materials get their own program variant: llvmpipe samples in untaken branches
-// too, so a uniform switch made every untextured fragment pay for the fetch (showcase,
-// no textures, three alternating runs: unshadowed 8.10-8.17 -> 7.66-7.74 ms at 1280x720).
-layout(binding = 0) uniform sampler2D uBaseColorTexture;
-#endif
+// Node extras "receive_shadows" and KHR_lights_shadows "receiveShadows": false opts out.
+uniform bool uReceiveShadows;
 
 // Without a view define: the shaded color. LIGHT_MASK_VIEW: the visibility hook's shade
 // of light uMaskLight as gray; LIGHT_DEBUG_VIEW: the hook's debug picture of that light
@@ -58,7 +53,6 @@ uniform int uMaskLight;
 
 in vec3 vEyePosition;
 in vec3 vEyeNormal;
-in vec2 vTexcoord;
 layout(location = 0) out vec4 outColor;
 
 float lightVisibility(int lightSlot, vec3 eyePosition, vec3 eyeNormal);
@@ -114,12 +108,9 @@ vec3 lightContribution(int slot, int type, float shade, vec3 N, vec3 V, vec3 dif
 }
 
 void main() {
-    vec4 albedo = uBaseColorFactor;
-#ifdef BASE_COLOR_TEXTURE
-    albedo *= texture(uBaseColorTexture, vTexcoord);
-#endif
-#ifdef ALPHA_MASK
-    if (albedo.a < uAlphaCutoff) discard;
+    vec4 albedo = materialBaseColor();
+#ifdef ALPHA_TEST
+    discardBelowAlphaCutoff(albedo.a);
 #endif
 
     vec3 N = normalize(vEyeNormal);

@@ -10,13 +10,15 @@
 // z. The far plane counts as a last layer (DepthRenderer draws it after the casters), so a
 // texel with one surface holds the midpoint between it and far; texels with no surface at
 // all keep the clear value (far): nothing there to shadow.
+// ALPHA_TEST (an alpha-tested caster, MaterialShading.h): texels whose base color alpha
+// is below the material's shadow cutoff cast nothing, in both of Woo's passes alike.
 #ifdef PEEL
 #ifdef PEEL_ARRAY
-layout(binding = 0) uniform sampler2DArray uFirstLayer;  // one layer per cube face
+layout(binding = FIRST_LAYER_UNIT) uniform sampler2DArray uFirstLayer;  // one layer per cube face
 uniform int uFirstLayerIndex;
 #define FIRST_LAYER_DEPTH texelFetch(uFirstLayer, ivec3(gl_FragCoord.xy, uFirstLayerIndex), 0).r
 #else
-layout(binding = 0) uniform sampler2D uFirstLayer;
+layout(binding = FIRST_LAYER_UNIT) uniform sampler2D uFirstLayer;
 #define FIRST_LAYER_DEPTH texelFetch(uFirstLayer, ivec2(gl_FragCoord.xy), 0).r
 #endif
 uniform float uPeelEpsilon;
@@ -26,6 +28,9 @@ uniform bool uReversedZ;
 #endif
 
 void main() {
+#ifdef ALPHA_TEST
+    discardBelowAlphaCutoff(materialBaseColor().a);
+#endif
 #ifdef PEEL
     float z1 = FIRST_LAYER_DEPTH;
     bool firstLayer = uReversedZ ? gl_FragCoord.z >= z1 - uPeelEpsilon * z1

@@ -1,5 +1,7 @@
 #include "truth/RayTracedVisibility.h"
 
+#include "truth/TextureAlpha.h"
+
 #include "engine/scene/Scene.h"
 
 #include <embree3/rtcore.h>
@@ -51,11 +53,25 @@ double maxAbs(const glm::dvec3& v) {
 
 constexpr int kTile = 4;  // 4x4 pixels = one 16-ray packet: neighbours trace coherently
 
+// Embree's occlusion filter for an alpha-tested caster: a hit where the material's alpha
+// is below its shadow cutoff is no hit, and the ray goes on through the hole.
+void alphaOcclusionFilter(const RTCFilterFunctionNArguments* args) {
+    const auto* caster = static_cast<const AlphaTestedPrimitive*>(args->geometryUserPtr);
+    for (unsigned lane = 0; lane < args->N; ++lane) {
+        if (args->valid[lane] != -1) continue;
+        const unsigned triangle = RTCHitN_primID(args->hit, args->N, lane);
+        const double u = RTCHitN_u(args->hit, args->N, lane), v = RTCHitN_v(args->hit, args->N, lane);
+        if (caster->alphaAt(triangle, u, v) < caster->cutoff()) args->valid[lane] = 0;
+    }
+}
+
 } // namespace
 
 struct RayTracedVisibility::Embree {
     RTCDevice device = nullptr;
     RTCScene scene = nullptr;
+    // The filters' user data; released after the scene (declared first, destroyed last).
+    std::vector<std::unique_ptr<AlphaTestedPrimitive>> alphaTested;
     ~Embree() {
         if (scene) rtcReleaseScene(scene);
         if (device) rtcReleaseDevice(device);
@@ -89,6 +105,7 @@ RayTracedVisibility::RayTracedVisibility(const engine::Scene& scene)
     for (const engine::MeshInstance& instance : scene.meshInstances) {
         if (!instance.castShadows) continue;
         for (const engine::Primitive& primitive : scene.meshes.at(instance.mesh).primitives) {
+            if (!primitive.castShadows) continue;  // KHR_lights_shadows on the primitive
             const std::size_t vertexCount = primitive.positions.size();
             const std::size_t triangleCount = primitive.indices.size() / 3;
             if (triangleCount == 0) continue;
@@ -121,6 +138,17 @@ RayTracedVisibility::RayTracedVisibility(const engine::Scene& scene)
             }
             std::copy(primitive.indices.begin(), primitive.indices.begin() + 3 * triangleCount,
                       indices);
+            static const engine::Material kDefaultMaterial{};
+            const engine::Material& material =
+                primitive.material >= 0 ? scene.materials.at(primitive.material) : kDefaultMaterial;
+            if (engine::castsAlphaTested(material)) {
+                const int image = material.baseColorTexture.image;
+                const bool hasImage = image >= 0 && image < static_cast<int>(scene.images.size());
+                embree_->alphaTested.push_back(std::make_unique<AlphaTestedPrimitive>(
+                    primitive, material, hasImage ? &scene.images[image] : nullptr));
+                rtcSetGeometryUserData(geometry, embree_->alphaTested.back().get());
+                rtcSetGeometryOccludedFilterFunction(geometry, alphaOcclusionFilter);
+            }
             rtcCommitGeometry(geometry);
             rtcAttachGeometry(embree_->scene, geometry);
             rtcReleaseGeometry(geometry);  // the scene holds it now
@@ -246,8 +274,10 @@ std::vector<std::uint8_t> evaluationSet(const engine::Scene& scene, int lightIns
     for (std::size_t i = 0; i < inSet.size(); ++i) {
         if (!surfaces.covered[i]) continue;
         const int instance = surfaces.instance[i];
-        if (instance >= 0 && instance < static_cast<int>(scene.meshInstances.size()) &&
-            !scene.meshInstances[instance].receiveShadows)
+        const bool instanceReceives = !(instance >= 0 && instance < static_cast<int>(scene.meshInstances.size())) ||
+                                      scene.meshInstances[instance].receiveShadows;
+        const bool surfaceReceives = surfaces.receivesShadows.empty() || surfaces.receivesShadows[i];
+        if (!instanceReceives || !surfaceReceives)
             continue;  // the engine never shadows it, so its error says nothing
         const glm::dvec3& p = surfaces.worldPosition[i];
         glm::dvec3 towardLight = -axis;

@@ -3,8 +3,11 @@
 // covered pixel of a SurfaceBuffer, one shadow ray (Embree 3) from the surface point to the
 // light: 1 = the light is visible there, 0 = something blocks it.
 //
-// Occluders are the meshes of nodes with castShadows = true, every triangle two-sided (a
-// surface blocks light whichever way it faces). Alpha-masked materials block as if opaque.
+// Occluders are the primitives that cast shadows (node extras and KHR_lights_shadows), every
+// triangle two-sided (a surface blocks light whichever way it faces). Alpha-tested casters
+// (MASK materials, and BLEND by their casting policy: engine::shadowAlphaCutoff) block only
+// where their alpha reaches the cutoff, sampled as the depth passes sample it
+// (TextureAlpha.h), through an Embree occlusion filter.
 //
 // Precision: Embree works in float. Vertices are transformed to world in double and stored
 // relative to the centre of the scene's bounds, so a scene 10^6 units from the origin is
@@ -58,7 +61,7 @@ std::vector<std::uint8_t> visibility(const engine::Scene& scene, int lightInstan
                                      const SurfaceBuffer& surfaces);
 
 // The evaluation set E of DESIGN.md for light `lightInstance`, per pixel (1 = in E):
-// covered pixels of a shadow-receiving mesh, inside the light's cone (spot: angle to the
+// covered pixels of a shadow-receiving surface (node and primitive), inside the light's cone (spot: angle to the
 // axis <= outer cone angle; point, directional: everywhere), within range (range > 0; not
 // for directional lights), whose surface faces the light (geometric N.L > 0).
 std::vector<std::uint8_t> evaluationSet(const engine::Scene& scene, int lightInstance,

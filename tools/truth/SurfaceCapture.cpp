@@ -2,6 +2,7 @@
 
 #include "engine/gl/Framebuffer.h"
 #include "engine/gl/Texture.h"
+#include "engine/render/MaterialShading.h"
 #include "engine/render/SceneGpu.h"
 #include "engine/render/TextureReadback.h"
 #include "engine/scene/Scene.h"
@@ -16,16 +17,14 @@ namespace {
 // in double, so the floats here are camera-relative and small.
 constexpr const char* kVertex = R"(
 layout(location = ATTRIB_POSITION) in vec3 inPosition;
-layout(location = ATTRIB_TEXCOORD) in vec2 inTexcoord;
 uniform mat4 uModelView;   // V^-1 * M
 uniform mat4 uProjection;  // P_eye
 out vec3 gEyePosition;
-out vec2 gTexcoord;
 void main() {
     vec4 eyePosition = uModelView * vec4(inPosition, 1.0);
     gEyePosition = eyePosition.xyz;
-    gTexcoord = inTexcoord;
     gl_Position = uProjection * eyePosition;
+    passMaterialInputs();
 }
 )";
 
@@ -33,16 +32,18 @@ void main() {
 // ray must leave from the side of the *geometry* the camera sees, and smooth normals point
 // off the surface near silhouettes. Facing is decided once per triangle (a plane faces the
 // eye everywhere or nowhere), against the projection's eye point: (0,0,0,1) for perspective,
-// (0,0,1,0) (a direction) for orthographic.
+// (0,0,1,0) (a direction) for orthographic. The material varyings pass through.
 constexpr const char* kGeometry = R"(
 layout(triangles) in;
 layout(triangle_strip, max_vertices = 3) out;
 uniform vec4 uEyePoint;
 in vec3 gEyePosition[];
-in vec2 gTexcoord[];
 out vec3 vEyePosition;
-out vec2 vTexcoord;
 flat out vec3 vFaceNormal;
+#ifdef MATERIAL_VARYINGS
+in MATERIAL_VARYINGS materialIn[];
+out MATERIAL_VARYINGS materialOut;
+#endif
 void main() {
     vec3 n = cross(gEyePosition[1] - gEyePosition[0], gEyePosition[2] - gEyePosition[0]);
     vec3 toEye = uEyePoint.xyz - gEyePosition[0] * uEyePoint.w;
@@ -50,48 +51,58 @@ void main() {
     for (int i = 0; i < 3; ++i) {
         gl_Position = gl_in[i].gl_Position;
         vEyePosition = gEyePosition[i];
-        vTexcoord = gTexcoord[i];
         vFaceNormal = n;
+#ifdef BASE_COLOR_TEXTURE
+        materialOut.baseColorUv = materialIn[i].baseColorUv;
+#endif
+#ifdef VERTEX_COLOR
+        materialOut.color = materialIn[i].color;
+#endif
         EmitVertex();
     }
     EndPrimitive();
 }
 )";
 
-// Same alpha-mask discard as engine/shaders/lit.frag, so coverage matches the shaded image.
+// The lit pass's own material code (MaterialShading.h): the same alpha test, so coverage
+// matches the shaded image.
 constexpr const char* kFragment = R"(
-uniform vec4 uBaseColorFactor;
-uniform bool uHasBaseColorTexture;
-uniform float uAlphaCutoff;  // < 0: no alpha test
-layout(binding = 0) uniform sampler2D uBaseColorTexture;
 uniform int uInstance;
+uniform bool uReceivesShadows;
 in vec3 vEyePosition;
-in vec2 vTexcoord;
 flat in vec3 vFaceNormal;
-layout(location = 0) out vec4 outPosition;  // xyz eye position, w = 1 (covered)
+layout(location = 0) out vec4 outPosition;  // xyz eye position, w = 1 covered, 2 covered and receiving
 layout(location = 1) out vec4 outNormal;    // xyz eye face normal, w = mesh instance
 void main() {
-    float alpha = uBaseColorFactor.a;
-    if (uHasBaseColorTexture) alpha *= texture(uBaseColorTexture, vTexcoord).a;
-    if (uAlphaCutoff >= 0.0 && alpha < uAlphaCutoff) discard;
+#ifdef ALPHA_TEST
+    discardBelowAlphaCutoff(materialBaseColor().a);
+#endif
     float len = length(vFaceNormal);
-    outPosition = vec4(vEyePosition, 1.0);
+    outPosition = vec4(vEyePosition, uReceivesShadows ? 2.0 : 1.0);
     outNormal = vec4(len > 0.0 ? vFaceNormal / len : vec3(0.0, 0.0, 1.0), float(uInstance));
 }
 )";
 
-std::string header() {
-    return "#version 450 core\n#define ATTRIB_POSITION " + std::to_string(engine::kAttribPosition) +
-           "\n#define ATTRIB_TEXCOORD " + std::to_string(engine::kAttribTexcoord) + "\n";
+engine::gl::Program compileCaptureProgram(unsigned materialFeatures) {
+    const std::string header = "#version 450 core\n#define ATTRIB_POSITION " +
+                               std::to_string(engine::kAttribPosition) + "\n" +
+                               engine::materialDefines(materialFeatures, engine::MaterialUse::Shading);
+    return engine::gl::Program::compile(
+        "truth_surface_capture", {{GL_VERTEX_SHADER, header + engine::materialVertexGlsl() + kVertex},
+                                  {GL_GEOMETRY_SHADER, header + kGeometry},
+                                  {GL_FRAGMENT_SHADER, header + engine::materialFragmentGlsl() + kFragment}});
 }
 
 } // namespace
 
-SurfaceCapture::SurfaceCapture()
-    : program_(engine::gl::Program::compile("truth_surface_capture",
-                                            {{GL_VERTEX_SHADER, header() + kVertex},
-                                             {GL_GEOMETRY_SHADER, header() + kGeometry},
-                                             {GL_FRAGMENT_SHADER, header() + kFragment}})) {}
+SurfaceCapture::SurfaceCapture() { program(0); }
+
+const engine::gl::Program& SurfaceCapture::program(unsigned materialFeatures) const {
+    auto found = programs_.find(materialFeatures);
+    if (found == programs_.end())
+        found = programs_.emplace(materialFeatures, compileCaptureProgram(materialFeatures)).first;
+    return found->second;
+}
 
 SurfaceBuffer SurfaceCapture::capture(const engine::Scene& scene, const engine::SceneGpu& gpu,
                                       const engine::FrameCamera& camera) const {
@@ -119,29 +130,26 @@ SurfaceBuffer SurfaceCapture::capture(const engine::Scene& scene, const engine::
     glDepthMask(GL_TRUE);
     glDisable(GL_BLEND);
 
-    program_.use();
-    program_.set("uProjection", glm::mat4(camera.projection));
     // A perspective projection has (0,0,-1,0) as its last row; an orthographic one (0,0,0,1).
     const bool perspective = camera.projection[3][3] == 0.0;
-    program_.set("uEyePoint", perspective ? glm::vec4(0, 0, 0, 1) : glm::vec4(0, 0, 1, 0));
+    const glm::vec4 eyePoint = perspective ? glm::vec4(0, 0, 0, 1) : glm::vec4(0, 0, 1, 0);
 
     const glm::dmat4 view = glm::inverse(camera.eyeToWorld);
-    static const Material kDefaultMaterial{};
     for (std::size_t i = 0; i < scene.meshInstances.size(); ++i) {
         const MeshInstance& instance = scene.meshInstances[i];
-        program_.set("uModelView", glm::mat4(view * gpu.modelMatrix(instance)));  // double, then cast
-        program_.set("uInstance", static_cast<int>(i));
+        const glm::mat4 modelView(view * gpu.modelMatrix(instance));  // double, then cast
         glFrontFace(glm::determinant(glm::dmat3(instance.world)) < 0.0 ? GL_CW : GL_CCW);
         for (const SceneGpu::Primitive& primitive : gpu.primitives(instance.mesh)) {
-            const Material& material =
-                primitive.material >= 0 ? scene.materials[primitive.material] : kDefaultMaterial;
-            program_.set("uBaseColorFactor", material.baseColorFactor);
-            program_.set("uAlphaCutoff",
-                         material.alphaMode == AlphaMode::Mask ? material.alphaCutoff : -1.0f);
-            const unsigned texture = gpu.baseColorTexture(primitive.material);
-            program_.set("uHasBaseColorTexture", texture != 0 ? 1 : 0);
-            glBindTextureUnit(0, texture);
-            if (material.doubleSided) glDisable(GL_CULL_FACE);
+            const unsigned features = materialFeatures(scene, gpu, primitive, MaterialUse::Shading);
+            const gl::Program& drawing = program(features);
+            drawing.use();
+            drawing.set("uProjection", glm::mat4(camera.projection));
+            drawing.set("uEyePoint", eyePoint);
+            drawing.set("uModelView", modelView);
+            drawing.set("uInstance", static_cast<int>(i));
+            drawing.set("uReceivesShadows", instance.receiveShadows && primitive.receiveShadows ? 1 : 0);
+            applyMaterial(drawing, scene, gpu, primitive, features, MaterialUse::Shading);
+            if (materialOf(scene, primitive).doubleSided) glDisable(GL_CULL_FACE);
             else glEnable(GL_CULL_FACE);
             gpu.draw(primitive);
         }
@@ -163,12 +171,14 @@ SurfaceBuffer SurfaceCapture::capture(const engine::Scene& scene, const engine::
     out.worldNormal.assign(count, glm::dvec3(0.0));
     out.covered.assign(count, 0);
     out.instance.assign(count, -1);
+    out.receivesShadows.assign(count, 0);
     const glm::dmat3 normalToWorld = glm::transpose(glm::inverse(glm::dmat3(camera.eyeToWorld)));
     for (std::size_t i = 0; i < count; ++i) {
         const float* p = &eyePositions[4 * i];
         const float* n = &eyeNormals[4 * i];
         if (p[3] < 0.5f) continue;
         out.covered[i] = 1;
+        out.receivesShadows[i] = p[3] > 1.5f ? 1 : 0;
         out.instance[i] = static_cast<std::int32_t>(n[3]);
         out.worldPosition[i] = glm::dvec3(camera.eyeToWorld * glm::dvec4(p[0], p[1], p[2], 1.0));
         out.worldNormal[i] = glm::normalize(normalToWorld * glm::dvec3(n[0], n[1], n[2]));

@@ -13,6 +13,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <map>
 #include <vector>
 
 namespace engine {
@@ -32,6 +33,8 @@ struct SurfaceBuffer {
     std::vector<glm::dvec3> worldNormal;
     std::vector<std::uint8_t> covered;  // 1 = some surface, 0 = background
     std::vector<std::int32_t> instance; // index into Scene::meshInstances, -1 = background
+    // 1 = the surface receives shadows (its node and its primitive both say so).
+    std::vector<std::uint8_t> receivesShadows;
 
     std::size_t pixelCount() const { return static_cast<std::size_t>(width) * height; }
 };
@@ -43,12 +46,15 @@ public:
 
     // Draws every mesh instance of `scene` (uploaded as `gpu`) as the lit pass does: same
     // culling (material doubleSided -> none, mirroring transforms flip the winding), same
-    // depth test and the same alpha-mask discard, so coverage matches the engine's image.
+    // depth test and the same material code (MaterialShading.h: texture, sampler, UV set
+    // and transform, vertex color, alpha test), so coverage matches the engine's image.
     SurfaceBuffer capture(const engine::Scene& scene, const engine::SceneGpu& gpu,
                           const engine::FrameCamera& camera) const;
 
 private:
-    engine::gl::Program program_;
+    // One program per material variant, compiled on first use.
+    const engine::gl::Program& program(unsigned materialFeatures) const;
+    mutable std::map<unsigned, engine::gl::Program> programs_;
 };
 
 } // namespace truth

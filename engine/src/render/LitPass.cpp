@@ -1,6 +1,7 @@
 #include "engine/render/LitPass.h"
 
 #include "engine/gl/Framebuffer.h"
+#include "engine/render/MaterialShading.h"
 #include "engine/render/SceneGpu.h"
 #include "engine/scene/DrawOrder.h"
 #include "engine/scene/Scene.h"
@@ -77,33 +78,13 @@ int lightTypeCode(Light::Type type) {
     return 2;
 }
 
-// lit.frag's per-material parts, as bits of a program variant: a base color texture to
-// sample, an alpha test that may discard. llvmpipe pays for both even where a uniform
-// switches them off (it samples in untaken branches, and a shader that can discard defers
-// its depth writes), so each combination a scene uses is its own program.
-constexpr int kTexturedVariant = 1, kAlphaMaskVariant = 2;
-
-const Material& materialOf(const Scene& scene, const SceneGpu::Primitive& primitive) {
-    static const Material kDefaultMaterial{};
-    return primitive.material >= 0 ? scene.materials[primitive.material] : kDefaultMaterial;
-}
-
-int variantOf(const Scene& scene, const SceneGpu& gpu, const SceneGpu::Primitive& primitive) {
-    return (gpu.baseColorTexture(primitive.material) != 0 ? kTexturedVariant : 0) |
-           (materialOf(scene, primitive).alphaMode == AlphaMode::Mask ? kAlphaMaskVariant : 0);
-}
-
-std::string variantDefines(int variant) {
-    return std::string(variant & kTexturedVariant ? "#define BASE_COLOR_TEXTURE\n" : "") +
-           (variant & kAlphaMaskVariant ? "#define ALPHA_MASK\n" : "");
-}
-
-// The variants the scene's primitives use (at least the plain one, for an empty scene).
-std::vector<int> variantsInUse(const Scene& scene, const SceneGpu& gpu) {
-    std::vector<int> variants;
+// The material variants (MaterialShading.h) the scene's primitives use (at least the plain
+// one, for an empty scene).
+std::vector<unsigned> variantsInUse(const Scene& scene, const SceneGpu& gpu) {
+    std::vector<unsigned> variants;
     for (int mesh = 0; mesh < static_cast<int>(scene.meshes.size()); ++mesh)
         for (const SceneGpu::Primitive& primitive : gpu.primitives(mesh))
-            if (const int variant = variantOf(scene, gpu, primitive);
+            if (const unsigned variant = materialFeatures(scene, gpu, primitive, MaterialUse::Shading);
                 std::find(variants.begin(), variants.end(), variant) == variants.end())
                 variants.push_back(variant);
     if (variants.empty()) variants.push_back(0);
@@ -132,21 +113,21 @@ LitPass::LitPass(const RendererConfig& config)
                                       GL_DYNAMIC_STORAGE_BIT)) {}
 
 const gl::Program& LitPass::programFor(const LightVisibilityHook* hook, const std::string& lightDefinesGlsl,
-                                      Output output, const std::string& loadShadesGlsl, int variant) {
+                                      Output output, const std::string& loadShadesGlsl, unsigned variant) {
     const std::string visibilityGlsl = hook ? hook->glsl : kNoShadowsGlsl;
     const std::string vertexTail = hook && !hook->vertexGlsl.empty() ? hook->vertexGlsl : kNoTexgenGlsl;
     const std::string header = "#version 450 core\n#define MAX_LIGHTS " + std::to_string(kMaxLights) + "\n" +
                                lightDefinesGlsl +
                                (output == Output::Comparison ? "#define LIGHT_DEBUG_VIEW\n" : "") +
                                (output == Output::ShadowMask ? "#define LIGHT_MASK_VIEW\n" : "") +
-                               variantDefines(variant);
+                               materialDefines(variant, MaterialUse::Shading);
     const std::string fragmentTail = visibilityGlsl + "\n" + loadShadesGlsl;
     const std::string key = header + vertexTail + fragmentTail;
     auto found = programs_.find(key);
     if (found != programs_.end()) return *found->second;
     auto program = std::make_unique<gl::Program>(gl::Program::compile(
-        "lit", {{GL_VERTEX_SHADER, header + shaders::lit_vert + "\n" + vertexTail},
-                {GL_FRAGMENT_SHADER, header + shaders::lit_frag + "\n" + fragmentTail}}));
+        "lit", {{GL_VERTEX_SHADER, header + materialVertexGlsl() + shaders::lit_vert + "\n" + vertexTail},
+                {GL_FRAGMENT_SHADER, header + materialFragmentGlsl() + shaders::lit_frag + "\n" + fragmentTail}}));
     return *programs_.emplace(key, std::move(program)).first->second;
 }
 
@@ -195,21 +176,19 @@ void LitPass::drawScene(const Frame& frame, const Variants& programs, PassContex
         glFrontFace(glm::determinant(glm::dmat3(instance.world)) < 0.0 ? GL_CW : GL_CCW);
         for (const SceneGpu::Primitive& primitive : frame.gpu().primitives(instance.mesh)) {
             const Material& material = materialOf(scene, primitive);
-            const gl::Program& program = *programs[variantOf(scene, frame.gpu(), primitive)];
+            const unsigned variant = materialFeatures(scene, frame.gpu(), primitive, MaterialUse::Shading);
+            const gl::Program& program = *programs[variant];
             if (&program != current) {
                 program.use();
                 current = &program;
             }
             program.set("uModelView", glm::mat4(modelView));
             program.set("uNormalMatrix", glm::mat3(normalMatrix));
-            program.set("uReceiveShadows", instance.receiveShadows ? 1 : 0);
-            program.set("uBaseColorFactor", material.baseColorFactor);
+            program.set("uReceiveShadows", instance.receiveShadows && primitive.receiveShadows ? 1 : 0);
             program.set("uMetallic", material.metallicFactor);
             program.set("uRoughness", material.roughnessFactor);
             program.set("uEmissive", material.emissiveFactor);
-            program.set("uAlphaCutoff", material.alphaCutoff);
-            if (const unsigned texture = frame.gpu().baseColorTexture(primitive.material))
-                glBindTextureUnit(0, texture);
+            applyMaterial(program, scene, frame.gpu(), primitive, variant, MaterialUse::Shading);
             if (material.doubleSided) glDisable(GL_CULL_FACE);
             else glEnable(GL_CULL_FACE);
             context.countDraw(frame.gpu().draw(primitive));
@@ -241,7 +220,7 @@ void LitPass::addPass(Frame& frame, const std::string& name, ResourceHandle targ
     // The material variants the scene's primitives need.
     Variants programs{};
     const std::string lights = lightDefines(frame.scene(), lightCount);
-    for (const int variant : variantsInUse(frame.scene(), frame.gpu()))
+    for (const unsigned variant : variantsInUse(frame.scene(), frame.gpu()))
         programs[variant] = &programFor(shading, lights, output, loadShadesGlsl, variant);
     std::vector<float> dimming(kMaxLights, 0.0f);
     if (hook)

@@ -34,11 +34,23 @@ SceneGpu::Primitive uploadPrimitive(const engine::Primitive& source, const glm::
         gpu.texcoords = uploadArray(source.texcoords);
         gpu.vertexArray.attribute(kAttribTexcoord, gpu.texcoords, 2, GL_FLOAT, sizeof(glm::vec2));
     }
+    gpu.hasTexcoords1 = !source.texcoords1.empty();
+    if (gpu.hasTexcoords1) {
+        gpu.texcoords1 = uploadArray(source.texcoords1);
+        gpu.vertexArray.attribute(kAttribTexcoord1, gpu.texcoords1, 2, GL_FLOAT, sizeof(glm::vec2));
+    }
+    gpu.hasColors = !source.colors.empty();
+    if (gpu.hasColors) {
+        gpu.colors = uploadArray(source.colors);
+        gpu.vertexArray.attribute(kAttribColor, gpu.colors, 4, GL_FLOAT, sizeof(glm::vec4));
+    }
+    gpu.castShadows = source.castShadows;
+    gpu.receiveShadows = source.receiveShadows;
     gpu.vertexArray.elementBuffer(gpu.indices);
     return gpu;
 }
 
-gl::Texture uploadImage(const Image& image) {
+gl::Texture uploadImage(const Image& image, const Sampler& sampler) {
     const int levels =
         1 + static_cast<int>(std::floor(std::log2(std::max(image.width, image.height))));
     gl::Texture texture = gl::Texture::create2D(GL_SRGB8_ALPHA8, image.width, image.height, levels);
@@ -46,10 +58,10 @@ gl::Texture uploadImage(const Image& image) {
     glTextureSubImage2D(texture.id(), 0, 0, 0, image.width, image.height, GL_RGBA,
                         GL_UNSIGNED_BYTE, image.rgba8.data());
     glGenerateTextureMipmap(texture.id());
-    texture.setParameter(GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-    texture.setParameter(GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    texture.setParameter(GL_TEXTURE_WRAP_S, GL_REPEAT);
-    texture.setParameter(GL_TEXTURE_WRAP_T, GL_REPEAT);
+    texture.setParameter(GL_TEXTURE_MIN_FILTER, sampler.minFilter);
+    texture.setParameter(GL_TEXTURE_MAG_FILTER, sampler.magFilter);
+    texture.setParameter(GL_TEXTURE_WRAP_S, sampler.wrapS);
+    texture.setParameter(GL_TEXTURE_WRAP_T, sampler.wrapT);
     return texture;
 }
 
@@ -65,8 +77,22 @@ SceneGpu::SceneGpu(const Scene& scene) {
         meshes_.push_back(std::move(primitives));
         meshOrigins_.push_back(origin);
     }
-    for (const Image& image : scene.images) images_.push_back(uploadImage(image));
-    for (const Material& material : scene.materials) materialImage_.push_back(material.baseColorTexture.image);
+    // Each (image, sampler) pair once, in the order the materials first use it.
+    std::vector<std::pair<int, Sampler>> uploaded;
+    for (const Material& material : scene.materials) {
+        const TextureRef& reference = material.baseColorTexture;
+        if (reference.image < 0 || reference.image >= static_cast<int>(scene.images.size())) {
+            materialTexture_.push_back(-1);
+            continue;
+        }
+        const std::pair<int, Sampler> key{reference.image, reference.sampler};
+        auto found = std::find(uploaded.begin(), uploaded.end(), key);
+        if (found == uploaded.end()) {
+            textures_.push_back(uploadImage(scene.images[reference.image], reference.sampler));
+            found = uploaded.insert(uploaded.end(), key);
+        }
+        materialTexture_.push_back(static_cast<int>(found - uploaded.begin()));
+    }
 }
 
 glm::dmat4 SceneGpu::modelMatrix(const MeshInstance& instance) const {
@@ -76,14 +102,16 @@ glm::dmat4 SceneGpu::modelMatrix(const MeshInstance& instance) const {
 std::uint64_t SceneGpu::draw(const Primitive& primitive) const {
     glBindVertexArray(primitive.vertexArray.id());
     if (!primitive.hasTexcoords) glVertexAttrib2f(kAttribTexcoord, 0.0f, 0.0f);
+    if (!primitive.hasTexcoords1) glVertexAttrib2f(kAttribTexcoord1, 0.0f, 0.0f);
+    if (!primitive.hasColors) glVertexAttrib4f(kAttribColor, 1.0f, 1.0f, 1.0f, 1.0f);
     glDrawElements(GL_TRIANGLES, primitive.indexCount, GL_UNSIGNED_INT, nullptr);
     return static_cast<std::uint64_t>(primitive.indexCount / 3);
 }
 
 unsigned SceneGpu::baseColorTexture(int material) const {
-    if (material < 0 || material >= static_cast<int>(materialImage_.size())) return 0;
-    const int image = materialImage_[material];
-    return image >= 0 && image < static_cast<int>(images_.size()) ? images_[image].id() : 0;
+    if (material < 0 || material >= static_cast<int>(materialTexture_.size())) return 0;
+    const int texture = materialTexture_[material];
+    return texture >= 0 ? textures_[texture].id() : 0;
 }
 
 } // namespace engine

@@ -3,6 +3,7 @@
 #include "engine/scene/FrustumCull.h"
 
 #include "engine/gl/Framebuffer.h"
+#include "engine/render/MaterialShading.h"
 #include "engine/render/SceneGpu.h"
 #include "engine/scene/Scene.h"
 
@@ -15,11 +16,18 @@ extern const char depth_frag[];
 
 namespace {
 
+// The texture unit of Woo pass 2's first layer: beside the material's base color texture.
+constexpr unsigned kFirstLayerUnit = engine::kMaterialTextureUnit + 1;
+
 // One source per stage; variants by #define (as bgfx's shadow examples do).
-engine::gl::Program compileDepthProgram(const std::string& name, const std::string& defines) {
-    const std::string header = "#version 450 core\n" + defines;
-    return engine::gl::Program::compile(name, {{GL_VERTEX_SHADER, header + shaders::depth_vert},
-                                               {GL_FRAGMENT_SHADER, header + shaders::depth_frag}});
+engine::gl::Program compileDepthProgram(const std::string& name, const std::string& defines,
+                                        unsigned materialFeatures) {
+    const std::string header = "#version 450 core\n" + defines + "#define FIRST_LAYER_UNIT " +
+                               std::to_string(kFirstLayerUnit) + "\n" +
+                               engine::materialDefines(materialFeatures, engine::MaterialUse::ShadowCasting);
+    return engine::gl::Program::compile(
+        name, {{GL_VERTEX_SHADER, header + engine::materialVertexGlsl() + shaders::depth_vert},
+               {GL_FRAGMENT_SHADER, header + engine::materialFragmentGlsl() + shaders::depth_frag}});
 }
 
 // Reversed Z stores near as 1 and far as 0: "away from the light" is then a negative
@@ -40,11 +48,20 @@ void setPolygonOffset(const glm::vec2& offset, const DepthPassStyle& style) {
 
 } // namespace
 
-DepthRenderer::DepthRenderer()
-    : plain_(compileDepthProgram("shadow depth", "")),
-      peel2D_(compileDepthProgram("shadow depth peel", "#define PEEL\n")),
-      peelArray_(compileDepthProgram("shadow depth peel (cube)", "#define PEEL\n#define PEEL_ARRAY\n")),
-      empty_(engine::gl::VertexArray::create()) {}
+DepthRenderer::DepthRenderer() : empty_(engine::gl::VertexArray::create()) {
+    // The opaque casters' programs, which every scene with shadows uses, before the first frame.
+    for (const Peel peel : {Peel::None, Peel::Layer2D, Peel::LayerArray}) program(peel, 0);
+}
+
+const engine::gl::Program& DepthRenderer::program(Peel peel, unsigned materialFeatures) {
+    const auto key = std::make_pair(peel, materialFeatures);
+    if (auto found = programs_.find(key); found != programs_.end()) return found->second;
+    const char* name = peel == Peel::None ? "shadow depth" : peel == Peel::Layer2D ? "shadow depth peel"
+                                                                                    : "shadow depth peel (cube)";
+    const char* defines = peel == Peel::None ? "" : peel == Peel::Layer2D ? "#define PEEL\n"
+                                                                           : "#define PEEL\n#define PEEL_ARRAY\n";
+    return programs_.emplace(key, compileDepthProgram(name, defines, materialFeatures)).first->second;
+}
 
 DepthDrawCounts DepthRenderer::render(const engine::Frame& frame, engine::PassContext& context,
                                       unsigned target, int layer, int resolution,
@@ -72,18 +89,27 @@ DepthDrawCounts DepthRenderer::render(const engine::Frame& frame, engine::PassCo
     glDepthMask(GL_TRUE);
     glCullFace(GL_FRONT);  // used only for closed casters under backFacesOnly
 
-    const engine::gl::Program& program =
-        !style.firstLayer ? plain_ : style.firstLayerIsArray ? peelArray_ : peel2D_;
-    program.use();
-    if (style.firstLayer) {
-        glBindTextureUnit(0, style.firstLayer);
-        if (style.firstLayerIsArray) program.set("uFirstLayerIndex", std::max(layer, 0));
-        program.set("uPeelEpsilon", style.peelEpsilon);
-        program.set("uReversedZ", style.reversedZ ? 1 : 0);
-        program.set("uFarLayer", 0);
-    }
+    const Peel peel = !style.firstLayer ? Peel::None : style.firstLayerIsArray ? Peel::LayerArray : Peel::Layer2D;
+    if (style.firstLayer) glBindTextureUnit(kFirstLayerUnit, style.firstLayer);
+    const engine::gl::Program* current = nullptr;
+    // Switches to the program a caster's material needs, with the pass's own uniforms.
+    auto use = [&](unsigned materialFeatures) -> const engine::gl::Program& {
+        const engine::gl::Program& next = program(peel, materialFeatures);
+        if (&next == current) return next;
+        current = &next;
+        next.use();
+        if (style.firstLayer) {
+            if (style.firstLayerIsArray) next.set("uFirstLayerIndex", std::max(layer, 0));
+            next.set("uPeelEpsilon", style.peelEpsilon);
+            next.set("uReversedZ", style.reversedZ ? 1 : 0);
+            next.set("uFarLayer", 0);
+        }
+        return next;
+    };
+    use(0);
 
     const engine::Scene& scene = frame.scene();
+    const engine::SceneGpu& gpu = frame.gpu();
     for (const engine::MeshInstance& instance : scene.meshInstances) {
         if (!instance.castShadows) continue;
         if (!engine::boxIntersectsFrustum(viewProjection, instance.worldBounds)) {
@@ -98,10 +124,15 @@ DepthDrawCounts DepthRenderer::render(const engine::Frame& frame, engine::PassCo
         // A mirroring transform turns counter-clockwise triangles clockwise.
         glFrontFace(glm::determinant(glm::dmat3(instance.world)) < 0.0 ? GL_CW : GL_CCW);
         // P_light * L^-1 * M in double: only the light-relative product is rounded.
-        program.set("uLightModelViewProjection",
-                    glm::mat4(viewProjection * frame.gpu().modelMatrix(instance)));
-        for (const auto& primitive : frame.gpu().primitives(instance.mesh)) {
-            const std::uint64_t triangles = frame.gpu().draw(primitive);
+        const glm::mat4 lightModelViewProjection(viewProjection * gpu.modelMatrix(instance));
+        for (const auto& primitive : gpu.primitives(instance.mesh)) {
+            if (!primitive.castShadows) continue;  // KHR_lights_shadows on the primitive
+            const unsigned features =
+                engine::materialFeatures(scene, gpu, primitive, engine::MaterialUse::ShadowCasting);
+            const engine::gl::Program& drawing = use(features);
+            drawing.set("uLightModelViewProjection", lightModelViewProjection);
+            engine::applyMaterial(drawing, scene, gpu, primitive, features, engine::MaterialUse::ShadowCasting);
+            const std::uint64_t triangles = gpu.draw(primitive);
             context.countDraw(triangles);
             ++counts.draws;
             counts.triangles += triangles;
@@ -118,7 +149,7 @@ DepthDrawCounts DepthRenderer::render(const engine::Frame& frame, engine::PassCo
         // with no surface at all fail the peel test and stay far.
         glDisable(GL_CULL_FACE);
         glEnable(GL_DEPTH_CLAMP);
-        program.set("uFarLayer", 1);
+        use(0).set("uFarLayer", 1);
         empty_.bind();
         glDrawArrays(GL_TRIANGLES, 0, 3);
         glBindVertexArray(0);
@@ -129,7 +160,7 @@ DepthDrawCounts DepthRenderer::render(const engine::Frame& frame, engine::PassCo
     glCullFace(GL_BACK);
     glFrontFace(GL_CCW);
     glEnable(GL_CULL_FACE);
-    if (style.firstLayer) glBindTextureUnit(0, 0);
+    if (style.firstLayer) glBindTextureUnit(kFirstLayerUnit, 0);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     return counts;
 }

@@ -8,6 +8,7 @@
 
 #include <glm/glm.hpp>
 
+#include <map>
 #include <vector>
 
 namespace shadowmap {
@@ -52,7 +53,13 @@ public:
                            bool drawCasters = true);
 
 private:
-    engine::gl::Program plain_, peel2D_, peelArray_;
+    enum class Peel { None, Layer2D, LayerArray };
+    // The program for a peel kind and a caster's material features (MaterialShading.h:
+    // only alpha-tested casters have any), compiled on first use: a scene without such
+    // casters never builds (or pays for) one that can discard.
+    const engine::gl::Program& program(Peel peel, unsigned materialFeatures);
+
+    std::map<std::pair<Peel, unsigned>, engine::gl::Program> programs_;
     engine::gl::VertexArray empty_;  // for the Woo far-layer triangle (gl_VertexID only)
 };
 

@@ -92,12 +92,17 @@ void ShadowMapPlugin::resolveLights(const engine::Scene& scene) {
     lights_.clear();
     scenePath_ = source;
     // The backface variant may cull front faces only of closed casters; a double-sided
-    // material means the surface is meant to be seen (and to cast) from both sides.
+    // material means the surface is meant to be seen (and to cast) from both sides, and an
+    // alpha-tested one has holes whatever its geometry: light passes through the front face
+    // and must still be stopped by the back face's opaque texels, or the other way round.
     closedMeshes_.assign(scene.meshes.size(), false);
     for (std::size_t mesh = 0; mesh < scene.meshes.size(); ++mesh) {
         bool closed = scene.meshes[mesh].closed;
-        for (const engine::Primitive& primitive : scene.meshes[mesh].primitives)
-            closed = closed && !(primitive.material >= 0 && scene.materials[primitive.material].doubleSided);
+        for (const engine::Primitive& primitive : scene.meshes[mesh].primitives) {
+            if (primitive.material < 0) continue;
+            const engine::Material& material = scene.materials[primitive.material];
+            closed = closed && !material.doubleSided && !engine::castsAlphaTested(material);
+        }
         closedMeshes_[mesh] = closed;
     }
     for (std::size_t slot = 0; slot < scene.lightInstances.size(); ++slot) {
@@ -112,6 +117,15 @@ void ShadowMapPlugin::resolveLights(const engine::Scene& scene) {
         const std::string object = "light \"" + shadow.name + "\"";
         if (light.extras.is_object() && light.extras.contains("shadow"))
             applySettings(shadow.settings, light.extras["shadow"], source, object + ": extras.shadow");
+        // KHR_lights_shadows "castShadows": false: the file says this light casts no shadow,
+        // and that wins over our extras (only the command line's --light overrides it).
+        if (!light.castShadows) {
+            if (shadow.settings.variant != Variant::None && light.extras.contains("shadow") &&
+                light.extras["shadow"].contains("variant"))
+                warnOnce(shadow, std::string("KHR_lights_shadows castShadows is false: extras.shadow variant \"") +
+                                     toString(shadow.settings.variant) + "\" is not used");
+            shadow.settings.variant = Variant::None;
+        }
         if (auto found = variantOverrides_.find(shadow.name); found != variantOverrides_.end())
             shadow.settings.variant = found->second;
         checkLimits(shadow.settings, maxTextureSize, source, object + ": extras.shadow");

@@ -8,6 +8,7 @@
 #include "engine/gl/Framebuffer.h"
 #include "engine/gl/Program.h"
 #include "engine/render/Frame.h"
+#include "engine/render/MaterialShading.h"
 #include "engine/render/ShadeCache.h"
 
 #include <array>
@@ -40,12 +41,12 @@ private:
     void addPass(Frame& frame, const std::string& name, ResourceHandle target, Output output,
                  int maskSlot);
     // One program per hook source, lights (count and types), output view, shade-cache
-    // plan (fetched / computed lights) and material variant (LitPass.cpp: textured and/or
-    // alpha-masked), compiled on first use.
+    // plan (fetched / computed lights) and material variant (MaterialShading.h feature
+    // bits), compiled on first use.
     const gl::Program& programFor(const LightVisibilityHook* hook, const std::string& lightDefinesGlsl,
-                                  Output output, const std::string& loadShadesGlsl, int variant);
+                                  Output output, const std::string& loadShadesGlsl, unsigned variant);
     // A pass's programs by material variant; null where no primitive of the scene needs it.
-    using Variants = std::array<const gl::Program*, 4>;
+    using Variants = std::array<const gl::Program*, kMaterialFeatureCombinations>;
     // Binds the array the plan fetches from and attaches the one it writes as outputs 1...
     void attachShadeCache(const gl::Framebuffer& framebuffer, const ShadeCache::Plan& plan);
     void uploadLights(const Scene& scene, const FrameCamera& camera);

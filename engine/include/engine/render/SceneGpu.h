@@ -18,16 +18,21 @@ struct MeshInstance;
 // Vertex attribute locations every engine and plugin shader uses.
 constexpr unsigned kAttribPosition = 0;
 constexpr unsigned kAttribNormal = 1;
-constexpr unsigned kAttribTexcoord = 2;
+constexpr unsigned kAttribTexcoord = 2;   // TEXCOORD_0
+constexpr unsigned kAttribTexcoord1 = 3;  // TEXCOORD_1
+constexpr unsigned kAttribColor = 4;      // COLOR_0
 
 class SceneGpu {
 public:
     struct Primitive {
-        gl::Buffer positions, normals, texcoords, indices;
+        gl::Buffer positions, normals, texcoords, texcoords1, colors, indices;
         gl::VertexArray vertexArray;
         std::int32_t indexCount = 0;
         int material = -1;
-        bool hasTexcoords = false;
+        // Absent attributes read constants instead: UV (0,0), color white.
+        bool hasTexcoords = false, hasTexcoords1 = false, hasColors = false;
+        // The source primitive's KHR_lights_shadows flags.
+        bool castShadows = true, receiveShadows = true;
     };
 
     explicit SceneGpu(const Scene& scene);
@@ -40,14 +45,18 @@ public:
     glm::dmat4 modelMatrix(const MeshInstance& instance) const;
     // Binds the primitive's vertex array and draws it; returns its triangle count.
     std::uint64_t draw(const Primitive& primitive) const;
-    // The material's base color texture (sRGB, mipmapped), or 0 when it has none.
+    // The material's base color texture (sRGB, mipmapped, its glTF sampler's filters and
+    // wrap modes set on it), or 0 when it has none.
     unsigned baseColorTexture(int material) const;
 
 private:
     std::vector<std::vector<Primitive>> meshes_;
     std::vector<glm::dvec3> meshOrigins_;      // per mesh: its bounds' centre
-    std::vector<gl::Texture> images_;          // per Scene::images, sRGB
-    std::vector<int> materialImage_;           // per material: index into images_ or -1
+    // One texture per distinct (image, sampler) the materials use: the sampler's state
+    // lives on the texture, so binding it is all a pass does (no sampler object left bound
+    // to a unit that another pass uses for a depth map).
+    std::vector<gl::Texture> textures_;
+    std::vector<int> materialTexture_;         // per material: index into textures_ or -1
 };
 
 } // namespace engine
