@@ -57,15 +57,20 @@ inline std::vector<std::uint8_t> renderShadowMask(const std::vector<RenderPlugin
     return renderer.readShadowMask(slot);
 }
 
-// The floor is the plane y = floorY within |x|,|z| < floorHalfExtent; pixels where another
-// box hides it, where `inside(p)` is false, or within edgeRadius pixels of an analytic
-// shadow edge are not evaluated. On any wrong pixel the mask and the truth are written to
-// TEST_OUTPUT_DIR, named after the running test.
-inline MaskStats compareFloorMask(const std::vector<std::uint8_t>& mask, const Scene& scene, int slot,
-                                  const FrameCamera& camera, const std::vector<Aabb>& occluders,
-                                  double floorY, double floorHalfExtent,
-                                  const std::function<bool(const glm::dvec3&)>& inside,
-                                  int edgeRadius = 2) {
+// What the analytic model says of one floor point seen along a camera ray: hidden from the
+// camera (something else is in front), lit, or shadowed.
+enum class FloorTruth { Hidden, Shadowed, Lit };
+// floorTruth(cameraRay, t, p): the floor point p = ray.origin + t * ray.direction.
+using FloorTruthFunction = std::function<FloorTruth(const Ray& cameraRay, double t, const glm::dvec3& p)>;
+
+// The floor is the plane y = floorY within |x|,|z| < floorHalfExtent; pixels where
+// `truthAt` says hidden, where `inside(p)` is false, or within edgeRadius pixels of an
+// analytic shadow edge are not evaluated. On any wrong pixel the mask and the truth are
+// written to TEST_OUTPUT_DIR, named after the running test.
+inline MaskStats compareFloorMaskWith(const std::vector<std::uint8_t>& mask, const FrameCamera& camera,
+                                      double floorY, double floorHalfExtent,
+                                      const std::function<bool(const glm::dvec3&)>& inside,
+                                      const FloorTruthFunction& truthAt, int edgeRadius = 2) {
     const int width = camera.width, height = camera.height;
     std::vector<int> truth(static_cast<std::size_t>(width) * height, -1);
     for (int y = 0; y < height; ++y)
@@ -75,14 +80,8 @@ inline MaskStats compareFloorMask(const std::vector<std::uint8_t>& mask, const S
             const double t = (floorY - ray.origin.y) / ray.direction.y;
             const glm::dvec3 p = ray.origin + ray.direction * t;
             if (std::abs(p.x) > floorHalfExtent || std::abs(p.z) > floorHalfExtent || !inside(p)) continue;
-            bool hidden = false;
-            for (const Aabb& box : occluders) {
-                double t0, t1;
-                if (box.max.y > floorY + 1e-9 && intersectBox(ray.origin, ray.direction, box, t0, t1) &&
-                    t0 < t - 1e-9)
-                    hidden = true;
-            }
-            if (!hidden) truth[y * width + x] = lightVisibleFrom(scene, slot, p, occluders) ? 1 : 0;
+            const FloorTruth value = truthAt(ray, t, p);
+            if (value != FloorTruth::Hidden) truth[y * width + x] = value == FloorTruth::Lit ? 1 : 0;
         }
     MaskStats stats;
     for (int y = edgeRadius; y < height - edgeRadius; ++y)
@@ -118,6 +117,24 @@ inline MaskStats compareFloorMask(const std::vector<std::uint8_t>& mask, const S
         writePngAtomically(std::string(TEST_OUTPUT_DIR) + "/" + name + "_truth.png", width, height, 1, truthImage);
     }
     return stats;
+}
+
+// compareFloorMaskWith for occluders that are boxes: a floor point is hidden when a box
+// above the floor lies in front of it, shadowed when the segment to the light crosses one.
+inline MaskStats compareFloorMask(const std::vector<std::uint8_t>& mask, const Scene& scene, int slot,
+                                  const FrameCamera& camera, const std::vector<Aabb>& occluders,
+                                  double floorY, double floorHalfExtent,
+                                  const std::function<bool(const glm::dvec3&)>& inside,
+                                  int edgeRadius = 2) {
+    const auto truthAt = [&](const Ray& ray, double t, const glm::dvec3& p) {
+        for (const Aabb& box : occluders) {
+            double t0, t1;
+            if (box.max.y > floorY + 1e-9 && intersectBox(ray.origin, ray.direction, box, t0, t1) && t0 < t - 1e-9)
+                return FloorTruth::Hidden;
+        }
+        return lightVisibleFrom(scene, slot, p, occluders) ? FloorTruth::Lit : FloorTruth::Shadowed;
+    };
+    return compareFloorMaskWith(mask, camera, floorY, floorHalfExtent, inside, truthAt, edgeRadius);
 }
 
 // Loads the shadow plugin once per test suite (settings: the config's plugin settings).
