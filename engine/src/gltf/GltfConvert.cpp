@@ -82,8 +82,9 @@ Scene convertToScene(const LoadContext& context, const ParsedGltf& parsed, const
     scene.sourcePath = context.file;
     scene.nodes = convertNodes(context, model);
     scene.roots = displayedRoots(context, model, scene.nodes);
-    scene.meshes = convertMeshes(context, model);
+    // Materials first: a primitive's warning about a missing UV set names its material's.
     scene.materials = convertMaterials(context, model, document);
+    scene.meshes = convertMeshes(context, model, document, scene.materials);
     scene.images = decodeImages(context, parsed);
     scene.cameras = convertCameras(context, model);
     scene.lights = std::move(lights);

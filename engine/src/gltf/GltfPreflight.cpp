@@ -11,7 +11,7 @@ namespace engine::gltf {
 
 namespace {
 
-constexpr std::array kSupportedExtensions{"KHR_lights_punctual", "KHR_texture_transform"};
+constexpr std::array kSupportedExtensions{"KHR_lights_punctual", "KHR_texture_transform", "KHR_lights_shadows"};
 
 // "KHR_lights_punctual, KHR_texture_transform, ...": the list refusals quote.
 std::string supportedExtensionList() {
