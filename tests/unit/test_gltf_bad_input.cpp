@@ -81,6 +81,40 @@ QuadEdit withNodes(const std::vector<json>& nodes, const std::vector<int>& roots
         if (!roots.empty()) b.setScene(roots);
     };
 }
+// Material 'leaf' on the quad, its baseColorTexture `textureInfo` (index 0 added) of texture 0
+// (no image needed) with sampler 0 when `samplers` are given; `edit` may change the rest.
+QuadEdit withTexture(json textureInfo, const json& samplers = nullptr) {
+    return [textureInfo, samplers](GltfBuilder& b) mutable {
+        textureInfo["index"] = 0;
+        b.doc["textures"] = {json::object()};
+        if (!samplers.is_null()) {
+            b.doc["samplers"] = samplers;
+            b.doc["textures"][0]["sampler"] = 0;
+        }
+        b.doc["materials"] = {{{"name", "leaf"}, {"pbrMetallicRoughness", {{"baseColorTexture", textureInfo}}}}};
+        firstPrimitive(b)["material"] = 0;
+    };
+}
+QuadEdit withTransform(const json& transform) {
+    return withTexture({{"extensions", {{"KHR_texture_transform", transform}}}});
+}
+// Material 'glass' of `alphaMode` with extras {"shadow_alpha_cutoff": cutoff}.
+QuadEdit withShadowAlphaCutoff(const char* alphaMode, const json& cutoff) {
+    return set("/materials", {{{"name", "glass"}, {"alphaMode", alphaMode}, {"extras", {{"shadow_alpha_cutoff", cutoff}}}}});
+}
+// A vertex attribute of 4 elements of `type`, from raw bytes.
+QuadEdit rawAttribute(const char* name, std::vector<std::uint8_t> bytes, int componentType, const char* type,
+                      bool normalized, std::size_t count = 4) {
+    return [=](GltfBuilder& b) {
+        firstPrimitive(b)["attributes"][name] = b.addAccessor(b.addView(bytes.data(), bytes.size()), componentType, count,
+                                                              type, normalized);
+    };
+}
+QuadEdit floatAttribute(const char* name, const std::vector<float>& values, std::size_t components, const char* type) {
+    return [=](GltfBuilder& b) { firstPrimitive(b)["attributes"][name] = b.addFloats(values, components, type); };
+}
+const char* const kTransformPath = "pbrMetallicRoughness.baseColorTexture.extensions.KHR_texture_transform";
+
 // One image 'albedo' stored in a bufferView.
 QuadEdit withImage(const std::vector<std::uint8_t>& encoded) {
     return [encoded](GltfBuilder& b) {
@@ -89,12 +123,7 @@ QuadEdit withImage(const std::vector<std::uint8_t>& encoded) {
     };
 }
 
-// A 2x1 PNG (see test_gltf_loader.cpp); its IHDR width is at byte 16, its zlib data at 41.
-const std::vector<std::uint8_t> kTinyPng = {
-    0x89, 0x50, 0x4e, 0x47, 0x0d, 0x0a, 0x1a, 0x0a, 0x00, 0x00, 0x00, 0x0d, 0x49, 0x48, 0x44, 0x52, 0x00, 0x00,
-    0x00, 0x02, 0x00, 0x00, 0x00, 0x01, 0x08, 0x06, 0x00, 0x00, 0x00, 0xf4, 0x22, 0x7f, 0x8a, 0x00, 0x00, 0x00,
-    0x0e, 0x49, 0x44, 0x41, 0x54, 0x78, 0x9c, 0x63, 0xf8, 0xcf, 0xc0, 0x00, 0x42, 0x0d, 0x00, 0x0f, 0x7a, 0x03,
-    0x7e, 0x77, 0xe9, 0x7f, 0x97, 0x00, 0x00, 0x00, 0x00, 0x49, 0x45, 0x4e, 0x44, 0xae, 0x42, 0x60, 0x82};
+const std::vector<std::uint8_t>& kTinyPng = tinyPng();  // gltf_test_support.h
 
 std::vector<std::uint8_t> pngWithUndecodablePixels() {
     std::vector<std::uint8_t> png = kTinyPng;
@@ -130,7 +159,8 @@ const std::vector<BadInputCase<QuadEdit>> kQuadEdits = {
     {"UnsupportedAssetVersion", set("/asset/version", "1.0"),
      {"old.gltf", "asset", "version '1.0' is not supported"}},
     {"UnsupportedRequiredExtension", set("/extensionsRequired", {"KHR_lights_punctual", "KHR_draco_mesh_compression"}),
-     {"draco.gltf", "extensionsRequired", "'KHR_draco_mesh_compression' is not supported"}},
+     {"draco.gltf", "extensionsRequired", "'KHR_draco_mesh_compression' is not supported",
+      "(supported: KHR_lights_punctual, KHR_texture_transform, KHR_lights_shadows)"}},
     {"TinygltfErrorsArePassedOn", set("/accessors/0/type", "VEC5"),
      {"vec5.gltf", "tinygltf", "VEC5"}},
     // tinygltf 2.7.0 throws std::out_of_range here.
@@ -257,6 +287,85 @@ const std::vector<BadInputCase<QuadEdit>> kQuadEdits = {
     {"UnknownAlphaMode", set("/materials", {{{"name", "glass"}, {"alphaMode", "TRANSLUCENT"}}}),
      {"alpha.gltf", "materials[0] 'glass'", "alphaMode 'TRANSLUCENT' is not OPAQUE, MASK or BLEND"}},
 
+    // Samplers, texture references, KHR_texture_transform, shadow_alpha_cutoff
+    {"SamplerMagFilterThatIsAMinFilter", withTexture(json::object(), {{{"name", "pixel"}, {"magFilter", 9984}}}),
+     {"sampler.gltf", "samplers[0] 'pixel'", "magFilter 9984 is not one of 9728, 9729"}},
+    {"SamplerMinFilterUnknown", withTexture(json::object(), {{{"minFilter", 1234}}}),
+     {"sampler.gltf", "samplers[0]", "minFilter 1234 is not one of 9728, 9729, 9984, 9985, 9986, 9987"}},
+    {"SamplerWrapSUnknown", withTexture(json::object(), {{{"wrapS", 10496}}}),
+     {"sampler.gltf", "samplers[0]", "wrapS 10496 is not one of 33071, 33648, 10497"}},
+    {"SamplerWrapTThatIsAString", withTexture(json::object(), {{{"wrapT", "REPEAT"}}}),
+     {"sampler.gltf", "samplers[0]", "wrapT is not an integer"}},
+    {"TextureSamplerIndexOutOfRange", [](GltfBuilder& b) { withTexture(json::object())(b); b.doc["textures"][0]["sampler"] = 2; },
+     {"sampler.gltf", "textures[0]", "sampler 2 does not exist (there are 0)"}},
+    {"TexCoordThatIsNotAnInteger", withTexture({{"texCoord", 0.5}}),
+     {"texcoord.gltf", "materials[0].pbrMetallicRoughness.baseColorTexture.texCoord", "is not a non-negative integer"}},
+    {"TextureTransformNotAnObject", withTransform("Not an object"),
+     {"transform.gltf", "materials[0] 'leaf'", std::string(kTransformPath) + " is not an object"}},
+    {"TextureInfoExtensionsNotAnObject", withTexture({{"extensions", {1, 2}}}),
+     {"transform.gltf", "materials[0] 'leaf'", "pbrMetallicRoughness.baseColorTexture.extensions is not an object"}},
+    {"TextureTransformOffsetOfThreeNumbers", withTransform({{"offset", {0, 1, 2}}}),
+     {"transform.gltf", "materials[0] 'leaf'", std::string(kTransformPath) + ".offset is not an array of 2 finite numbers"}},
+    {"TextureTransformScaleBeyondFloat", withTransform({{"scale", {1, 1e39}}}),
+     {"transform.gltf", "materials[0] 'leaf'", std::string(kTransformPath) + ".scale is not an array of 2 finite numbers"}},
+    {"TextureTransformOffsetOfStrings", withTransform({{"offset", {"0", "1"}}}),
+     {"transform.gltf", "materials[0] 'leaf'", std::string(kTransformPath) + ".offset is not an array of 2 finite numbers"}},
+    {"TextureTransformRotationThatIsAString", withTransform({{"rotation", "90deg"}}),
+     {"transform.gltf", "materials[0] 'leaf'", std::string(kTransformPath) + ".rotation is not a number"}},
+    {"TextureTransformRotationBeyondFloat", withTransform({{"rotation", -1e300}}),
+     {"transform.gltf", "materials[0] 'leaf'", std::string(kTransformPath) + ".rotation -1e+300 is not a finite (float) number"}},
+    {"TextureTransformNegativeTexCoord", withTransform({{"texCoord", -1}}),
+     {"transform.gltf", "materials[0] 'leaf'", std::string(kTransformPath) + ".texCoord is not a non-negative integer"}},
+    {"TextureTransformFractionalTexCoord", withTransform({{"texCoord", 1.5}}),
+     {"transform.gltf", "materials[0] 'leaf'", std::string(kTransformPath) + ".texCoord is not a non-negative integer"}},
+    {"ShadowAlphaCutoffOnAMaskMaterial", withShadowAlphaCutoff("MASK", 0.3),
+     {"cutoff.gltf", "materials[0] 'glass'", "extras.shadow_alpha_cutoff is only for alphaMode BLEND",
+      "MASK material casts by its alphaCutoff"}},
+    {"ShadowAlphaCutoffOnAnOpaqueMaterial", withShadowAlphaCutoff("OPAQUE", 0.3),
+     {"cutoff.gltf", "materials[0] 'glass'", "extras.shadow_alpha_cutoff is only for alphaMode BLEND",
+      "OPAQUE material casts solid"}},
+    {"ShadowAlphaCutoffThatIsAString", withShadowAlphaCutoff("BLEND", "0.5"),
+     {"cutoff.gltf", "materials[0] 'glass'", "extras.shadow_alpha_cutoff is not a number"}},
+    {"NegativeShadowAlphaCutoff", withShadowAlphaCutoff("BLEND", -0.25),
+     {"cutoff.gltf", "materials[0] 'glass'", "extras.shadow_alpha_cutoff -0.25 is not >= 0"}},
+
+    // TEXCOORD_1, COLOR_0
+    {"Texcoord1OfTheWrongCount", floatAttribute("TEXCOORD_1", {0, 0, 1, 0, 1, 1}, 2, "VEC2"),
+     {"uv1.gltf", "meshes[0].primitives[0]", "TEXCOORD_1 has 3 elements, POSITION has 4"}},
+    {"Texcoord1OfIntegersNotNormalized", rawAttribute("TEXCOORD_1", {0, 0, 1, 0, 1, 1, 0, 1}, kUnsignedByte, "VEC2", false),
+     {"uv1.gltf", "accessors[2]", "used as TEXCOORD_1 of meshes[0].primitives[0]",
+      "must be VEC2 of FLOAT or normalized UNSIGNED_BYTE/UNSIGNED_SHORT, but is VEC2 of UNSIGNED_BYTE"}},
+    {"Texcoord1WithNaN", floatAttribute("TEXCOORD_1", {0, 0, 1, 0, 1, kNaN, 0, 1}, 2, "VEC2"),
+     {"uv1.gltf", "accessors[2]", "TEXCOORD_1", "element 2", "not a finite number"}},
+    {"Color0OfVec2", floatAttribute("COLOR_0", {1, 1, 1, 1, 1, 1, 1, 1}, 2, "VEC2"),
+     {"color.gltf", "accessors[2]", "used as COLOR_0 of meshes[0].primitives[0]",
+      "must be VEC3 or VEC4 of FLOAT or normalized UNSIGNED_BYTE/UNSIGNED_SHORT, but is VEC2 of FLOAT"}},
+    {"Color0OfBytesNotNormalized",
+     rawAttribute("COLOR_0", std::vector<std::uint8_t>(16, 255), kUnsignedByte, "VEC4", false),
+     {"color.gltf", "accessors[2]", "used as COLOR_0 of meshes[0].primitives[0]", "but is VEC4 of UNSIGNED_BYTE"}},
+    {"Color0OfTheWrongCount", floatAttribute("COLOR_0", {1, 1, 1, 1, 1, 1}, 3, "VEC3"),
+     {"color.gltf", "meshes[0].primitives[0]", "COLOR_0 has 2 elements, POSITION has 4"}},
+    {"Color0WithInfinity", floatAttribute("COLOR_0", {1, 1, 1, 1, 1, 1, 1, 1, kInf, 1, 1, 1}, 3, "VEC3"),
+     {"color.gltf", "accessors[2]", "COLOR_0", "element 2", "not a finite number"}},
+
+    // KHR_lights_shadows
+    {"PrimitiveLightsShadowsNotAnObject", set("/meshes/0/primitives/0/extensions", {{"KHR_lights_shadows", true}}),
+     {"shadows.gltf", "meshes[0].primitives[0]", "extensions.KHR_lights_shadows is not an object"}},
+    {"PrimitiveCastShadowsNotABoolean",
+     set("/meshes/0/primitives/0/extensions", {{"KHR_lights_shadows", {{"castShadows", 0}}}}),
+     {"shadows.gltf", "meshes[0].primitives[0]", "extensions.KHR_lights_shadows.castShadows is not a boolean"}},
+    {"PrimitiveReceiveShadowsNotABoolean",
+     set("/meshes/0/primitives/0/extensions", {{"KHR_lights_shadows", {{"receiveShadows", "false"}}}}),
+     {"shadows.gltf", "meshes[0].primitives[0]", "extensions.KHR_lights_shadows.receiveShadows is not a boolean"}},
+    {"PrimitiveExtensionsNotAnObject", set("/meshes/0/primitives/0/extensions", "KHR_lights_shadows"),
+     {"shadows.gltf", "meshes[0].primitives[0]", "extensions is not an object"}},
+    {"LightCastShadowsNotABoolean",
+     withLight({{"name", "sun"}, {"type", "directional"}, {"extensions", {{"KHR_lights_shadows", {{"castShadows", "no"}}}}}}),
+     {"light.gltf", "KHR_lights_punctual.lights[0] 'sun'", "extensions.KHR_lights_shadows.castShadows is not a boolean"}},
+    {"LightLightsShadowsNotAnObject",
+     withLight({{"name", "sun"}, {"type", "directional"}, {"extensions", {{"KHR_lights_shadows", {false}}}}}),
+     {"light.gltf", "KHR_lights_punctual.lights[0] 'sun'", "extensions.KHR_lights_shadows is not an object"}},
+
     // Images
     {"ImageWhosePixelsFailToDecode", withImage(pngWithUndecodablePixels()),
      {"broken.glb", "images[0] 'albedo'", "failed to decode"}},
@@ -363,6 +472,17 @@ TEST(GltfBadInput, DeepJsonNestingIsRefusedBeforeParsing) {
     text.insert(text.rfind('}'), ",\"extras\":" + deep);
     writeText(dir / "deep.gltf", text);
     expectLoadError(dir / "deep.gltf", {"deep.gltf", "JSON", "nesting deeper than 64 levels"});
+}
+
+// Debian's assimp-testmodels ships a file whose KHR_texture_transform is a string: tinygltf
+// 2.7.0 drops it silently (an extension that is not an object is skipped), so the loader
+// must see it in its own parse. tools/install-deps.sh installs the package: a missing file
+// is a failure here, not a skip.
+TEST(GltfBadInput, AssimpBadExtensionTextureTransformIsRefused) {
+    const fs::path file = "/usr/share/assimp/models/glTF2/wrongTypes/badExtension.gltf";
+    ASSERT_TRUE(fs::is_regular_file(file)) << file << " is missing: run tools/install-deps.sh (assimp-testmodels)";
+    expectLoadError(file, {"badExtension.gltf", "materials[0] 'Texture'",
+                           "pbrMetallicRoughness.baseColorTexture.extensions.KHR_texture_transform is not an object"});
 }
 
 // --- URIs and files ----------------------------------------------------------------------

@@ -9,12 +9,14 @@
 #include "engine/gltf/GltfLoader.h"
 #include "engine/util/Error.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
 #include <filesystem>
+#include <initializer_list>
 #include <string>
 #include <system_error>
 #include <typeinfo>
@@ -110,15 +112,41 @@ void checkSceneContract(const engine::Scene& scene) {
             if (p.normals.size() != p.positions.size()) finding(name + ": normal count != vertex count");
             if (!p.texcoords.empty() && p.texcoords.size() != p.positions.size())
                 finding(name + ": texcoord count != vertex count");
+            if (!p.texcoords1.empty() && p.texcoords1.size() != p.positions.size())
+                finding(name + ": texcoord1 count != vertex count");
+            if (!p.colors.empty() && p.colors.size() != p.positions.size())
+                finding(name + ": color count != vertex count");
+            for (const glm::vec4& c : p.colors)
+                if (!std::isfinite(c.r) || !std::isfinite(c.g) || !std::isfinite(c.b) || !std::isfinite(c.a))
+                    finding(name + ": color not finite");
+            for (const auto* uvs : {&p.texcoords, &p.texcoords1})
+                for (const glm::vec2& uv : *uvs)
+                    if (!std::isfinite(uv.x) || !std::isfinite(uv.y)) finding(name + ": texcoord not finite");
             if (!inRange(p.material, scene.materials.size(), true)) finding(name + ": material out of range");
             for (const glm::vec3& v : p.positions)
                 if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z))
                     finding(name + ": position not finite");
         }
     }
-    for (const engine::Material& material : scene.materials)
-        if (!inRange(material.baseColorTexture.image, scene.images.size(), true))
-            finding("material '" + material.name + "': baseColorImage out of range");
+    for (const engine::Material& material : scene.materials) {
+        const std::string name = "material '" + material.name + "'";
+        const engine::TextureRef& texture = material.baseColorTexture;
+        if (!inRange(texture.image, scene.images.size(), true)) finding(name + ": baseColorImage out of range");
+        if (texture.texCoord != 0 && texture.texCoord != 1) finding(name + ": texCoord is not 0 or 1");
+        const engine::UvTransform& t = texture.transform;
+        if (!std::isfinite(t.offset.x) || !std::isfinite(t.offset.y) || !std::isfinite(t.rotation) ||
+            !std::isfinite(t.scale.x) || !std::isfinite(t.scale.y))
+            finding(name + ": texture transform not finite");
+        const engine::Sampler& s = texture.sampler;
+        const auto oneOf = [](int value, std::initializer_list<int> allowed) {
+            return std::find(allowed.begin(), allowed.end(), value) != allowed.end();
+        };
+        if (!oneOf(s.magFilter, {9728, 9729}) || !oneOf(s.minFilter, {9728, 9729, 9984, 9985, 9986, 9987}) ||
+            !oneOf(s.wrapS, {33071, 33648, 10497}) || !oneOf(s.wrapT, {33071, 33648, 10497}))
+            finding(name + ": sampler enumerant outside glTF's");
+        if (!std::isfinite(material.blendShadowCutoff) || material.blendShadowCutoff < 0.0f)
+            finding(name + ": blendShadowCutoff not a finite number >= 0");
+    }
     for (const engine::Image& image : scene.images)
         if (image.width <= 0 || image.height <= 0 ||
             image.rgba8.size() != static_cast<std::size_t>(image.width) * image.height * 4)

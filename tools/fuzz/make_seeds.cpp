@@ -5,7 +5,9 @@
 //     data-URI and GLB buffers, interleaved views, 8/16/32-bit indices, strips and fans,
 //     points and lines (dropped), normalized texcoords, PNG and JPEG images from a data URI,
 //     a bufferView and a file URI ('tex.png', also next to the fuzzed file), materials,
-//     both camera types, KHR_lights_punctual, node hierarchies with TRS and matrices.
+//     both camera types, KHR_lights_punctual, node hierarchies with TRS and matrices;
+//     samplers, TEXCOORD_1, KHR_texture_transform, COLOR_0, KHR_lights_shadows and
+//     shadow_alpha_cutoff.
 // Small on purpose: libFuzzer mutates short inputs much faster.
 #include "gltf_writer.h"  // tests/unit/: the loader tests' glTF writer
 
@@ -150,6 +152,44 @@ GltfBuilder primitiveModes() {
     return b;
 }
 
+// What alpha-tested shadows read: a sampler, the base color texture on TEXCOORD_1 through
+// KHR_texture_transform, COLOR_0 (VEC3 float and VEC4 normalized bytes), KHR_lights_shadows
+// on primitives and on a light, and a BLEND material's shadow_alpha_cutoff.
+GltfBuilder texturesColorsShadows() {
+    GltfBuilder b = seedBuilder();
+    const int positions = b.addFloats(kQuadPositions, 3, "VEC3");
+    const std::vector<std::uint16_t> uv = {0, 0, 65535, 0, 65535, 65535, 0, 65535};
+    const int uv0 = b.addAccessor(b.addView(uv.data(), uv.size() * 2), kUnsignedShort, 4, "VEC2", true);
+    const int uv1 = b.addFloats({0, 0, 2, 0, 2, 2, 0, 2}, 2, "VEC2");
+    const int rgb = b.addFloats({1, 0, 0, 0, 1, 0, 0, 0, 1, 1, 1, 1}, 3, "VEC3");
+    const std::vector<std::uint8_t> rgba = {255, 0, 0, 255, 0, 255, 0, 128, 0, 0, 255, 64, 255, 255, 255, 0};
+    const int rgba8 = b.addAccessor(b.addView(rgba.data(), rgba.size()), kUnsignedByte, 4, "VEC4", true);
+    const int indices = b.addIndices(std::vector<std::uint8_t>{0, 1, 2, 0, 2, 3});
+    b.add("images", {{"uri", "tex.png"}});
+    b.add("samplers", {{"magFilter", 9728}, {"minFilter", 9986}, {"wrapS", 33071}, {"wrapT", 33648}});
+    b.add("textures", {{"source", 0}, {"sampler", 0}});
+    const json transform = {{"offset", {0, 1}}, {"rotation", 1.5707963}, {"scale", {0.5, 0.5}}, {"texCoord", 1}};
+    b.add("materials", {{"name", "pane"}, {"alphaMode", "BLEND"}, {"extras", {{"shadow_alpha_cutoff", 0.3}}},
+                        {"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}, {"texCoord", 0},
+                                                                        {"extensions", {{"KHR_texture_transform", transform}}}}}}}});
+    const json attributes = {{"POSITION", positions}, {"TEXCOORD_0", uv0}, {"TEXCOORD_1", uv1}};
+    json first = {{"attributes", attributes}, {"indices", indices}, {"material", 0},
+                  {"extensions", {{"KHR_lights_shadows", {{"castShadows", false}, {"receiveShadows", true}}}}}};
+    first["attributes"]["COLOR_0"] = rgb;
+    json second = {{"attributes", attributes}, {"indices", indices}, {"material", 0},
+                   {"extensions", {{"KHR_lights_shadows", {{"receiveShadows", false}}}}}};
+    second["attributes"]["COLOR_0"] = rgba8;
+    b.add("meshes", {{"primitives", {first, second}}});
+    b.doc["extensionsUsed"] = {"KHR_lights_punctual", "KHR_texture_transform", "KHR_lights_shadows"};
+    b.doc["extensionsRequired"] = {"KHR_texture_transform"};
+    b.doc["extensions"]["KHR_lights_punctual"]["lights"] = {
+        {{"name", "sun"}, {"type", "directional"}, {"extensions", {{"KHR_lights_shadows", {{"castShadows", false}}}}}}};
+    b.add("nodes", {{"mesh", 0}});
+    b.add("nodes", {{"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}});
+    b.setScene({0, 1});
+    return b;
+}
+
 // An accessor without a bufferView (all zeros, glTF 2.0), alone so that the other seeds
 // still load if the loader refuses these.
 GltfBuilder zeroAccessor() {
@@ -186,6 +226,8 @@ int main(int argc, char** argv) {
         glb(primitiveModes(), "modes.glb");
         gltf(primitiveModes(), "modes.gltf");
         gltf(zeroAccessor(), "zeros.gltf");
+        gltf(texturesColorsShadows(), "textures-colors-shadows.gltf");
+        glb(texturesColorsShadows(), "textures-colors-shadows.glb");
     } catch (const std::exception& error) {
         std::fprintf(stderr, "make_seeds: %s\n", error.what());
         return 1;

@@ -59,9 +59,11 @@ const char* describeWanted(AccessorUse::Components wanted) {
 const tinygltf::Accessor& accessorFitting(const LoadContext& context, const tinygltf::Model& model,
                                           int accessorIndex, const AccessorUse& use) {
     const tinygltf::Accessor& accessor = model.accessors[accessorIndex];
-    if (accessor.type != use.type || !componentsFit(accessor, use.components))
+    const bool typeFits = accessor.type == use.type || (use.alternativeType != -1 && accessor.type == use.alternativeType);
+    if (!typeFits || !componentsFit(accessor, use.components))
         context.fail(indexed("accessors", accessorIndex),
-                     "used as " + use.usedAs + ", must be " + typeName(use.type) + " of " +
+                     "used as " + use.usedAs + ", must be " + typeName(use.type) +
+                         (use.alternativeType != -1 ? std::string(" or ") + typeName(use.alternativeType) : "") + " of " +
                          describeWanted(use.components) + ", but is " + typeName(accessor.type) + " of " +
                          (accessor.normalized ? "normalized " : "") + componentTypeName(accessor.componentType));
     return accessor;

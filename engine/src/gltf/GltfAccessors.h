@@ -21,11 +21,12 @@ struct AccessorUse {
     std::string usedAs;  // "POSITION of meshes[0].primitives[1]", for messages
     int type = TINYGLTF_TYPE_SCALAR;
     Components components = Components::Float;
+    int alternativeType = -1;  // a second type the use accepts (COLOR_0: VEC3 or VEC4), -1 none
 };
 
 // All components of the accessor (count x components per element), as float: normalized
 // integers map to [0, 1]. Refuses an accessor whose type does not fit `use`, and any value
-// that is not finite. The accessor must have passed validateBinaryLayout.
+// that is not finite. With an alternativeType, the caller asks the accessor which it is. The accessor must have passed validateBinaryLayout.
 std::vector<float> readFloatComponents(const LoadContext& context, const tinygltf::Model& model,
                                        int accessorIndex, const AccessorUse& use);
 

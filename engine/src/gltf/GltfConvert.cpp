@@ -75,14 +75,16 @@ std::vector<int> displayedRoots(const LoadContext& context, const tinygltf::Mode
 
 } // namespace
 
-Scene convertToScene(const LoadContext& context, const ParsedGltf& parsed, std::vector<Light> lights) {
+Scene convertToScene(const LoadContext& context, const ParsedGltf& parsed, const nlohmann::json& document,
+                     std::vector<Light> lights) {
     const tinygltf::Model& model = parsed.model;
     Scene scene;
     scene.sourcePath = context.file;
     scene.nodes = convertNodes(context, model);
     scene.roots = displayedRoots(context, model, scene.nodes);
-    scene.meshes = convertMeshes(context, model);
-    scene.materials = convertMaterials(context, model);
+    // Materials first: a primitive's warning about a missing UV set names its material's.
+    scene.materials = convertMaterials(context, model, document);
+    scene.meshes = convertMeshes(context, model, document, scene.materials);
     scene.images = decodeImages(context, parsed);
     scene.cameras = convertCameras(context, model);
     scene.lights = std::move(lights);

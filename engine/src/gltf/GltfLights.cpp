@@ -1,5 +1,7 @@
 #include "GltfLights.h"
 
+#include "GltfLightsShadows.h"
+
 #include <cmath>
 #include <numbers>
 #include <set>
@@ -31,6 +33,8 @@ public:
         light_.intensity = static_cast<float>(number("intensity", light_.intensity, 0.0, Bound::Inclusive));
         readRange();
         readSpot();
+        const JsonFields fields(context_, object_, json_, "");
+        light_.castShadows = readLightsShadows(fields, ShadowFlagsOwner::Light).castShadows;
         if (const auto extras = json_.find("extras"); extras != json_.end()) {
             if (!extras->is_object()) context_.fail(object_, "extras is not an object");
             light_.extras = *extras;

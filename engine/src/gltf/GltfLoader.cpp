@@ -51,7 +51,7 @@ Scene loadGltf(const std::filesystem::path& path, std::vector<std::string>* warn
     std::vector<Light> lights = gltf::readPunctualLights(context, document);
     const gltf::ParsedGltf parsed = gltf::parseWithTinygltf(context, container, fileBytes);
     gltf::validateModel(context, parsed.model, lights.size());
-    return gltf::convertToScene(context, parsed, std::move(lights));
+    return gltf::convertToScene(context, parsed, document, std::move(lights));
 }
 
 } // namespace engine

@@ -1,5 +1,8 @@
-// glTF materials (metallic-roughness core) to engine materials.
+// glTF materials (metallic-roughness core, the base color texture with its sampler, UV set
+// and KHR_texture_transform, our shadow extras) to engine materials.
 #include "GltfConvert.h"
+#include "GltfJsonFields.h"
+#include "GltfTextures.h"
 
 #include <cmath>
 
@@ -9,16 +12,19 @@ namespace {
 
 class MaterialConverter {
 public:
-    MaterialConverter(const LoadContext& context, const tinygltf::Model& model, std::size_t index)
-        : context_(context), model_(model), source_(model.materials[index]),
-          object_(indexedNamed("materials", index, source_.name)) {}
+    MaterialConverter(const LoadContext& context, const tinygltf::Model& model, const nlohmann::json& document,
+                      const std::vector<Sampler>& samplers, std::size_t index)
+        : context_(context), model_(model), samplers_(samplers), source_(model.materials[index]),
+          object_(indexedNamed("materials", index, source_.name)),
+          json_(context, object_, arrayElement(document, "materials", index), "") {}
 
     Material convert() const {
         const tinygltf::PbrMetallicRoughness& pbr = source_.pbrMetallicRoughness;
         Material material;
         material.name = source_.name;
         material.baseColorFactor = glm::vec4(vector<4>("baseColorFactor", pbr.baseColorFactor, glm::dvec4(1.0), 1.0));
-        material.baseColorTexture.image = baseColorImage(pbr.baseColorTexture.index);
+        material.baseColorTexture = convertTextureRef(
+            model_, samplers_, pbr.baseColorTexture, json_.child("pbrMetallicRoughness").child("baseColorTexture"));
         material.metallicFactor = static_cast<float>(inRange("metallicFactor", pbr.metallicFactor, 1.0));
         material.roughnessFactor = static_cast<float>(inRange("roughnessFactor", pbr.roughnessFactor, 1.0));
         // No upper bound: KHR_materials_emissive_strength files may exceed 1.
@@ -26,6 +32,7 @@ public:
         material.doubleSided = source_.doubleSided;
         material.alphaMode = alphaMode();
         material.alphaCutoff = static_cast<float>(inRange("alphaCutoff", source_.alphaCutoff, INFINITY));
+        readBlendShadowCutoff(material);
         return material;
     }
 
@@ -52,13 +59,6 @@ private:
         return result;
     }
 
-    int baseColorImage(int texture) const {
-        if (texture < 0) return -1;
-        const int image = model_.textures[texture].source;
-        if (image < 0) context_.warn(object_, "baseColorTexture " + indexed("textures", texture) + " has no image");
-        return image;
-    }
-
     AlphaMode alphaMode() const {
         if (source_.alphaMode == "OPAQUE") return AlphaMode::Opaque;
         if (source_.alphaMode == "MASK") return AlphaMode::Mask;
@@ -66,18 +66,38 @@ private:
         context_.fail(object_, "alphaMode '" + source_.alphaMode + "' is not OPAQUE, MASK or BLEND");
     }
 
+    // extras.shadow_alpha_cutoff: where a BLEND caster's alpha stops the light. The other
+    // modes have their answer already, so the key there is a mistake worth reporting. The
+    // rest of extras belongs to others (extras that are not an object hold no such key).
+    void readBlendShadowCutoff(Material& material) const {
+        const nlohmann::json* extras = json_.find("extras");
+        if (!extras || !extras->is_object() || !extras->contains("shadow_alpha_cutoff")) return;
+        const JsonFields fields(context_, object_, *extras, "extras");
+        const float cutoff = fields.finiteFloat("shadow_alpha_cutoff", material.blendShadowCutoff);
+        if (cutoff < 0.0f) fields.fail("shadow_alpha_cutoff", formatNumber(cutoff) + " is not >= 0");
+        if (material.alphaMode == AlphaMode::Mask)
+            fields.fail("shadow_alpha_cutoff", "is only for alphaMode BLEND (a MASK material casts by its alphaCutoff)");
+        if (material.alphaMode == AlphaMode::Opaque)
+            fields.fail("shadow_alpha_cutoff", "is only for alphaMode BLEND (an OPAQUE material casts solid)");
+        material.blendShadowCutoff = cutoff;
+    }
+
     const LoadContext& context_;
     const tinygltf::Model& model_;
+    const std::vector<Sampler>& samplers_;
     const tinygltf::Material& source_;
     std::string object_;
+    JsonFields json_;
 };
 
 } // namespace
 
-std::vector<Material> convertMaterials(const LoadContext& context, const tinygltf::Model& model) {
+std::vector<Material> convertMaterials(const LoadContext& context, const tinygltf::Model& model,
+                                       const nlohmann::json& document) {
+    const std::vector<Sampler> samplers = convertSamplers(context, document);
     std::vector<Material> materials;
     for (std::size_t i = 0; i < model.materials.size(); ++i)
-        materials.push_back(MaterialConverter(context, model, i).convert());
+        materials.push_back(MaterialConverter(context, model, document, samplers, i).convert());
     return materials;
 }
 

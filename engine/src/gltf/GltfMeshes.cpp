@@ -1,6 +1,7 @@
 #include "GltfMeshes.h"
 
 #include "GltfAccessors.h"
+#include "GltfLightsShadows.h"
 
 #include <limits>
 #include <numeric>
@@ -29,11 +30,13 @@ std::optional<int> attribute(const tinygltf::Primitive& primitive, const char* s
 
 class PrimitiveConverter {
 public:
-    PrimitiveConverter(const LoadContext& context, const tinygltf::Model& model, const std::string& object)
-        : context_(context), model_(model), object_(object) {}
+    PrimitiveConverter(const LoadContext& context, const tinygltf::Model& model, const std::vector<Material>& materials,
+                       const std::string& object)
+        : context_(context), model_(model), materials_(materials), object_(object) {}
 
-    // The engine primitive, or nothing when the primitive is not drawn as triangles.
-    std::optional<Primitive> convert(const tinygltf::Primitive& source) {
+    // The engine primitive, or nothing when the primitive is not drawn as triangles. `json`
+    // is the primitive as written (for its extensions).
+    std::optional<Primitive> convert(const tinygltf::Primitive& source, const nlohmann::json& json) {
         const int mode = source.mode == -1 ? TINYGLTF_MODE_TRIANGLES : source.mode;
         if (mode < TINYGLTF_MODE_TRIANGLES) {
             context_.warn(object_, std::string(modeName(mode)) + " primitive dropped (only triangles are drawn)");
@@ -55,12 +58,13 @@ public:
             primitive.normals = readFloatVectors<3>(context_, model_, *normals, vectorUse("NORMAL", TINYGLTF_TYPE_VEC3));
             requireVertexCount("NORMAL", primitive.normals.size(), vertexCount);
         }
-        if (const auto texcoords = attribute(source, "TEXCOORD_0")) {
-            AccessorUse use = vectorUse("TEXCOORD_0", TINYGLTF_TYPE_VEC2);
-            use.components = AccessorUse::Components::FloatOrNormalized;
-            primitive.texcoords = readFloatVectors<2>(context_, model_, *texcoords, use);
-            requireVertexCount("TEXCOORD_0", primitive.texcoords.size(), vertexCount);
-        }
+        primitive.texcoords = readTexcoords(source, "TEXCOORD_0", vertexCount);
+        primitive.texcoords1 = readTexcoords(source, "TEXCOORD_1", vertexCount);
+        primitive.colors = readColors(source, vertexCount);
+        const ShadowFlags shadows = readLightsShadows(JsonFields(context_, object_, json, ""), ShadowFlagsOwner::Primitive);
+        primitive.castShadows = shadows.castShadows;
+        primitive.receiveShadows = shadows.receiveShadows;
+        warnAboutMissingUvSet(primitive);
 
         const std::vector<std::uint32_t> vertexIndices = readVertexIndices(source, vertexCount);
         if (mode == TINYGLTF_MODE_TRIANGLES && vertexIndices.size() % 3 != 0)
@@ -79,6 +83,50 @@ public:
 private:
     AccessorUse vectorUse(const char* semantic, int type) const {
         return {std::string(semantic) + " of " + object_, type, AccessorUse::Components::Float};
+    }
+
+    // TEXCOORD_n: FLOAT or normalized unsigned, one per vertex; empty when absent.
+    std::vector<glm::vec2> readTexcoords(const tinygltf::Primitive& source, const char* semantic,
+                                         std::size_t vertexCount) const {
+        const std::optional<int> accessor = attribute(source, semantic);
+        if (!accessor) return {};
+        AccessorUse use = vectorUse(semantic, TINYGLTF_TYPE_VEC2);
+        use.components = AccessorUse::Components::FloatOrNormalized;
+        std::vector<glm::vec2> texcoords = readFloatVectors<2>(context_, model_, *accessor, use);
+        requireVertexCount(semantic, texcoords.size(), vertexCount);
+        return texcoords;
+    }
+
+    // COLOR_0 as RGBA: VEC3 or VEC4 of FLOAT or normalized unsigned; VEC3 is opaque.
+    std::vector<glm::vec4> readColors(const tinygltf::Primitive& source, std::size_t vertexCount) const {
+        const std::optional<int> accessor = attribute(source, "COLOR_0");
+        if (!accessor) return {};
+        AccessorUse use = vectorUse("COLOR_0", TINYGLTF_TYPE_VEC3);
+        use.alternativeType = TINYGLTF_TYPE_VEC4;
+        use.components = AccessorUse::Components::FloatOrNormalized;
+        std::vector<glm::vec4> colors;
+        if (model_.accessors[*accessor].type == TINYGLTF_TYPE_VEC3) {
+            for (const glm::vec3& rgb : readFloatVectors<3>(context_, model_, *accessor, use))
+                colors.emplace_back(rgb, 1.0f);
+        } else {
+            colors = readFloatVectors<4>(context_, model_, *accessor, use);  // refuses any other type
+        }
+        requireVertexCount("COLOR_0", colors.size(), vertexCount);
+        return colors;
+    }
+
+    // A material textured from a UV set the primitive lacks still draws, sampling every
+    // vertex at uv (0,0); worth a warning, not a refusal (exporters drop unused sets).
+    void warnAboutMissingUvSet(const Primitive& primitive) const {
+        if (primitive.material < 0) return;
+        const Material& material = materials_[primitive.material];
+        const TextureRef& texture = material.baseColorTexture;
+        if (!texture.present()) return;
+        const bool missing = texture.texCoord == 0 ? primitive.texcoords.empty() : primitive.texcoords1.empty();
+        if (missing)
+            context_.warn(object_, "has no TEXCOORD_" + std::to_string(texture.texCoord) + ", which the baseColorTexture of " +
+                                       indexedNamed("materials", primitive.material, material.name) +
+                                       " samples; it is sampled at uv (0,0)");
     }
 
     void requireVertexCount(const char* semantic, std::size_t count, std::size_t vertexCount) const {
@@ -107,17 +155,21 @@ private:
 
     const LoadContext& context_;
     const tinygltf::Model& model_;
+    const std::vector<Material>& materials_;
     std::string object_;
 };
 
-Mesh convertMesh(const LoadContext& context, const tinygltf::Model& model, std::size_t meshIndex) {
+Mesh convertMesh(const LoadContext& context, const tinygltf::Model& model, const nlohmann::json& document,
+                 const std::vector<Material>& materials, std::size_t meshIndex) {
     const tinygltf::Mesh& source = model.meshes[meshIndex];
     Mesh mesh;
     mesh.name = source.name;
     const std::string meshObject = indexedNamed("meshes", meshIndex, source.name);
+    const nlohmann::json& meshJson = arrayElement(document, "meshes", meshIndex);
     for (std::size_t p = 0; p < source.primitives.size(); ++p) {
-        PrimitiveConverter converter(context, model, meshObject + "." + indexed("primitives", p));
-        if (std::optional<Primitive> primitive = converter.convert(source.primitives[p])) {
+        PrimitiveConverter converter(context, model, materials, meshObject + "." + indexed("primitives", p));
+        if (std::optional<Primitive> primitive =
+                converter.convert(source.primitives[p], arrayElement(meshJson, "primitives", p))) {
             mesh.bounds.extend(primitive->bounds);
             mesh.primitives.push_back(std::move(*primitive));
         }
@@ -146,10 +198,12 @@ std::vector<std::uint32_t> triangleList(int mode, const std::vector<std::uint32_
     return triangles;
 }
 
-std::vector<Mesh> convertMeshes(const LoadContext& context, const tinygltf::Model& model) {
+std::vector<Mesh> convertMeshes(const LoadContext& context, const tinygltf::Model& model,
+                                const nlohmann::json& document, const std::vector<Material>& materials) {
     std::vector<Mesh> meshes;
     meshes.reserve(model.meshes.size());
-    for (std::size_t m = 0; m < model.meshes.size(); ++m) meshes.push_back(convertMesh(context, model, m));
+    for (std::size_t m = 0; m < model.meshes.size(); ++m)
+        meshes.push_back(convertMesh(context, model, document, materials, m));
     return meshes;
 }
 

@@ -1,9 +1,11 @@
 #pragma once
 // glTF meshes to engine meshes: triangle lists only (strips and fans converted, points and
-// lines dropped with a warning), normals generated when absent, closedness computed.
+// lines dropped with a warning), normals generated when absent, closedness computed; two UV
+// sets, vertex colors and KHR_lights_shadows per primitive.
 #include "GltfContext.h"
 #include "engine/scene/Scene.h"
 
+#include <nlohmann/json.hpp>
 #include <tiny_gltf.h>
 
 #include <cstdint>
@@ -15,6 +17,9 @@ namespace engine::gltf {
 // TRIANGLE_STRIP / TRIANGLE_FAN with the winding the glTF spec defines for each).
 std::vector<std::uint32_t> triangleList(int mode, const std::vector<std::uint32_t>& indices);
 
-std::vector<Mesh> convertMeshes(const LoadContext& context, const tinygltf::Model& model);
+// `document` is our own parse (primitive extensions); `materials` the converted materials,
+// so a primitive lacking the UV set its material's texture samples can be reported.
+std::vector<Mesh> convertMeshes(const LoadContext& context, const tinygltf::Model& model,
+                                const nlohmann::json& document, const std::vector<Material>& materials);
 
 } // namespace engine::gltf

@@ -11,7 +11,14 @@ namespace engine::gltf {
 
 namespace {
 
-constexpr std::array kSupportedExtensions{"KHR_lights_punctual"};
+constexpr std::array kSupportedExtensions{"KHR_lights_punctual", "KHR_texture_transform", "KHR_lights_shadows"};
+
+// "KHR_lights_punctual, KHR_texture_transform, ...": the list refusals quote.
+std::string supportedExtensionList() {
+    std::string list;
+    for (const char* name : kSupportedExtensions) list += (list.empty() ? "" : ", ") + std::string(name);
+    return list;
+}
 
 std::string quoted(const std::string& text) { return "'" + text + "'"; }
 
@@ -44,7 +51,7 @@ std::vector<std::string> extensionNames(const LoadContext& context, const nlohma
 void checkExtensions(const LoadContext& context, const nlohmann::json& document) {
     for (const std::string& name : extensionNames(context, document, "extensionsRequired"))
         if (!isSupportedExtension(name))
-            context.fail("extensionsRequired", quoted(name) + " is not supported (supported: KHR_lights_punctual)");
+            context.fail("extensionsRequired", quoted(name) + " is not supported (supported: " + supportedExtensionList() + ")");
     for (const std::string& name : extensionNames(context, document, "extensionsUsed"))
         if (!isSupportedExtension(name))
             context.warn("extensionsUsed", quoted(name) + " is not supported and is ignored");

@@ -110,9 +110,12 @@ void validateMaterialReferences(const LoadContext& context, const tinygltf::Mode
     for (std::size_t i = 0; i < model.materials.size(); ++i)
         requireIndex(context, indexed("materials", i), "baseColorTexture: texture",
                      model.materials[i].pbrMetallicRoughness.baseColorTexture.index, model.textures.size(), true);
-    for (std::size_t i = 0; i < model.textures.size(); ++i)
+    for (std::size_t i = 0; i < model.textures.size(); ++i) {
         requireIndex(context, indexed("textures", i), "source: image", model.textures[i].source,
                      model.images.size(), true);
+        requireIndex(context, indexed("textures", i), "sampler", model.textures[i].sampler,
+                     model.samplers.size(), true);
+    }
     for (std::size_t i = 0; i < model.images.size(); ++i)
         requireIndex(context, indexed("images", i), "bufferView", model.images[i].bufferView,
                      model.bufferViews.size(), true);
