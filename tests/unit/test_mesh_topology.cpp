@@ -129,3 +129,53 @@ TEST(Shapes, GeneratedBoxIsClosedAndWoundOutward) {
     }
     EXPECT_EQ(box.bounds.max, glm::dvec3(1.0, 0.5, 0.25));
 }
+
+TEST(Shapes, TexturedQuadFacesPlusZWithGltfTexcoords) {
+    const engine::Primitive quad = engine::texturedQuadPrimitive({-3.0, 0.0}, {3.0, 2.0}, 1);
+    ASSERT_EQ(quad.triangleCount(), 2u);
+    ASSERT_EQ(quad.texcoords.size(), 4u);
+    EXPECT_EQ(quad.material, 1);
+    for (std::size_t t = 0; t < quad.indices.size(); t += 3) {
+        const glm::vec3 a = quad.positions[quad.indices[t]], b = quad.positions[quad.indices[t + 1]],
+                        c = quad.positions[quad.indices[t + 2]];
+        EXPECT_GT(glm::cross(b - a, c - a).z, 0.0f) << "triangle " << t / 3;
+    }
+    for (std::size_t i = 0; i < 4; ++i) {
+        // u grows with x; v = 0 on the top edge (the image's first row), 1 on the bottom.
+        EXPECT_FLOAT_EQ(quad.texcoords[i].x, (quad.positions[i].x + 3.0f) / 6.0f);
+        EXPECT_FLOAT_EQ(quad.texcoords[i].y, (2.0f - quad.positions[i].y) / 2.0f);
+    }
+    EXPECT_FALSE(engine::isClosedSurface(engine::Mesh{"quad", {quad}, false, quad.bounds}));
+    EXPECT_EQ(quad.bounds.min, glm::dvec3(-3.0, 0.0, 0.0));
+    EXPECT_EQ(quad.bounds.max, glm::dvec3(3.0, 2.0, 0.0));
+}
+
+TEST(Shapes, TexturedQuadMapsASubRectangleOfTheTexture) {
+    const engine::Primitive quad = engine::texturedQuadPrimitive({0.0, 0.0}, {1.0, 1.0}, 0, {0.25f, 0.5f}, {0.5f, 1.0f});
+    EXPECT_EQ(quad.texcoords[3], glm::vec2(0.25f, 0.5f));  // top-left corner (0, 1)
+    EXPECT_EQ(quad.texcoords[1], glm::vec2(0.5f, 1.0f));   // bottom-right corner (1, 0)
+}
+
+TEST(Shapes, AppendedPrimitivesKeepTheirTrianglesAndSharedAttributes) {
+    engine::Primitive both;
+    engine::appendPrimitive(both, engine::texturedQuadPrimitive({0.0, 0.0}, {1.0, 1.0}));
+    engine::appendPrimitive(both, engine::texturedQuadPrimitive({2.0, 0.0}, {3.0, 1.0}));
+    ASSERT_EQ(both.positions.size(), 8u);
+    EXPECT_EQ(both.texcoords.size(), 8u);
+    EXPECT_EQ(both.indices, (std::vector<std::uint32_t>{0, 1, 2, 0, 2, 3, 4, 5, 6, 4, 6, 7}));
+    EXPECT_EQ(both.bounds.max, glm::dvec3(3.0, 1.0, 0.0));
+    // A part without texcoords drops them for the whole (they would no longer line up).
+    engine::appendPrimitive(both, engine::boxPrimitive({1.0, 1.0, 1.0}));
+    EXPECT_TRUE(both.texcoords.empty());
+    EXPECT_EQ(both.normals.size(), both.positions.size());
+}
+
+TEST(Shapes, BinaryAlphaImageIsRowMajorFromTheTop) {
+    const engine::Image image = engine::binaryAlphaImage("mask", 3, 2, {10, 20, 30},
+                                                         [](int column, int row) { return column == 2 && row == 0; });
+    ASSERT_EQ(image.rgba8.size(), 3u * 2u * 4u);
+    for (int i = 0; i < 6; ++i) {
+        EXPECT_EQ(image.rgba8[4 * i], 10);
+        EXPECT_EQ(image.rgba8[4 * i + 3], i == 2 ? 255 : 0) << "texel " << i;
+    }
+}

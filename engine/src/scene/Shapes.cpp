@@ -32,4 +32,50 @@ Mesh boxMesh(const std::string& name, const glm::dvec3& size, int material) {
     return mesh;
 }
 
+Primitive texturedQuadPrimitive(const glm::dvec2& min, const glm::dvec2& max, int material,
+                                const glm::vec2& uvTopLeft, const glm::vec2& uvBottomRight) {
+    Primitive primitive;
+    const glm::vec2 lo(min), hi(max);
+    // Counter-clockwise seen from +Z: bottom-left, bottom-right, top-right, top-left.
+    primitive.positions = {{lo.x, lo.y, 0.0f}, {hi.x, lo.y, 0.0f}, {hi.x, hi.y, 0.0f}, {lo.x, hi.y, 0.0f}};
+    primitive.normals.assign(4, glm::vec3(0.0f, 0.0f, 1.0f));
+    primitive.texcoords = {{uvTopLeft.x, uvBottomRight.y}, {uvBottomRight.x, uvBottomRight.y},
+                           {uvBottomRight.x, uvTopLeft.y}, {uvTopLeft.x, uvTopLeft.y}};
+    primitive.indices = {0, 1, 2, 0, 2, 3};
+    primitive.material = material;
+    for (const glm::vec3& p : primitive.positions) primitive.bounds.extend(glm::dvec3(p));
+    return primitive;
+}
+
+void appendPrimitive(Primitive& to, const Primitive& from) {
+    // An optional attribute survives only if every part carries it (an empty primitive
+    // takes `from`'s).
+    const bool first = to.positions.empty();
+    const auto optional = [first](auto& into, const auto& part) {
+        if (first || (!into.empty() && !part.empty())) into.insert(into.end(), part.begin(), part.end());
+        else into.clear();
+    };
+    optional(to.texcoords, from.texcoords);
+    optional(to.texcoords1, from.texcoords1);
+    optional(to.colors, from.colors);
+    const auto base = static_cast<std::uint32_t>(to.positions.size());
+    to.positions.insert(to.positions.end(), from.positions.begin(), from.positions.end());
+    to.normals.insert(to.normals.end(), from.normals.begin(), from.normals.end());
+    for (std::uint32_t index : from.indices) to.indices.push_back(base + index);
+    for (const glm::vec3& p : from.positions) to.bounds.extend(glm::dvec3(p));
+}
+
+Image binaryAlphaImage(const std::string& name, int width, int height, const glm::u8vec3& rgb,
+                       const std::function<bool(int column, int row)>& opaque) {
+    Image image;
+    image.name = name;
+    image.width = width;
+    image.height = height;
+    image.rgba8.reserve(static_cast<std::size_t>(width) * height * 4);
+    for (int row = 0; row < height; ++row)
+        for (int column = 0; column < width; ++column)
+            image.rgba8.insert(image.rgba8.end(), {rgb.r, rgb.g, rgb.b, std::uint8_t(opaque(column, row) ? 255 : 0)});
+    return image;
+}
+
 } // namespace engine
