@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
 # The default shadowmap-bench sweep: installs what is missing, builds, then times every
 # shadow setting (variants x resolutions x depth formats x filters) against ray-traced
-# truth on the showcase and Debian's 2CylinderEngine.glb, into out/bench/ (results.csv,
-# summary.md, time_vs_error.png). About 4 minutes on 2 cores. Extra arguments go to
-# shadowmap-bench (see build/bin/shadowmap-bench --help).
+# truth on the showcase and Debian's 2CylinderEngine.glb, and the variants x resolutions
+# (d24, pcf) on the alpha-masked scenes and their opaque twins (content/scenes/masked_*,
+# opaque_*), into out/bench/ (results.csv, summary.md, time_vs_error.png). About 6 minutes
+# on 2 cores (the masked scenes add about 2). Extra arguments go to shadowmap-bench (see
+# build/bin/shadowmap-bench --help).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash tools/install-deps.sh

@@ -9,6 +9,9 @@ packages=(
   libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri
   libembree-dev libgtest-dev libgmock-dev libbenchmark-dev
   gnuplot-nox assimp-testmodels xvfb xauth
+  # The scene generators (tools/scripts/*.py) and tools/engine-view/test/settings_round_trip.sh
+  # run python3, which a minimal Debian 12 lacks.
+  python3
   # glTF loader fuzzing (tools/fuzz/run.sh): clang, and libFuzzer's runtime
   # (libclang_rt.fuzzer-x86_64.a), which Debian 12 ships in libclang-rt-14-dev.
   clang libclang-rt-14-dev

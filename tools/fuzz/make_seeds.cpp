@@ -1,6 +1,7 @@
 // Writes the fuzz seed corpus: make_seeds OUT_DIR SCENES_DIR
-//   - every .gltf/.glb of SCENES_DIR (content/scenes: showcase.gltf; its showcase.bin is
-//     next to the fuzzed file, gltf_fuzzer.cpp copies it there),
+//   - every .gltf/.glb of SCENES_DIR (content/scenes: the showcase, the masked scenes and
+//     their twins; their .bin files are next to the fuzzed file, gltf_fuzzer.cpp copies
+//     them there),
 //   - small self-contained scenes that together reach every feature the loader converts:
 //     data-URI and GLB buffers, interleaved views, 8/16/32-bit indices, strips and fans,
 //     points and lines (dropped), normalized texcoords, PNG and JPEG images from a data URI,

@@ -2,11 +2,19 @@
 
 Meshes are closed where they should be (boxes, icospheres, tori share positions along
 every edge), so the loader's closedness check and the backface shadow variant see them as
-closed. Geometry goes into one external .bin next to the .gltf.
+closed. Geometry goes into one external .bin next to the .gltf; textures are PNGs written
+here (png_rgba) and embedded as data URIs.
 """
+import base64
 import json
 import math
 import struct
+import zlib
+
+# glTF sampler enumerants (the OpenGL ones).
+NEAREST, LINEAR = 9728, 9729
+LINEAR_MIPMAP_LINEAR = 9987
+CLAMP_TO_EDGE, REPEAT = 33071, 10497
 
 
 def normalize(v):
@@ -118,6 +126,20 @@ def quad(width, depth):
     return positions, [[0, 1, 0]] * 4, [0, 1, 2, 0, 2, 3]
 
 
+def png_rgba(width, height, pixels):
+    """An 8-bit RGBA PNG of `pixels` (rows top first, each row width (r, g, b, a) tuples)."""
+    def chunk(kind, data):
+        return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data) & 0xFFFFFFFF)
+    raw = bytearray()
+    for row in pixels:
+        raw.append(0)  # filter type None
+        for texel in row:
+            raw += bytes(texel)
+    header = struct.pack(">IIBBBBB", width, height, 8, 6, 0, 0, 0)  # 8 bit, RGBA, no interlace
+    return b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", header) + chunk(b"IDAT", zlib.compress(bytes(raw), 9)) + \
+        chunk(b"IEND", b"")
+
+
 class GltfBuilder:
     def __init__(self):
         self.binary = bytearray()
@@ -150,19 +172,42 @@ class GltfBuilder:
             self.doc["accessors"].append(accessor)
         return len(self.doc["accessors"]) - 1
 
-    def material(self, name, color, metallic=0.0, roughness=0.6, double_sided=False):
+    def texture(self, name, png, sampler):
+        """A texture of one PNG (bytes, embedded as a data URI) with a sampler (dict with
+        magFilter, minFilter, wrapS, wrapT). Returns the texture's index."""
+        images = self.doc.setdefault("images", [])
+        images.append({"name": name, "mimeType": "image/png",
+                       "uri": "data:image/png;base64," + base64.b64encode(png).decode("ascii")})
+        samplers = self.doc.setdefault("samplers", [])
+        samplers.append(dict(sampler))
+        textures = self.doc.setdefault("textures", [])
+        textures.append({"name": name, "source": len(images) - 1, "sampler": len(samplers) - 1})
+        return len(textures) - 1
+
+    def material(self, name, color, metallic=0.0, roughness=0.6, double_sided=False, base_color_texture=None,
+                 alpha_mode=None, alpha_cutoff=None):
         material = {"name": name, "pbrMetallicRoughness": {"baseColorFactor": list(color) + [1.0],
                     "metallicFactor": metallic, "roughnessFactor": roughness}}
+        if base_color_texture is not None:
+            material["pbrMetallicRoughness"]["baseColorTexture"] = {"index": base_color_texture}
         if double_sided:
             material["doubleSided"] = True
+        if alpha_mode is not None:
+            material["alphaMode"] = alpha_mode
+        if alpha_cutoff is not None:
+            material["alphaCutoff"] = alpha_cutoff
         self.doc["materials"].append(material)
         return len(self.doc["materials"]) - 1
 
-    def mesh(self, name, geometry, material):
+    def mesh(self, name, geometry, material, texcoords=None):
+        """`geometry` is (positions, normals, indices); `texcoords` (TEXCOORD_0, glTF's
+        convention: v = 0 is the image's top row) one per position, or None."""
         positions, normals, indices = geometry
-        primitive = {"attributes": {"POSITION": self._accessor(positions, "VEC3"),
-                                    "NORMAL": self._accessor(normals, "VEC3")},
-                     "indices": self._accessor(indices, "SCALAR"), "material": material}
+        attributes = {"POSITION": self._accessor(positions, "VEC3"), "NORMAL": self._accessor(normals, "VEC3")}
+        if texcoords is not None:
+            assert len(texcoords) == len(positions)
+            attributes["TEXCOORD_0"] = self._accessor(texcoords, "VEC2")
+        primitive = {"attributes": attributes, "indices": self._accessor(indices, "SCALAR"), "material": material}
         self.doc["meshes"].append({"name": name, "primitives": [primitive]})
         return len(self.doc["meshes"]) - 1
 

@@ -9,7 +9,9 @@
 namespace {
 
 // The default sweep (2 scenes, 4 lights, 54 settings): 4 minutes on 2 cores (AMD EPYC,
-// llvmpipe) while other jobs kept the load near 7; the issue asks for under 10.
+// llvmpipe) while other jobs kept the load near 7; the issue asks for under 10. The four
+// masked/opaque scenes at 9 settings each add about 2 minutes (3.5 s per setting and scene
+// at 1280x720, load near 6; the full grid would add 12).
 constexpr const char* kEngineModel =
     "/usr/share/assimp/models/glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb";
 constexpr int kDefaultWidth = 1280, kDefaultHeight = 720, kDefaultFrames = 5;
@@ -94,10 +96,13 @@ const char* const kBenchUsage =
     "                       shadow time, and the Pareto front of time against error\n"
     "  DIR/time_vs_error.gp and .png  (one panel per scene; the png needs gnuplot)\n"
     "\n"
-    "Defaults (the default sweep: 216 rows, about 4 minutes on 2 cores):\n"
+    "Defaults (the default sweep: 324 rows, about 6 minutes on 2 cores):\n"
     "  --config   <source>/content/engine.json\n"
     "  --scene    <source>/content/scenes/showcase.gltf and, when assimp-testmodels is\n"
-    "             installed, /usr/share/assimp/models/glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb\n"
+    "             installed, /usr/share/assimp/models/glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb;\n"
+    "             and the alpha-masked scenes with their opaque twins, masked_fence, opaque_fence,\n"
+    "             masked_canopy, opaque_canopy (.gltf), over the variants and resolutions at\n"
+    "             d24 and pcf only (else the first depth format and filter listed)\n"
     "  --camera   the scene's first camera, else one framing the scene\n"
     "  --width 1280 --height 720 --frames 5\n"
     "  --variants standard,woo,backface --resolutions 512,1024,2048\n"
@@ -135,7 +140,11 @@ BenchOptions parseBenchOptions(int argc, char** argv) {
     });
     if (options.help) return options;
     if (options.out.empty()) throw std::invalid_argument("--out is required");
-    if (options.defaultScenes)
-        options.scenes = {std::string(BENCH_CONTENT_DIR) + "/scenes/showcase.gltf", kEngineModel};
+    if (options.defaultScenes) {
+        const std::string scenes = std::string(BENCH_CONTENT_DIR) + "/scenes/";
+        options.scenes = {scenes + "showcase.gltf", kEngineModel};
+        for (const char* name : {"masked_fence", "opaque_fence", "masked_canopy", "opaque_canopy"})
+            options.maskedScenes.push_back(scenes + name + ".gltf");
+    }
     return options;
 }

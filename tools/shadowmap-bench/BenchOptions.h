@@ -10,7 +10,11 @@
 
 struct BenchOptions {
     std::string config;               // default: the source tree's content/engine.json
-    std::vector<std::string> scenes;  // default: kDefaultScenes (those that exist)
+    std::vector<std::string> scenes;  // default: the showcase and Debian's 2CylinderEngine.glb
+    // Default list only: the alpha-masked scenes and their opaque twins, swept over the
+    // variants and resolutions at one depth format and filter (maskedSettings in Sweep.h),
+    // so that they add minutes, not a full grid each, to the default sweep.
+    std::vector<std::string> maskedScenes;
     bool defaultScenes = true;        // no --scene given: a missing optional model is skipped
     std::string camera;               // empty: the scene's first camera, else a framing one
     int width = 0, height = 0;        // defaults below

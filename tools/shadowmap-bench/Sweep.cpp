@@ -50,9 +50,15 @@ BenchRow makeRow(const BenchScene& scene, const ShadowSetting& setting, double f
 
 std::vector<BenchScene> loadBenchScenes(const BenchOptions& options) {
     std::vector<BenchScene> scenes;
-    for (const std::string& path : options.scenes) {
+    const std::vector<ShadowSetting> full = sweepSettings(options), masked = maskedSettings(options);
+    std::vector<std::pair<std::string, const std::vector<ShadowSetting>*>> requests;
+    for (const std::string& path : options.scenes) requests.emplace_back(path, &full);
+    for (const std::string& path : options.maskedScenes) requests.emplace_back(path, &masked);
+    for (const auto& [path, settings] : requests) {
         if (options.defaultScenes && !std::filesystem::exists(path)) {
-            std::cerr << "shadowmap-bench: skipping " << path << ": not found (Debian package assimp-testmodels)\n";
+            const bool debianModel = path.rfind("/usr/share/", 0) == 0;
+            std::cerr << "shadowmap-bench: skipping " << path << ": not found ("
+                      << (debianModel ? "Debian package assimp-testmodels" : "see tools/scripts/") << ")\n";
             continue;
         }
         BenchScene bench;
@@ -72,6 +78,7 @@ std::vector<BenchScene> loadBenchScenes(const BenchOptions& options) {
         if (bench.scene.meshInstances.empty()) engine::throwInputError(path, "", "the scene has no mesh to shadow");
         bench.camera = engine::chooseCamera(bench.scene, options.camera, options.width, options.height, path);
         bench.shadowedLights = std::min<int>(bench.scene.lightInstances.size(), engine::kMaxLights);
+        bench.settings = *settings;
         scenes.push_back(std::move(bench));
     }
     if (scenes.empty()) throw engine::InputError("no scene to sweep (give one with --scene)");
@@ -88,12 +95,23 @@ std::vector<ShadowSetting> sweepSettings(const BenchOptions& options) {
     return settings;
 }
 
-std::vector<BenchRow> runSweep(std::vector<BenchScene>& scenes, const std::vector<ShadowSetting>& settings,
-                               const engine::RendererConfig& rendererConfig,
+std::vector<ShadowSetting> maskedSettings(const BenchOptions& options) {
+    const auto preferred = [](const std::vector<std::string>& listed, const std::string& name) {
+        return std::find(listed.begin(), listed.end(), name) != listed.end() ? name : listed.front();
+    };
+    std::vector<ShadowSetting> settings;
+    for (const std::string& variant : options.variants)
+        for (int resolution : options.resolutions)
+            settings.push_back({variant, resolution, preferred(options.depthFormats, "d24"),
+                                preferred(options.filters, "pcf")});
+    return settings;
+}
+
+std::vector<BenchRow> runSweep(std::vector<BenchScene>& scenes, const engine::RendererConfig& rendererConfig,
                                const std::vector<engine::RenderPlugin*>& plugins, int frames,
                                const RowCallback& onRow) {
     int total = 0;
-    for (const BenchScene& scene : scenes) total += scene.shadowedLights * static_cast<int>(settings.size());
+    for (const BenchScene& scene : scenes) total += scene.shadowedLights * static_cast<int>(scene.settings.size());
 
     engine::Renderer renderer(rendererConfig, plugins);
     engine::FrameRequest warmup;
@@ -101,7 +119,7 @@ std::vector<BenchRow> runSweep(std::vector<BenchScene>& scenes, const std::vecto
     for (BenchScene& scene : scenes) {
         // The evaluator builds the scene's Embree BVH once; settings change no geometry.
         evaluation::ShadowEvaluator evaluator(renderer, scene.scene);
-        for (const ShadowSetting& setting : settings) {
+        for (const ShadowSetting& setting : scene.settings) {
             applyToEveryLight(scene.scene, setting);
             renderer.setScene(scene.scene);  // the plugin's prepareScene re-reads the settings
             // Untimed: llvmpipe compiles shaders at their first draw, and new maps are allocated.

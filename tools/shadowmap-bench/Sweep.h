@@ -20,23 +20,28 @@ struct BenchScene {
     engine::Scene scene;
     engine::FrameCamera camera;
     int shadowedLights = 0;  // lights the lit pass handles (the first kMaxLights)
+    std::vector<ShadowSetting> settings;  // what this scene is swept over
 };
 
 // Loads and checks every scene before anything is rendered, so a bad file fails at once,
 // not minutes into the sweep. Adds the key light to scenes without one. With the default
 // scene list a missing file (the optional Debian model) is skipped with a note on stderr.
+// options.scenes get sweepSettings, options.maskedScenes maskedSettings.
 // Throws engine::InputError naming the file and the reason.
 std::vector<BenchScene> loadBenchScenes(const BenchOptions& options);
 
 // The cartesian product of the listed variants, resolutions, formats and filters.
 std::vector<ShadowSetting> sweepSettings(const BenchOptions& options);
 
+// The listed variants and resolutions at one depth format and one filter: d24 and pcf (the
+// engine config's defaults) when listed, else the first listed.
+std::vector<ShadowSetting> maskedSettings(const BenchOptions& options);
+
 // Called after each row is measured: `index` counts from 1 to `total`.
 using RowCallback = std::function<void(const BenchRow& row, int index, int total)>;
 
 // Needs a current GL context. `plugins` must include the shadow plugin loaded with map
 // caching off (otherwise a map renders once and later frames time nothing).
-std::vector<BenchRow> runSweep(std::vector<BenchScene>& scenes, const std::vector<ShadowSetting>& settings,
-                               const engine::RendererConfig& rendererConfig,
+std::vector<BenchRow> runSweep(std::vector<BenchScene>& scenes, const engine::RendererConfig& rendererConfig,
                                const std::vector<engine::RenderPlugin*>& plugins, int frames,
                                const RowCallback& onRow);

@@ -73,7 +73,6 @@ int run(const BenchOptions& options, std::unique_ptr<engine::GlContext>& context
     disableMapCaching(config, options.config);
     // Scenes and the output folder are checked before the first (slow) render.
     std::vector<BenchScene> scenes = loadBenchScenes(options);
-    const std::vector<ShadowSetting> settings = sweepSettings(options);
     const std::filesystem::path out = options.out;
     std::error_code error;
     std::filesystem::create_directories(out, error);
@@ -83,7 +82,7 @@ int run(const BenchOptions& options, std::unique_ptr<engine::GlContext>& context
     context->makeCurrent();
     host.loadAll(config);
     const std::vector<BenchRow> rows =
-        runSweep(scenes, settings, config.renderer, host.renderPlugins(), options.frames, printProgress);
+        runSweep(scenes, config.renderer, host.renderPlugins(), options.frames, printProgress);
 
     SweepDescription sweep{options.width, options.height, options.frames, context->rendererString(),
                            context->versionString(), cpuModel(),

@@ -2,6 +2,7 @@
 
 #include "engine/scene/Shapes.h"
 
+#include <glm/gtc/constants.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
@@ -32,6 +33,29 @@ const glm::dvec3 kCameraEye(7, 7, 11), kCameraTarget(0, 0.5, 0);
 constexpr double kCameraFov = 0.75, kCameraNear = 0.1, kCameraFar = 60.0;
 constexpr double kSpotDistance = 14.0, kPointDistance = 8.0, kSpotCone = 0.6;
 constexpr double kAzimuth = 40.0 * kDegree;  // light from -x,-z: shadows fall toward the camera
+
+// The fence of the masked layouts, in the plane of its node (x in [-3, 3], y in [0, 2]):
+// a 96 x 32 texel mask, 6.25 cm per texel at unit scale. Slats at columns 6k+1 .. 6k+3 from
+// the top row to row 29 (the two bottom rows open), rails over rows [6, 9) and [21, 24).
+constexpr double kFenceWidth = 6.0, kFenceHeight = 2.0;
+constexpr int kFenceColumns = 96, kFenceRows = 32;
+struct TexelRect {
+    int column0, column1, row0, row1;  // ends exclusive, row 0 = top
+};
+std::vector<TexelRect> fenceRects() {
+    std::vector<TexelRect> rects;
+    for (int column = 1; column < kFenceColumns; column += 6) rects.push_back({column, column + 3, 0, 30});
+    rects.push_back({0, kFenceColumns, 6, 9});
+    rects.push_back({0, kFenceColumns, 21, 24});
+    return rects;
+}
+bool fenceOpaque(int column, int row) {
+    for (const TexelRect& r : fenceRects())
+        if (column >= r.column0 && column < r.column1 && row >= r.row0 && row < r.row1) return true;
+    return false;
+}
+const glm::u8vec3 kFenceColor(196, 150, 104);  // sRGB
+constexpr int kClampToEdge = 0x812F;           // GL_CLAMP_TO_EDGE
 
 // Rigid transform at `position` whose -Z looks at `target`; straight up or down takes Z
 // as the up vector instead of Y.
@@ -68,21 +92,79 @@ public:
         engine::Mesh mesh;
         mesh.name = box.name;
         mesh.primitives.push_back(engine::boxPrimitive((box.max - box.min) * scale_));
-        const glm::dmat4 place = glm::translate(glm::dmat4(1.0), offset_) * tilt_ *
-                                 glm::translate(glm::dmat4(1.0), (box.min + box.max) * 0.5 * scale_);
+        mesh.closed = true;
+        addMesh(std::move(mesh), glm::translate(glm::dmat4(1.0), (box.min + box.max) * 0.5 * scale_), receivesShadows);
+    }
+
+    // The masked fence (one textured quad, alpha-tested) or its opaque twin (a quad per
+    // slat and rail), standing on the floor at its centre, its +Z facing the light's azimuth.
+    void addFence(bool masked) {
+        const double s = scale_;
+        engine::Material material;
+        material.metallicFactor = 0.0f;
+        material.roughnessFactor = 0.8f;
+        material.doubleSided = true;
+        engine::Mesh mesh;
+        mesh.name = masked ? "masked_fence" : "opaque_fence";
+        if (masked) {
+            scene_.images.push_back(engine::binaryAlphaImage("fence_mask", kFenceColumns, kFenceRows, kFenceColor,
+                                                             fenceOpaque));
+            material.name = "fence_masked";
+            material.alphaMode = engine::AlphaMode::Mask;
+            material.alphaCutoff = 0.5f;
+            material.baseColorTexture.image = static_cast<int>(scene_.images.size()) - 1;
+            material.baseColorTexture.sampler.wrapS = kClampToEdge;
+            material.baseColorTexture.sampler.wrapT = kClampToEdge;
+            // Sampler filters: the defaults, LINEAR magnification, LINEAR_MIPMAP_LINEAR.
+        } else {
+            material.name = "fence_opaque";
+            material.baseColorFactor = glm::vec4(glm::pow(glm::vec3(kFenceColor) / 255.0f, glm::vec3(2.2f)), 1.0f);
+        }
+        scene_.materials.push_back(material);
+        const int materialIndex = static_cast<int>(scene_.materials.size()) - 1;
+        const auto corner = [&](int column, int row) {  // texel corner -> fence plane
+            return glm::dvec2((-0.5 + double(column) / kFenceColumns) * kFenceWidth * s,
+                              (1.0 - double(row) / kFenceRows) * kFenceHeight * s);
+        };
+        if (masked) {
+            mesh.primitives.push_back(
+                engine::texturedQuadPrimitive(corner(0, kFenceRows), corner(kFenceColumns, 0), materialIndex));
+        } else {
+            // Rails overlap the slats: the union is the mask and has no T-junction cracks.
+            engine::Primitive fence;
+            for (const TexelRect& r : fenceRects())
+                engine::appendPrimitive(
+                    fence, engine::texturedQuadPrimitive(
+                               corner(r.column0, r.row1), corner(r.column1, r.row0), materialIndex,
+                               {float(r.column0) / kFenceColumns, float(r.row0) / kFenceRows},
+                               {float(r.column1) / kFenceColumns, float(r.row1) / kFenceRows}));
+            fence.material = materialIndex;
+            mesh.primitives.push_back(std::move(fence));
+        }
+        // +Z turned to (-sin azimuth, 0, -cos azimuth): toward the light.
+        addMesh(std::move(mesh), glm::rotate(glm::dmat4(1.0), glm::pi<double>() + kAzimuth, glm::dvec3(0, 1, 0)));
+    }
+
+    // `local` places the mesh (already at this scale) about the origin; the tilt and the
+    // offset are applied on top, through the node or baked into the positions.
+    void addMesh(engine::Mesh mesh, const glm::dmat4& local, bool receivesShadows = true) {
+        const glm::dmat4 place = glm::translate(glm::dmat4(1.0), offset_) * tilt_ * local;
         if (bake_) {  // world positions rounded to float, as such a file stores them
-            engine::Primitive& primitive = mesh.primitives[0];
-            primitive.bounds = {};
-            for (glm::vec3& p : primitive.positions) {
-                p = glm::vec3(place * glm::dvec4(glm::dvec3(p), 1.0));
-                primitive.bounds.extend(glm::dvec3(p));
+            for (engine::Primitive& primitive : mesh.primitives) {
+                primitive.bounds = {};
+                for (glm::vec3& p : primitive.positions) {
+                    p = glm::vec3(place * glm::dvec4(glm::dvec3(p), 1.0));
+                    primitive.bounds.extend(glm::dvec3(p));
+                }
+                for (glm::vec3& n : primitive.normals)
+                    n = glm::vec3(glm::normalize(glm::dmat3(place) * glm::dvec3(n)));
             }
         }
-        mesh.bounds = mesh.primitives[0].bounds;
-        mesh.closed = true;
-        scene_.meshes.push_back(mesh);
+        mesh.bounds = {};
+        for (const engine::Primitive& primitive : mesh.primitives) mesh.bounds.extend(primitive.bounds);
+        scene_.meshes.push_back(std::move(mesh));
         engine::Node node;
-        node.name = box.name;
+        node.name = scene_.meshes.back().name;
         node.mesh = static_cast<int>(scene_.meshes.size()) - 1;
         node.receiveShadows = receivesShadows;
         node.local = bake_ ? glm::dmat4(1.0) : place;
@@ -168,6 +250,8 @@ const char* toString(Layout layout) {
     case Layout::LightOnSurface: return "light_on_surface";
     case Layout::CameraAtLight: return "camera_at_light";
     case Layout::LightStraightDown: return "light_straight_down";
+    case Layout::MaskedFence: return "masked_fence";
+    case Layout::OpaqueFence: return "opaque_fence";
     }
     return "?";
 }
@@ -191,11 +275,15 @@ StressScene buildStressScene(const SceneSpec& spec, int width, int height) {
     // rounding lottery): the floor still casts but is not a receiver in that case.
     const bool lightInFloor = spec.layout == Layout::LightOnSurface && spec.light == LightKind::Point;
     builder.addBox(kFloor, !lightInFloor);
-    builder.addBox(kBlock);
-    builder.addBox(kTower);
-    builder.addBox(kPlank);
-    if (spec.layout == Layout::LightInsideBox) builder.addBox(kShell);
-    else builder.addBox(kHover);
+    if (spec.layout == Layout::MaskedFence || spec.layout == Layout::OpaqueFence) {
+        builder.addFence(spec.layout == Layout::MaskedFence);  // alone on the floor
+    } else {
+        builder.addBox(kBlock);
+        builder.addBox(kTower);
+        builder.addBox(kPlank);
+        if (spec.layout == Layout::LightInsideBox) builder.addBox(kShell);
+        else builder.addBox(kHover);
+    }
 
     // Where the light is and what it aims at (unit scale).
     glm::dvec3 position, target = kTarget;
@@ -203,6 +291,8 @@ StressScene buildStressScene(const SceneSpec& spec, int width, int height) {
     switch (spec.layout) {
     case Layout::Standard:
     case Layout::CameraAtLight:
+    case Layout::MaskedFence:
+    case Layout::OpaqueFence:
         position = target + towardLight(spec.elevationDeg) *
                                 (spec.light == LightKind::Point ? kPointDistance : kSpotDistance);
         break;

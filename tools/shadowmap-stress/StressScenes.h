@@ -19,6 +19,14 @@
 //                      shadowed: any shadow is acne)
 //   LightStraightDown  the light's direction is (0,-1,0), parallel to the usual up vector;
 //                      the boxes are turned 3 degrees so no face is exactly edge-on
+//   MaskedFence        the floor and nothing on it but a fence 6 x 2 units at its centre,
+//                      facing the light's azimuth, lit as Standard: ONE double-sided quad with
+//                      alphaMode MASK (cutoff 0.5) and a 96 x 32 binary-alpha texture (slats 3
+//                      texels wide with 3-texel gaps, two rails; sampler LINEAR /
+//                      LINEAR_MIPMAP_LINEAR / CLAMP_TO_EDGE), as content/scenes/masked_fence.gltf
+//   OpaqueFence        its twin: the same fence as one opaque double-sided quad per slat and
+//                      per rail on the texel boundaries (where the 0.5 iso-line of the
+//                      bilinearly filtered binary alpha lies, but for half-texel corner rounding)
 #include "engine/render/Frame.h"
 #include "engine/scene/Scene.h"
 
@@ -30,7 +38,7 @@
 namespace stress {
 
 enum class LightKind { Spot, Directional, Point };
-enum class Layout { Standard, LightInsideBox, LightOnSurface, CameraAtLight, LightStraightDown };
+enum class Layout { Standard, LightInsideBox, LightOnSurface, CameraAtLight, LightStraightDown, MaskedFence, OpaqueFence };
 
 const char* toString(LightKind kind);
 const char* toString(Layout layout);

@@ -126,11 +126,19 @@ Sweep specialSweep(bool quick) {
                  "light_on_surface: spot apex on the tower's top, point light on the floor (the floor then "
                  "only casts). camera_at_light: everything visible is lit, any shadow is acne. "
                  "light_straight_down: direction (0,-1,0), the scene turned 3 degrees so no face is edge-on. "
-                 "Bound: special.";
-    if (quick) return sweep;
+                 "masked_fence: a 6 x 2 fence alone on the floor, one alpha-masked quad (96 x 32 binary-alpha "
+                 "texels); opaque_fence: its twin built from one quad per slat and rail, the reference its "
+                 "error is read against (reported, not bounded; the quick set runs masked_fence with the spot "
+                 "only). Bound: special.";
+    if (quick) {
+        add(Layout::MaskedFence, {LightKind::Spot});
+        return sweep;
+    }
     add(Layout::LightOnSurface, {LightKind::Spot, LightKind::Point});
     add(Layout::CameraAtLight, {LightKind::Spot});
     add(Layout::LightStraightDown, {LightKind::Spot, LightKind::Directional});
+    add(Layout::MaskedFence, {LightKind::Spot, LightKind::Directional, LightKind::Point});
+    add(Layout::OpaqueFence, {LightKind::Spot, LightKind::Directional, LightKind::Point});
     return sweep;
 }
 

@@ -10,11 +10,12 @@
 //   elevation  light direction 45 deg down to 0.5 deg over the floor (grazing)
 //   scale      every length times 1e-4 ... 1e4
 //   special    light inside a closed box, light on a surface, camera at the light,
-//              light straight down (parallel to the usual up vector)
+//              light straight down (parallel to the usual up vector), an alpha-masked
+//              fence and its opaque twin (reported, not bounded)
 // Depth formats: d16, d24, d32f, and d32f_rz (d32f with "reversed_z": true).
 // The quick version (CI) renders 96x64 pixels with 512-texel maps: distance 0 and 1e6,
-// near/far 1e-2, 1e-7 and infinite, scale 1e-3, 1 and 1e3, and the light inside a box, in
-// d24, d32f and d32f_rz.
+// near/far 1e-2, 1e-7 and infinite, scale 1e-3, 1 and 1e3, the light inside a box and the
+// masked fence under the spot, in d24, d32f and d32f_rz.
 //
 // Bounds (checkBounds; the numbers are percentage points of the evaluation set):
 //   finite          no NaN/Inf anywhere: shadow term, depth map texels, light matrices
