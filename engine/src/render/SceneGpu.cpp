@@ -101,9 +101,6 @@ glm::dmat4 SceneGpu::modelMatrix(const MeshInstance& instance) const {
 
 std::uint64_t SceneGpu::draw(const Primitive& primitive) const {
     glBindVertexArray(primitive.vertexArray.id());
-    if (!primitive.hasTexcoords) glVertexAttrib2f(kAttribTexcoord, 0.0f, 0.0f);
-    if (!primitive.hasTexcoords1) glVertexAttrib2f(kAttribTexcoord1, 0.0f, 0.0f);
-    if (!primitive.hasColors) glVertexAttrib4f(kAttribColor, 1.0f, 1.0f, 1.0f, 1.0f);
     glDrawElements(GL_TRIANGLES, primitive.indexCount, GL_UNSIGNED_INT, nullptr);
     return static_cast<std::uint64_t>(primitive.indexCount / 3);
 }

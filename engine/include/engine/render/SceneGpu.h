@@ -29,7 +29,7 @@ public:
         gl::VertexArray vertexArray;
         std::int32_t indexCount = 0;
         int material = -1;
-        // Absent attributes read constants instead: UV (0,0), color white.
+        // An absent attribute reads the constant applyMaterial() sets (MaterialShading.h).
         bool hasTexcoords = false, hasTexcoords1 = false, hasColors = false;
         // The source primitive's KHR_lights_shadows flags.
         bool castShadows = true, receiveShadows = true;
