@@ -240,6 +240,19 @@ TEST_F(LitShading, AlphaMaskedMaterialsDiscardBelowTheirCutoff) {
     EXPECT_LE(maxError(scene, 0.5, [&](const glm::dvec3& p) { return p.x < 0.0 ? textured : kAlbedo; }), 2.0);
 }
 
+TEST_F(LitShading, VertexColorsMultiplyTheBaseColor) {
+    // COLOR_0 (linear) times the factor: a constant vertex color on the left half only, so
+    // a variant that ignored it, or applied it to the right half too, fails.
+    engine::Scene scene = planeScene(0.5f);
+    texturedLeftHalf(scene, {255, 255, 255, 255});  // a white texel: the color alone counts
+    const glm::vec4 vertexColor(0.5f, 0.25f, 0.9f, 1.0f);
+    scene.meshes[0].primitives[0].colors.assign(4, vertexColor);
+    scene.materials[1].baseColorFactor = glm::vec4(0.8f, 0.6f, 0.5f, 1.0f);
+    addLight(scene, engine::Light::Type::Point, {0.4, -0.3, 1.5}, 1.5f);
+    const glm::dvec3 left = glm::dvec3(0.8, 0.6, 0.5) * glm::dvec3(vertexColor);
+    EXPECT_LE(maxError(scene, 0.5, [&](const glm::dvec3& p) { return p.x < 0.0 ? left : kAlbedo; }), 2.0);
+}
+
 TEST_F(LitShading, NoLightsRendersAmbientOnly) {
     engine::Scene scene = planeScene(0.5f);
     const auto pixels = render(scene);
