@@ -82,6 +82,16 @@ protected:
         };
         return engine::test::compareFloorMaskWith(mask, camera(), 0.0, 9.9, inside, grilleTruth(grille, built));
     }
+
+    // The floor shows the grille's pattern: the bars' shadow and the holes' light both in
+    // quantity (a solid slab, or no shadow at all, fails), and every evaluated pixel right.
+    static void expectPattern(const Grille& grille, const LightSetup& light = kSpot,
+                              const std::string& variant = "standard") {
+        const auto result = compare(grille, light, variant);
+        EXPECT_GT(result.truthShadowed, 2000);
+        EXPECT_GT(result.truthLit, 2000);
+        EXPECT_LE(result.wrongFraction(), 0.003);
+    }
 };
 
 // Every light type under every variant.
@@ -92,11 +102,7 @@ class MaskedCasterVariants : public MaskedCaster,
 
 TEST_P(MaskedCasterVariants, FloorShadowIsTheGrillePattern) {
     const auto& [variant, light] = GetParam();
-    const auto result = compare(Grille{}, light, variant);
-    // Both the holes' light and the bars' shadow are on the floor in quantity.
-    EXPECT_GT(result.truthShadowed, 2000);
-    EXPECT_GT(result.truthLit, 2000);
-    EXPECT_LE(result.wrongFraction(), 0.003);
+    expectPattern(Grille{}, light, variant);
 }
 
 INSTANTIATE_TEST_SUITE_P(
@@ -106,39 +112,30 @@ INSTANTIATE_TEST_SUITE_P(
         return std::string(std::get<0>(info.param)) + "_" + std::get<1>(info.param).name;
     });
 
-// Texture coordinates as glTF defines them: each case puts the holes somewhere else.
-TEST_F(MaskedCaster, RepeatWrapTilesThePattern) {
+// Texture coordinates as glTF defines them: each wrap mode, over UVs reaching past [0, 1],
+// puts the holes somewhere else (REPEAT tiles the pattern, MIRRORED_REPEAT mirrors it,
+// CLAMP_TO_EDGE stretches its edge texels).
+struct WrapCase {
+    const char* name;
+    int wrap;
+    glm::vec2 uvMin, uvMax;
+};
+
+class MaskedCasterWrap : public MaskedCaster, public ::testing::WithParamInterface<WrapCase> {};
+
+TEST_P(MaskedCasterWrap, HolesWhereTheWrapModePutsThem) {
     Grille grille;
-    grille.wrap = engine::test::kRepeat;
-    grille.uvMin = {-0.5f, 0.25f};
-    grille.uvMax = {1.5f, 2.0f};
-    const auto result = compare(grille, kSpot);
-    EXPECT_GT(result.truthShadowed, 2000);
-    EXPECT_GT(result.truthLit, 2000);
-    EXPECT_LE(result.wrongFraction(), 0.003);
+    grille.wrap = GetParam().wrap;
+    grille.uvMin = GetParam().uvMin;
+    grille.uvMax = GetParam().uvMax;
+    expectPattern(grille);
 }
 
-TEST_F(MaskedCaster, MirroredRepeatWrapMirrorsThePattern) {
-    Grille grille;
-    grille.wrap = engine::test::kMirroredRepeat;
-    grille.uvMin = {-1.0f, -0.5f};
-    grille.uvMax = {1.0f, 1.25f};
-    const auto result = compare(grille, kSpot);
-    EXPECT_GT(result.truthShadowed, 2000);
-    EXPECT_GT(result.truthLit, 2000);
-    EXPECT_LE(result.wrongFraction(), 0.003);
-}
-
-TEST_F(MaskedCaster, ClampToEdgeWrapStretchesTheEdgeTexels) {
-    Grille grille;
-    grille.wrap = engine::test::kClampToEdge;
-    grille.uvMin = {-0.5f, -0.25f};
-    grille.uvMax = {1.5f, 1.25f};
-    const auto result = compare(grille, kSpot);
-    EXPECT_GT(result.truthShadowed, 2000);
-    EXPECT_GT(result.truthLit, 2000);
-    EXPECT_LE(result.wrongFraction(), 0.003);
-}
+INSTANTIATE_TEST_SUITE_P(WrapModes, MaskedCasterWrap,
+                         ::testing::Values(WrapCase{"repeat", engine::test::kRepeat, {-0.5f, 0.25f}, {1.5f, 2.0f}},
+                                           WrapCase{"mirrored_repeat", engine::test::kMirroredRepeat, {-1.0f, -0.5f}, {1.0f, 1.25f}},
+                                           WrapCase{"clamp_to_edge", engine::test::kClampToEdge, {-0.5f, -0.25f}, {1.5f, 1.25f}}),
+                         [](const auto& info) { return std::string(info.param.name); });
 
 TEST_F(MaskedCaster, TextureTransformMovesThePattern) {
     Grille grille;
@@ -146,27 +143,19 @@ TEST_F(MaskedCaster, TextureTransformMovesThePattern) {
     grille.transform.offset = {0.3f, -0.2f};
     grille.transform.scale = {1.5f, 0.75f};
     grille.transform.rotation = 0.5f;
-    const auto result = compare(grille, kSpot);
-    EXPECT_GT(result.truthShadowed, 2000);
-    EXPECT_GT(result.truthLit, 2000);
-    EXPECT_LE(result.wrongFraction(), 0.003);
+    expectPattern(grille);
 }
 
 TEST_F(MaskedCaster, Texcoord1IsReadWhenTheMaterialSaysSo) {
     Grille grille;
     grille.viaTexcoord1 = true;
-    const auto result = compare(grille, kSpot);
-    EXPECT_GT(result.truthShadowed, 2000);
-    EXPECT_LE(result.wrongFraction(), 0.003);
+    expectPattern(grille);
 }
 
 TEST_F(MaskedCaster, VertexColorAlphaCutsTheCaster) {
     Grille grille;
     grille.vertexAlphaOnly = true;
-    const auto result = compare(grille, kSpot);
-    EXPECT_GT(result.truthShadowed, 2000);
-    EXPECT_GT(result.truthLit, 2000);
-    EXPECT_LE(result.wrongFraction(), 0.003);
+    expectPattern(grille);
 }
 
 // BLEND: cast where alpha reaches the material's blendShadowCutoff (default 0.5).
@@ -175,10 +164,7 @@ TEST_F(MaskedCaster, BlendCastsWhereAlphaReachesItsShadowCutoff) {
     grille.mode = engine::AlphaMode::Blend;
     grille.opaqueAlpha = 0.7f;
     grille.clearAlpha = 0.3f;
-    const auto pattern = compare(grille, kSpot);
-    EXPECT_GT(pattern.truthShadowed, 2000);
-    EXPECT_GT(pattern.truthLit, 2000);
-    EXPECT_LE(pattern.wrongFraction(), 0.003);
+    expectPattern(grille);
 
     grille.blendShadowCutoff = 0.0f;  // casts everywhere, as an opaque pane
     const auto solid = compare(grille, kSpot);
