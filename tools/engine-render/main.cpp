@@ -88,16 +88,16 @@ nlohmann::json printLightErrors(engine::Renderer& renderer, const engine::Scene&
     nlohmann::json lights = nlohmann::json::array();
     for (const evaluation::LightResult& light : view.lights) {
         double mapMs = 0.0;
-        for (const char* suffix : {"", "_first_layer"}) {
-            const auto found = passes.find("shadow_" + light.light + suffix);
+        for (const std::string& pass : light.view.passes) {
+            const auto found = passes.find(pass);
             if (found != passes.end()) mapMs += median(found->second.wallMs);
         }
         const truth::ShadowErrors& e = light.errors;
+        const char* map = !light.view.hasMap ? "none" : light.view.cube ? "cube" : "2d";
         std::printf("  %-20s %-9s %6s %9.2f %8.3f %8.3f %8.3f %12.3f\n", light.light.c_str(),
-                    light.stats["variant"].get<std::string>().c_str(),
-                    light.stats.value("map", "none").c_str(), mapMs, 100 * e.acne, 100 * e.leak,
+                    light.view.variant.c_str(), map, mapMs, 100 * e.acne, 100 * e.leak,
                     100 * e.error, 100 * e.errorNoEdge);
-        lights.push_back({{"light", light.light}, {"variant", light.stats["variant"]},
+        lights.push_back({{"light", light.light}, {"slot", light.slot}, {"variant", light.view.variant},
                           {"map_ms", mapMs}, {"acne", 100 * e.acne}, {"leak", 100 * e.leak},
                           {"error", 100 * e.error}, {"error_noedge", 100 * e.errorNoEdge},
                           {"evaluated_pixels", e.evaluated}});
@@ -173,11 +173,8 @@ int run(const RenderOptions& options, std::unique_ptr<engine::GlContext>& contex
     for (const auto& [light, file] : options.comparisons)
         request.comparisonSlots.push_back(lightSlot(scene, options.scene, light));
 
-    // The shadow plugin publishes each light's map as "shadow_map_<light>" in the frame graph.
-    for (const auto& [light, file] : options.shadowMaps) {
-        lightSlot(scene, options.scene, light);  // the light must exist
-        request.depthReadbacks.push_back("shadow_map_" + light);
-    }
+    for (const auto& [light, file] : options.shadowMaps)
+        request.shadowMapSlots.push_back(lightSlot(scene, options.scene, light));
 
     std::vector<double> frameMs;
     std::vector<std::string> order;
@@ -217,9 +214,10 @@ int run(const RenderOptions& options, std::unique_ptr<engine::GlContext>& contex
     for (std::size_t i = 0; i < options.comparisons.size(); ++i)
         engine::writePngAtomically(options.comparisons[i].second, options.width, options.height, 4,
                                    renderer.readComparison(request.comparisonSlots[i]));
-    for (const auto& [light, file] : options.shadowMaps) {
-        const auto found = last.depthReadbacks.find("shadow_map_" + light);
-        if (found == last.depthReadbacks.end())
+    for (std::size_t i = 0; i < options.shadowMaps.size(); ++i) {
+        const auto& [light, file] = options.shadowMaps[i];
+        const auto found = last.shadowMaps.find(request.shadowMapSlots[i]);
+        if (found == last.shadowMaps.end())
             throw engine::InputError("--shadow-map " + light + ": the light has no shadow map this frame "
                                      "(variant none, nothing in its frustum, or no shadow plugin)");
         int width = 0, height = 0;

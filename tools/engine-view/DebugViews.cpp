@@ -60,7 +60,7 @@ const truth::SurfaceBuffer& DebugViews::surfaces(const engine::FrameCamera& came
     return cache_->surfaces;
 }
 
-ViewFrame DebugViews::render(DebugView view, const ViewedLight* light, const nlohmann::json* lightStats,
+ViewFrame DebugViews::render(DebugView view, const ViewedLight* light, const engine::ShadowView* shadow,
                              const engine::FrameCamera& camera) {
     if (!light && view != DebugView::Shaded) {
         ViewFrame out = render(DebugView::Shaded, nullptr, nullptr, camera);
@@ -76,7 +76,7 @@ ViewFrame DebugViews::render(DebugView view, const ViewedLight* light, const nlo
         out.image = {camera.width, camera.height, renderer_.readColor()};
         return out;
     case DebugView::LightView:
-        request.camera = lightCamera(scene_, light->slot, lightStats, std::min(camera.width, camera.height));
+        request.camera = lightCamera(scene_, light->slot, shadow, std::min(camera.width, camera.height));
         out.frame = renderFrame(request);
         out.image = {request.camera.width, request.camera.height, renderer_.readColor()};
         out.notes.push_back("the scene seen from " + light->name);
@@ -84,7 +84,7 @@ ViewFrame DebugViews::render(DebugView view, const ViewedLight* light, const nlo
     case DebugView::DepthMap:
         return depthMap(*light, camera);
     case DebugView::ProjectedDepth:
-        return projected(*light, lightStats, camera);
+        return projected(*light, shadow, camera);
     case DebugView::Comparison:
     case DebugView::ShadowTerm: {
         const bool comparison = view == DebugView::Comparison;
@@ -111,11 +111,11 @@ ViewFrame DebugViews::render(DebugView view, const ViewedLight* light, const nlo
 ViewFrame DebugViews::depthMap(const ViewedLight& light, const engine::FrameCamera& camera) {
     engine::FrameRequest request;
     request.camera = camera;
-    request.depthReadbacks.push_back("shadow_map_" + light.name);
+    request.shadowMapSlots.push_back(light.slot);
     ViewFrame out;
     out.frame = renderFrame(request);
-    const auto found = out.frame.depthReadbacks.find("shadow_map_" + light.name);
-    if (found == out.frame.depthReadbacks.end()) {
+    const auto found = out.frame.shadowMaps.find(light.slot);
+    if (found == out.frame.shadowMaps.end()) {
         out.image = {camera.width, camera.height, renderer_.readColor()};
         out.notes.push_back(light.name + " has no shadow map this frame: shaded view");
         return out;
@@ -130,28 +130,26 @@ ViewFrame DebugViews::depthMap(const ViewedLight& light, const engine::FrameCame
     return out;
 }
 
-ViewFrame DebugViews::projected(const ViewedLight& light, const nlohmann::json* lightStats,
+ViewFrame DebugViews::projected(const ViewedLight& light, const engine::ShadowView* shadow,
                                 const engine::FrameCamera& camera) {
     if (light.type == engine::Light::Type::Directional) {
-        ViewFrame out = render(DebugView::Comparison, &light, lightStats, camera);
+        ViewFrame out = render(DebugView::Comparison, &light, shadow, camera);
         out.notes.push_back("projected depth: a directional map's fitted extents are not reported; "
                             "comparison view instead");
         return out;
     }
     engine::FrameRequest request;
     request.camera = camera;
-    request.depthReadbacks.push_back("shadow_map_" + light.name);
+    request.shadowMapSlots.push_back(light.slot);
     ViewFrame out;
     out.frame = renderFrame(request);
     const Image shaded{camera.width, camera.height, renderer_.readColor()};
-    const auto found = out.frame.depthReadbacks.find("shadow_map_" + light.name);
-    // The L of this frame's map (the stats of the frame just rendered).
-    const nlohmann::json* stats = nullptr;
-    for (const nlohmann::json& entry : out.frame.pluginStats["shadowmap"]["lights"])
-        if (entry.value("slot", -1) == light.slot) stats = &entry;
+    const auto found = out.frame.shadowMaps.find(light.slot);
+    // The L of this frame's map (the view of the frame just rendered).
     ProjectedMap map;
-    if (found == out.frame.depthReadbacks.end() ||
-        (light.type == engine::Light::Type::Spot && !reportedLightToWorld(stats, map.lightToWorld))) {
+    if (found == out.frame.shadowMaps.end() ||
+        (light.type == engine::Light::Type::Spot &&
+         !mapLightToWorld(out.frame.shadowView(light.slot), map.lightToWorld))) {
         out.image = shaded;
         out.notes.push_back(light.name + " has no shadow map this frame: shaded view");
         return out;

@@ -45,15 +45,15 @@ public:
     ~DebugViews();
 
     // `light`: the selected light (null: none, every view is then the shaded one);
-    // `lightStats`: its plugin stats of the previous frame (for the light's L), or null.
-    ViewFrame render(DebugView view, const ViewedLight* light, const nlohmann::json* lightStats,
+    // `shadow`: its shadow view of the previous frame (for the light's L), or null.
+    ViewFrame render(DebugView view, const ViewedLight* light, const engine::ShadowView* shadow,
                      const engine::FrameCamera& camera);
 
 private:
     engine::FrameResult renderFrame(engine::FrameRequest request);
     const truth::SurfaceBuffer& surfaces(const engine::FrameCamera& camera);
     ViewFrame depthMap(const ViewedLight& light, const engine::FrameCamera& camera);
-    ViewFrame projected(const ViewedLight& light, const nlohmann::json* lightStats, const engine::FrameCamera& camera);
+    ViewFrame projected(const ViewedLight& light, const engine::ShadowView* shadow, const engine::FrameCamera& camera);
     ViewFrame acneLeak(const ViewedLight& light, const engine::FrameCamera& camera);
 
     engine::Renderer& renderer_;

@@ -40,16 +40,13 @@ glm::dmat4 perspectiveOverBounds(const engine::Scene& scene, const glm::dmat4& e
 
 } // namespace
 
-bool reportedLightToWorld(const nlohmann::json* lightStats, glm::dmat4& lightToWorld) {
-    if (!lightStats || !lightStats->contains("light_to_world")) return false;
-    const nlohmann::json& values = (*lightStats)["light_to_world"];
-    if (!values.is_array() || values.size() != 16) return false;
-    for (int column = 0; column < 4; ++column)
-        for (int row = 0; row < 4; ++row) lightToWorld[column][row] = values[column * 4 + row].get<double>();
+bool mapLightToWorld(const engine::ShadowView* shadow, glm::dmat4& lightToWorld) {
+    if (!shadow || !shadow->hasMap || shadow->cube || shadow->layers.empty()) return false;
+    lightToWorld = shadow->layers.front().lightToWorld;
     return true;
 }
 
-engine::FrameCamera lightCamera(const engine::Scene& scene, int slot, const nlohmann::json* lightStats, int size) {
+engine::FrameCamera lightCamera(const engine::Scene& scene, int slot, const engine::ShadowView* shadow, int size) {
     const engine::LightInstance& placed = scene.lightInstances.at(slot);
     const engine::Light& light = scene.lights.at(placed.light);
     engine::FrameCamera camera;
@@ -57,7 +54,7 @@ engine::FrameCamera lightCamera(const engine::Scene& scene, int slot, const nloh
     const glm::dvec3 center = scene.worldBounds.empty() ? glm::dvec3(0.0) : scene.worldBounds.center();
     const double radius = scene.worldBounds.empty() ? 1.0 : std::max(glm::length(scene.worldBounds.extent()) * 0.5, 1e-6);
     glm::dmat4 reported{1.0};
-    const bool hasReported = reportedLightToWorld(lightStats, reported);
+    const bool hasReported = mapLightToWorld(shadow, reported);
 
     switch (light.type) {
     case engine::Light::Type::Spot: {

@@ -2,7 +2,7 @@
 // The "light's view" debug view: a camera placed at a light, so the scene is seen as the
 // light sees it (the seeds' first picture: every surface it lights is visible, shadows are
 // hidden behind what casts them).
-//  - spot: the shadow map's own L (the plugin's light_to_world) and the cone's full angle
+//  - spot: the shadow map's own L (its shadow view's) and the cone's full angle
 //    (2 * outer cone, at most 178 degrees), aspect 1: the same picture as its depth map;
 //  - directional: the plugin's L (the fitted box's face toward the light; a placement from
 //    the scene's bounds when the plugin reported none) and an orthographic box around the
@@ -13,12 +13,8 @@
 #include "engine/render/Frame.h"
 #include "engine/scene/Scene.h"
 
-#include <nlohmann/json.hpp>
+// `shadow`: the light's shadow view of the last frame, or null.
+engine::FrameCamera lightCamera(const engine::Scene& scene, int slot, const engine::ShadowView* shadow, int size);
 
-// `lightStats`: the plugin's per-light stats of the last frame, or null.
-engine::FrameCamera lightCamera(const engine::Scene& scene, int slot, const nlohmann::json* lightStats,
-                                int size);
-
-// L (light -> world) as the plugin reported it ("light_to_world", column-major); false when
-// absent (no 2D map this frame).
-bool reportedLightToWorld(const nlohmann::json* lightStats, glm::dmat4& lightToWorld);
+// L (light -> world) of the light's 2D map; false when it has none this frame.
+bool mapLightToWorld(const engine::ShadowView* shadow, glm::dmat4& lightToWorld);

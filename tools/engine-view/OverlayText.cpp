@@ -15,17 +15,6 @@ std::string format(const char* pattern, auto... values) {
 
 } // namespace
 
-bool OverlayText::lightPassMs(const engine::FrameResult& frame, const std::string& name, double& ms) {
-    ms = 0.0;
-    bool ran = false;
-    for (const engine::PassReport& pass : frame.passes)
-        if (!pass.culled && (pass.name == "shadow_" + name || pass.name == "shadow_" + name + "_first_layer")) {
-            ms += pass.wallMs;
-            ran = true;
-        }
-    return ran;
-}
-
 std::string OverlayText::shadeSource(const nlohmann::json& shadeCache, int slot) {
     static const std::pair<const char*, const char*> kSources[] = {
         {"fetched", "shade reused"}, {"computed", "shade computed"}, {"moving", "shade moving"},
@@ -40,9 +29,10 @@ std::string OverlayText::shadeSource(const nlohmann::json& shadeCache, int slot)
 }
 
 void OverlayText::recordFrame(const engine::FrameResult& frame, const ViewerState& state) {
-    for (const ViewedLight& light : state.lights()) {
-        double ms = 0.0;
-        if (lightPassMs(frame, light.name, ms)) lastMs_[light.name] = ms;
+    for (const engine::ShadowView& view : frame.shadowViews) {
+        bool ran = false;
+        const double ms = frame.shadowPassMs(view, ran);
+        if (ran) lastMs_[view.slot] = ms;
     }
 }
 
@@ -56,27 +46,26 @@ std::vector<OverlayLine> OverlayText::lines(const ViewerState& state, const engi
                    kPlain});
     for (std::size_t i = 0; i < state.lights().size(); ++i) {
         const ViewedLight& light = state.lights()[i];
-        const nlohmann::json* stats = state.frameStats(static_cast<int>(i));
+        const engine::ShadowView* view = state.frameView(static_cast<int>(i));
         const nlohmann::json settings = state.effective(static_cast<int>(i));
         std::string line = (static_cast<int>(i) == selected ? "> " : "   ") + light.name;
-        if (!stats) {
+        if (!view) {
             line += "\t(no shadow plugin)";
         } else {
-            const std::string variant = stats->value("variant", "?");
-            const std::string map = stats->value("map", "none");
-            const nlohmann::json offset = stats->value("polygon_offset", nlohmann::json::array({0, 0}));
-            line += format("\t%s\t%d%s\t%s\t%s\toffset %g/%g\tdim %.2f", variant.c_str(), stats->value("resolution", 0),
-                           map == "cube" ? " cube" : "", stats->value("depth_format", "?").c_str(),
-                           stats->value("filter", "?").c_str(), offset.at(0).get<double>(), offset.at(1).get<double>(),
+            const nlohmann::json& used = view->settings;
+            const nlohmann::json offset = used.value("polygon_offset", nlohmann::json::array({0, 0}));
+            line += format("\t%s\t%d%s\t%s\t%s\toffset %g/%g\tdim %.2f", view->variant.c_str(), used.value("resolution", 0),
+                           view->cube ? " cube" : "", used.value("depth_format", "?").c_str(),
+                           used.value("filter", "?").c_str(), offset.at(0).get<double>(), offset.at(1).get<double>(),
                            settings.value("dimming", 0.4));
-            double ms = 0.0;
-            if (map == "none") {
-                line += "\tno map" + (stats->contains("skip_reason") ? " (" + (*stats)["skip_reason"].get<std::string>() + ")"
-                                                                       : std::string());
-            } else if (lightPassMs(frame, light.name, ms)) {
+            bool ran = false;
+            const double ms = frame.shadowPassMs(*view, ran);
+            if (!view->hasMap) {
+                line += "\tno map" + (view->skipReason.empty() ? std::string() : " (" + view->skipReason + ")");
+            } else if (ran) {
                 line += format("\t%.2f ms\trendered", ms);
             } else {
-                const auto last = lastMs_.find(light.name);
+                const auto last = lastMs_.find(view->slot);
                 line += last != lastMs_.end() ? format("\t%.2f ms\tcached", last->second) : std::string("\t\tcached");
             }
             line += '\t';

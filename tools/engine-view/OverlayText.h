@@ -22,15 +22,11 @@ public:
                                    const std::vector<std::string>& notes, const std::string& camera,
                                    const std::string& status, bool statusIsError) const;
 
-    // The wall time of light `name`'s passes in `frame` ("shadow_<name>" and, for woo,
-    // "shadow_<name>_first_layer"); false when none ran (cached, none, culled).
-    static bool lightPassMs(const engine::FrameResult& frame, const std::string& name, double& ms);
-
     // Where the frame's lit pass took light `slot`'s shade from, from FrameResult::shadeCache:
     // "shade reused" (shade cache), "shade computed" (and cached), "shade live" (evaluated,
     // not cached), "shade constant", or "" when the frame does not say.
     static std::string shadeSource(const nlohmann::json& shadeCache, int slot);
 
 private:
-    std::map<std::string, double> lastMs_;
+    std::map<int, double> lastMs_;  // by light slot
 };

@@ -70,9 +70,9 @@ nlohmann::json& ViewerState::shadowOf(int index) {
     return shadow;
 }
 
-const nlohmann::json* ViewerState::frameStats(int index) const {
-    for (const nlohmann::json& light : stats_)
-        if (light.value("slot", -1) == lights_[index].slot) return &light;
+const engine::ShadowView* ViewerState::frameView(int index) const {
+    for (const engine::ShadowView& view : views_)
+        if (view.slot == lights_[index].slot) return &view;
     return nullptr;
 }
 
@@ -84,9 +84,10 @@ nlohmann::json ViewerState::effective(int index) const {
     if (extras.is_object() && extras.contains("shadow") && extras["shadow"].is_object())
         settings.update(extras["shadow"]);
     if (!settings.contains("polygon_offset")) {
-        const nlohmann::json* stats = frameStats(index);
-        settings["polygon_offset"] = stats && stats->contains("polygon_offset") ? (*stats)["polygon_offset"]
-                                                                                : nlohmann::json::array({0.0, 0.0});
+        const engine::ShadowView* view = frameView(index);
+        settings["polygon_offset"] = view && view->settings.contains("polygon_offset")
+                                         ? view->settings["polygon_offset"]
+                                         : nlohmann::json::array({0.0, 0.0});
     }
     return settings;
 }

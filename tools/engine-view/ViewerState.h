@@ -55,9 +55,9 @@ public:
     // (InputError) is rolled back, the last good settings are reloaded, and the error rethrown.
     void apply(engine::Renderer& renderer);
 
-    // The last frame's pluginStats["shadowmap"]["lights"] (what the plugin really used).
-    void setFrameStats(const nlohmann::json& lights) { stats_ = lights; }
-    const nlohmann::json* frameStats(int index) const;  // null when the plugin said nothing
+    // The last frame's shadow views (what the plugin really used).
+    void setFrameViews(std::vector<engine::ShadowView> views) { views_ = std::move(views); }
+    const engine::ShadowView* frameView(int index) const;  // null when no plugin published one
 
     // The light's effective settings: built-in defaults <- config <- extras.shadow, with the
     // polygon offset the plugin reported when it is not explicit.
@@ -78,5 +78,5 @@ private:
     bool dirty_ = false;
     int selected_ = -1;
     DebugView view_ = DebugView::Shaded;
-    nlohmann::json stats_ = nlohmann::json::array();
+    std::vector<engine::ShadowView> views_;
 };

@@ -40,12 +40,6 @@ nlohmann::json shadowDefaults(const engine::EngineConfig& config) {
     return nlohmann::json::object();
 }
 
-nlohmann::json lightStatsOf(const engine::FrameResult& frame) {
-    const auto plugin = frame.pluginStats.find("shadowmap");
-    if (plugin == frame.pluginStats.end() || !plugin->contains("lights")) return nlohmann::json::array();
-    return (*plugin)["lights"];
-}
-
 void saveSettings(const ViewOptions& options, const ViewerState& state, const std::string& path) {
     std::map<int, nlohmann::json> shadows;
     for (std::size_t i = 0; i < state.lights().size(); ++i)
@@ -107,8 +101,8 @@ int run(const ViewOptions& options, std::unique_ptr<engine::GlContext>& context,
             }
             const int index = state.selected();
             shown = views.render(state.view(), index >= 0 ? &state.lights()[index] : nullptr,
-                                 index >= 0 ? state.frameStats(index) : nullptr, camera.frameCamera(size.x, size.y));
-            state.setFrameStats(lightStatsOf(shown.frame));
+                                 index >= 0 ? state.frameView(index) : nullptr, camera.frameCamera(size.x, size.y));
+            state.setFrameViews(shown.frame.shadowViews);
             overlayText.recordFrame(shown.frame, state);
             presenter.present(shown.image, size.x, size.y);
             if (requests.overlay)

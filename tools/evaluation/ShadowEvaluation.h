@@ -17,9 +17,9 @@
 namespace evaluation {
 
 struct LightResult {
-    std::string light;
-    int slot = -1;
-    nlohmann::json stats;     // the plugin's per-light stats (variant, resolution, ...)
+    std::string light;        // for people
+    int slot = -1;            // the light instance
+    engine::ShadowView view;  // what the shadow plugin published for it (settings, map)
     double shadowMs = 0.0;    // median wall time of its shadow passes, over frames they ran
     int framesRendered = 0;   // frames in which its map was rendered (not cached)
     truth::ShadowErrors errors;

@@ -152,18 +152,15 @@ engine::EngineConfig makeConfig(const Options& options) {
     return config;
 }
 
-bool finiteNumber(const nlohmann::json& value) {
-    return value.is_number() && std::isfinite(value.get<double>());
-}
-
-// Everything the plugin reported about the light's matrices must be a finite number (far may
-// be the string "infinite").
-bool statsFinite(const nlohmann::json& light) {
-    if (light.contains("near") && !finiteNumber(light["near"])) return false;
-    if (light.contains("far") && !finiteNumber(light["far"]) && light["far"] != "infinite") return false;
-    if (light.contains("light_to_world"))
-        for (const nlohmann::json& value : light["light_to_world"])
-            if (!finiteNumber(value)) return false;
+// Everything the plugin published about the light's matrices must be finite (far may be
+// +infinity: an infinite far plane).
+bool viewFinite(const engine::ShadowView& view) {
+    if (!std::isfinite(view.nearPlane) || std::isnan(view.farPlane)) return false;
+    for (const engine::ShadowMapLayer& layer : view.layers)
+        for (int column = 0; column < 4; ++column)
+            for (int row = 0; row < 4; ++row)
+                if (!std::isfinite(layer.lightToWorld[column][row]) || !std::isfinite(layer.projection[column][row]))
+                    return false;
     return true;
 }
 
@@ -237,10 +234,11 @@ struct Runner {
                 const evaluation::ViewResult view = evaluator.evaluate(built.camera, 0);
                 engine::FrameRequest request;
                 request.camera = built.camera;
-                request.depthReadbacks = {"shadow_map_" + built.lightName};
+                request.shadowMapSlots = {0};
                 request.shadowMaskSlots = {0};  // keeps the mask current for --images
                 const engine::FrameResult frame = renderer.renderFrame(request);
-                const nlohmann::json stats = frame.pluginStats["shadowmap"]["lights"][0];
+                const engine::ShadowView* published = frame.shadowView(0);
+                if (!published) throw std::runtime_error("the shadow plugin published no view of the light");
 
                 stress::Row row;
                 row.sweep = sweep.name;
@@ -249,12 +247,13 @@ struct Runner {
                 row.format = format.name;
                 row.label = point.label;
                 row.value = point.value;
-                row.map = stats.value("map", "none");
-                row.skipReason = stats.value("skip_reason", "");
-                if (finiteNumber(stats.value("near", nlohmann::json()))) row.nearPlane = stats["near"];
-                if (stats.contains("far"))
-                    row.farPlane = stats["far"] == "infinite" ? -1.0 : finiteNumber(stats["far"]) ? stats["far"].get<double>() : NAN;
-                row.nonFiniteStats = !statsFinite(stats);
+                row.map = !published->hasMap ? "none" : published->cube ? "cube" : "2d";
+                row.skipReason = published->skipReason;
+                if (published->hasMap) {
+                    row.nearPlane = published->nearPlane;
+                    row.farPlane = std::isinf(published->farPlane) ? -1.0 : published->farPlane;
+                }
+                row.nonFiniteStats = !viewFinite(*published);
                 if (!view.lights.empty()) {
                     const evaluation::LightResult& result = view.lights.front();
                     row.acne = 100.0 * result.errors.acne;
@@ -264,16 +263,14 @@ struct Runner {
                     row.evaluated = result.errors.evaluated;
                     row.nonFiniteShade = result.nonFinitePixels;
                 }
-                if (const auto found = frame.depthReadbacks.find(request.depthReadbacks[0]);
-                    found != frame.depthReadbacks.end())
+                if (const auto found = frame.shadowMaps.find(0); found != frame.shadowMaps.end())
                     for (float depth : found->second.depth) row.nonFiniteDepth += !std::isfinite(depth);
                 if (options.images) {
                     const std::string name =
                         row.sweep + "_" + row.label + "_" + row.light + "_" + row.variant + "_" + row.format;
                     std::filesystem::create_directories(options.out / "images");
                     writeErrorImage(options.out / "images" / (name + ".png"), renderer, built.scene, built.camera);
-                    if (const auto found = frame.depthReadbacks.find(request.depthReadbacks[0]);
-                        found != frame.depthReadbacks.end())
+                    if (const auto found = frame.shadowMaps.find(0); found != frame.shadowMaps.end())
                         writeDepthImage(options.out / "images" / (name + "_map.png"), found->second);
                 }
                 row.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

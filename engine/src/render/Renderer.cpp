@@ -4,6 +4,7 @@
 #include "engine/scene/Scene.h"
 #include "engine/util/Error.h"
 
+#include <algorithm>
 #include <chrono>
 
 namespace engine {
@@ -100,12 +101,15 @@ FrameResult Renderer::renderFrame(const FrameRequest& request) {
     glFinish();
 
     FrameResult result;
-    for (const std::string& name : request.depthReadbacks) {
-        const ResourceHandle resource = graph.find(name);
+    for (const int slot : request.shadowMapSlots) {
+        const auto view = std::find_if(frame.shadowViews().begin(), frame.shadowViews().end(),
+                                       [slot](const ShadowView& v) { return v.slot == slot; });
+        if (view == frame.shadowViews().end() || !view->hasMap) continue;
+        const ResourceHandle resource = graph.find(view->mapResource);
         const std::uint32_t texture = graph.importedPhysical(resource);
         if (!texture || !isDepthFormat(graph.descOf(resource).format)) continue;
         const TextureDesc& desc = graph.descOf(resource);
-        DepthReadback& readback = result.depthReadbacks[name];
+        DepthReadback& readback = result.shadowMaps[slot];
         readback.width = desc.width;
         readback.height = desc.height;
         readback.layers = desc.cube ? 6 : desc.layers;
@@ -115,6 +119,7 @@ FrameResult Renderer::renderFrame(const FrameRequest& request) {
     result.graphviz = graph.graphviz();
     result.shadowTermProvided = frame.lightVisibility().has_value();
     result.litInstancesCulled = litPass_->culledInstances();
+    result.shadowViews = frame.shadowViews();
     result.shadeCache = shadeCacheStats(litPass_->shadePlan());
     for (RenderPlugin* plugin : plugins_) result.pluginStats[plugin->name()] = plugin->frameStats();
     result.frameMs =
@@ -138,6 +143,23 @@ std::vector<std::uint8_t> Renderer::readShadowMask(int slot) const {
 std::vector<std::uint8_t> Renderer::readComparison(int slot) const {
     const auto found = lightViews_.find({LitPass::LightView::Comparison, slot});
     return found == lightViews_.end() ? std::vector<std::uint8_t>{} : readTextureRGBA8TopDown(found->second);
+}
+
+double FrameResult::shadowPassMs(const ShadowView& view, bool& ran) const {
+    double total = 0.0;
+    ran = false;
+    for (const PassReport& pass : passes)
+        if (!pass.culled && std::find(view.passes.begin(), view.passes.end(), pass.name) != view.passes.end()) {
+            total += pass.wallMs;
+            ran = true;
+        }
+    return total;
+}
+
+const ShadowView* FrameResult::shadowView(int slot) const {
+    for (const ShadowView& view : shadowViews)
+        if (view.slot == slot) return &view;
+    return nullptr;
 }
 
 } // namespace engine

@@ -24,23 +24,31 @@ void LightShadow::ensureMap() {
     map.setParameter(GL_TEXTURE_MAG_FILTER, filter);
 }
 
+std::string LightShadow::mapResource() const { return "shadow_map_" + std::to_string(slot); }
+std::string LightShadow::depthPass() const { return "shadow_" + std::to_string(slot) + "_" + name; }
+std::string LightShadow::firstLayerPass() const { return depthPass() + "_first_layer"; }
+
+nlohmann::json LightShadow::settingsJson() const {
+    return {{"variant", toString(settings.variant)},
+            {"resolution", settings.resolution},
+            {"depth_format", toString(settings.depthFormat)},
+            {"filter", toString(settings.filter)},
+            {"polygon_offset", {settings.effectivePolygonOffset().x, settings.effectivePolygonOffset().y}},
+            {"dimming", settings.dimming}};
+}
+
 nlohmann::json LightShadow::stats() const {
-    nlohmann::json out{{"light", name},
-                       {"slot", slot},
-                       {"variant", toString(settings.variant)},
-                       {"resolution", settings.resolution},
-                       {"depth_format", toString(settings.depthFormat)},
-                       {"filter", toString(settings.filter)},
-                       {"polygon_offset", {settings.effectivePolygonOffset().x,
-                                           settings.effectivePolygonOffset().y}},
-                       {"map", frame.kind == MapKind::None ? "none"
-                               : frame.kind == MapKind::Cube ? "cube"
-                                                             : "2d"},
-                       {"faces_rendered", frame.facesRendered},
-                       {"faces_skipped", frame.facesSkipped},
-                       {"draws", frame.draws},
-                       {"triangles", frame.triangles},
-                       {"casters_culled", frame.castersCulled}};
+    nlohmann::json out = settingsJson();
+    out.update({{"light", name},
+                {"slot", slot},
+                {"map", frame.kind == MapKind::None ? "none"
+                        : frame.kind == MapKind::Cube ? "cube"
+                                                      : "2d"},
+                {"faces_rendered", frame.facesRendered},
+                {"faces_skipped", frame.facesSkipped},
+                {"draws", frame.draws},
+                {"triangles", frame.triangles},
+                {"casters_culled", frame.castersCulled}});
     if (!frame.skipReason.empty()) out["skip_reason"] = frame.skipReason;
     if (settings.variant == Variant::Backface) out["open_casters"] = frame.openCasters;
     if (frame.kind != MapKind::None) out["cache"] = frame.cacheHit ? "hit" : "miss";
@@ -55,6 +63,34 @@ nlohmann::json LightShadow::stats() const {
     } else if (frame.kind == MapKind::Cube) {
         out["near"] = frame.pointViews.nearPlane;
         out["far"] = frame.pointViews.farPlane;
+    }
+    return out;
+}
+
+engine::ShadowView LightShadow::view() const {
+    engine::ShadowView out;
+    out.slot = slot;
+    out.name = name;
+    out.variant = toString(settings.variant);
+    out.settings = settingsJson();
+    out.hasMap = frame.kind != MapKind::None;
+    out.skipReason = frame.skipReason;
+    out.cube = frame.kind == MapKind::Cube;
+    if (frame.kind == MapKind::Map2D) {
+        out.layers.push_back({frame.view.lightToWorld, frame.view.projection, true});
+        out.nearPlane = frame.view.nearPlane;
+        out.farPlane = frame.view.farPlane;
+    } else if (frame.kind == MapKind::Cube) {
+        for (const LightView& face : frame.pointViews.faces)
+            out.layers.push_back({face.lightToWorld, face.projection, !face.empty});
+        out.nearPlane = frame.pointViews.nearPlane;
+        out.farPlane = frame.pointViews.farPlane;
+    }
+    if (out.hasMap) {
+        out.renderedThisFrame = !frame.cacheHit;
+        out.mapResource = mapResource();
+        if (settings.variant == Variant::Woo) out.passes.push_back(firstLayerPass());
+        out.passes.push_back(depthPass());
     }
     return out;
 }

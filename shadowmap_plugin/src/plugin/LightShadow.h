@@ -6,6 +6,7 @@
 #include "plugin/ShadowSettings.h"
 
 #include "engine/gl/Texture.h"
+#include "engine/render/ShadowView.h"
 #include "engine/scene/Scene.h"
 
 #include <nlohmann/json.hpp>
@@ -31,8 +32,8 @@ struct LightShadowFrame {
 };
 
 struct LightShadow {
-    std::string name;
-    int slot = -1;  // index into Scene::lightInstances (the lit pass's light slot)
+    std::string name;  // for people: the light's name, else its node's, else "light <slot>"
+    int slot = -1;     // index into Scene::lightInstances (the lit pass's light slot): its identity
     engine::Light::Type type = engine::Light::Type::Point;
     ShadowSettings settings;
     engine::gl::Texture map;
@@ -43,7 +44,16 @@ struct LightShadow {
     // (Re)creates the map when size, format, filter or kind changed, with the comparison
     // state the visibility hook relies on (GL_COMPARE_REF_TO_TEXTURE, GL_LEQUAL).
     void ensureMap();
+    // Graph names, keyed by the light instance (names may repeat or be empty): the map as
+    // imported, and the depth pass (woo: the peel pass; firstLayerPass() before it).
+    std::string mapResource() const;
+    std::string depthPass() const;
+    std::string firstLayerPass() const;
+    // The settings in effect, keyed as in extras.shadow.
+    nlohmann::json settingsJson() const;
     nlohmann::json stats() const;
+    // What the tools see of this light this frame (ShadowView.h).
+    engine::ShadowView view() const;
 };
 
 } // namespace shadowmap

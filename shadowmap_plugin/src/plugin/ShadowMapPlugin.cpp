@@ -28,9 +28,13 @@ namespace {
 
 constexpr int kFirstUnit = engine::kFirstPluginTextureUnit;
 
-std::string lightName(const engine::Scene& scene, const engine::LightInstance& placed) {
+// For people: the light's name, else its node's, else its slot. Not an identity: a light
+// placed by two nodes gives both instances its name (the slot tells them apart).
+std::string lightName(const engine::Scene& scene, const engine::LightInstance& placed, std::size_t slot) {
     const std::string& name = scene.lights[placed.light].name;
-    return name.empty() ? scene.nodes[placed.node].name : name;
+    if (!name.empty()) return name;
+    const std::string& node = scene.nodes[placed.node].name;
+    return node.empty() ? "light " + std::to_string(slot) : node;
 }
 
 // Receivers the camera can see (only they need shadows this frame) and every caster.
@@ -110,7 +114,7 @@ void ShadowMapPlugin::resolveLights(const engine::Scene& scene) {
         const engine::LightInstance& placed = scene.lightInstances[slot];
         const engine::Light& light = scene.lights[placed.light];
         LightShadow shadow;
-        shadow.name = lightName(scene, placed);
+        shadow.name = lightName(scene, placed, slot);
         shadow.slot = static_cast<int>(slot);
         shadow.type = light.type;
         shadow.settings = defaults_;
@@ -146,7 +150,7 @@ void ShadowMapPlugin::reloadSettings(const engine::Scene& scene) {
     // changed misses and re-renders, and the others keep hitting.
     for (LightShadow& light : lights_)
         for (LightShadow& old : previous)
-            if (old.name == light.name && old.slot == light.slot) {
+            if (old.slot == light.slot) {
                 light.map = std::move(old.map);
                 light.renderedKey = old.renderedKey;
             }
@@ -267,7 +271,7 @@ void ShadowMapPlugin::addDepthPasses(LightShadow& light, engine::Frame& frame,
     }
     if (settings.variant != Variant::Woo) {
         frame.graph().addPass(
-            "shadow_" + light.name, [map](engine::PassBuilder& builder) { (void)builder.write(map); },
+            light.depthPass(), [map](engine::PassBuilder& builder) { (void)builder.write(map); },
             [this, &light, &frame, map, style, key](engine::PassContext& context) {
                 renderMap(light, frame, context, context.texture(map), false, style);
                 light.renderedKey = key;  // only now does the map hold what the key says
@@ -280,9 +284,9 @@ void ShadowMapPlugin::addDepthPasses(LightShadow& light, engine::Frame& frame,
     const engine::TextureDesc firstLayerDesc{settings.resolution, settings.resolution,
                                              graphFormat(settings.depthFormat), cube ? 6 : 1, false};
     frame.graph().addPass(
-        "shadow_" + light.name + "_first_layer",
+        light.firstLayerPass(),
         [&](engine::PassBuilder& builder) {
-            *firstLayer = builder.create("shadow_first_layer_" + light.name, firstLayerDesc);
+            *firstLayer = builder.create("shadow_first_layer_" + std::to_string(light.slot), firstLayerDesc);
         },
         [this, &light, &frame, firstLayer, cube](engine::PassContext& context) {
             DepthPassStyle first;
@@ -290,7 +294,7 @@ void ShadowMapPlugin::addDepthPasses(LightShadow& light, engine::Frame& frame,
             renderMap(light, frame, context, context.texture(*firstLayer), cube, first);
         });
     frame.graph().addPass(
-        "shadow_" + light.name,
+        light.depthPass(),
         [map, firstLayer](engine::PassBuilder& builder) {
             builder.read(*firstLayer);
             (void)builder.write(map);
@@ -492,7 +496,7 @@ void ShadowMapPlugin::addPasses(engine::Frame& frame) {
         const engine::TextureDesc desc{size, size, graphFormat(light.settings.depthFormat), 1,
                                        light.type == engine::Light::Type::Point};
         const engine::ResourceHandle map =
-            frame.graph().importTexture("shadow_map_" + light.name, desc, light.map.id());
+            frame.graph().importTexture(light.mapResource(), desc, light.map.id());
         if (light.frame.cacheHit) {
             ++cacheHits_;  // the map is an input nobody writes this frame: no depth pass
         } else {
@@ -502,6 +506,8 @@ void ShadowMapPlugin::addPasses(engine::Frame& frame) {
         }
         maps.push_back(map);
     }
+    // Every light instance's view, shadowed or not (ShadowView.h): what the tools read.
+    for (const LightShadow& light : lights_) frame.publishShadowView(light.view());
     engine::LightVisibilityHook hook = makeHook(frame);
     hook.reads = std::move(maps);
     frame.setLightVisibility(std::move(hook));

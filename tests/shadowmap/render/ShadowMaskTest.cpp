@@ -110,4 +110,51 @@ TEST_P(ShadowMask, SpotLightNeverLightsWhatIsBehindIt) {
     EXPECT_EQ(lit, 0);
 }
 
+// Lights are identified by their instance (node + light), not their name: a light placed by
+// two nodes, and lights without names (nor named nodes), each cast their own shadow. (Names
+// used to key the plugin's passes: such scenes were refused, "resource 'shadow_map_key'
+// already imported".)
+namespace {
+
+// Each spot instance's mask against the analytic shadow, inside its own cone.
+void expectEverySpotInstanceMatches(const std::vector<engine::RenderPlugin*>& plugins, const engine::Scene& scene) {
+    for (int slot = 0; slot < static_cast<int>(scene.lightInstances.size()); ++slot) {
+        const engine::LightInstance& placed = scene.lightInstances[slot];
+        const double cone = scene.lights[placed.light].outerConeAngle;
+        const auto inCone = [&](const glm::dvec3& p) {
+            return std::acos(glm::dot(glm::normalize(p - placed.position()), placed.direction())) < cone - 0.03;
+        };
+        const auto mask = engine::test::renderShadowMask(plugins, scene, camera(), slot);
+        const auto result = engine::test::compareFloorMask(mask, scene, slot, camera(), {kFloor, kBox}, 0.0, 9.9, inCone);
+        EXPECT_GT(result.truthShadowed, 200) << "slot " << slot;
+        EXPECT_GT(result.truthLit, 1000) << "slot " << slot;
+        EXPECT_LE(result.wrongFraction(), 0.003) << "slot " << slot;
+    }
+}
+
+} // namespace
+
+TEST_P(ShadowMask, OneLightPlacedByTwoNodesShadowsFromBoth) {
+    SceneBuilder builder;
+    const int first = builder.addLight("key", Light::Type::Spot, {-4, 8, -4}, {1.5, 0, 1.5}, shadow());
+    engine::Node second;
+    second.name = "key_again";
+    second.light = builder.scene.nodes[first].light;  // the same KHR_lights_punctual light
+    second.local = engine::test::placeLooking({4, 8, -3}, {-1, 0, 1});
+    builder.addNode(second);
+    const engine::Scene scene = boxOverFloor(builder);
+    ASSERT_EQ(scene.lightInstances.size(), 2u);
+    expectEverySpotInstanceMatches(plugins(), scene);
+}
+
+TEST_P(ShadowMask, UnnamedLightsOnUnnamedNodesEachShadow) {
+    SceneBuilder builder;
+    for (const auto& [position, target] : {std::pair<glm::dvec3, glm::dvec3>{{-4, 8, -4}, {1.5, 0, 1.5}},
+                                           std::pair<glm::dvec3, glm::dvec3>{{4, 8, -3}, {-1, 0, 1}}}) {
+        const int node = builder.addLight("", Light::Type::Spot, position, target, shadow());
+        builder.scene.nodes[node].name.clear();
+    }
+    expectEverySpotInstanceMatches(plugins(), boxOverFloor(builder));
+}
+
 INSTANTIATE_TEST_SUITE_P(Variants, ShadowMask, ::testing::Values("standard", "woo", "backface"));

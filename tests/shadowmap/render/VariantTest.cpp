@@ -149,15 +149,15 @@ TEST_F(ShadowVariants, WooMapHoldsTheMidpointOfTheFirstTwoLayers) {
     renderer.setScene(scene);
     engine::FrameRequest request;
     request.camera = camera();
-    request.depthReadbacks = {"shadow_map_sun"};
+    request.shadowMapSlots = {0};
     const engine::FrameResult frame = renderer.renderFrame(request);
-    ASSERT_EQ(frame.depthReadbacks.count("shadow_map_sun"), 1u);
-    const engine::DepthReadback& map = frame.depthReadbacks.at("shadow_map_sun");
+    ASSERT_EQ(frame.shadowMaps.count(0), 1u);
+    const engine::DepthReadback& map = frame.shadowMaps.at(0);
 
-    const nlohmann::json& light = frame.pluginStats["shadowmap"]["lights"][0];
-    const double nearPlane = light["near"], farPlane = light["far"];
-    glm::dmat4 lightToWorld;
-    for (int i = 0; i < 16; ++i) lightToWorld[i / 4][i % 4] = light["light_to_world"][i];
+    const engine::ShadowView* view = frame.shadowView(0);
+    ASSERT_TRUE(view && view->hasMap && view->layers.size() == 1u);
+    const double nearPlane = view->nearPlane, farPlane = view->farPlane;
+    const glm::dmat4 lightToWorld = view->layers[0].lightToWorld;
     const glm::dvec3 origin(lightToWorld[3]), forward = -glm::dvec3(lightToWorld[2]);
     const auto windowDepth = [&](double y) {  // orthographic: linear in distance
         return (glm::dot(glm::dvec3(0, y, 0) - origin, forward) - nearPlane) / (farPlane - nearPlane);

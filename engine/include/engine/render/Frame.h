@@ -3,6 +3,7 @@
 // the frame is being built into. Plugins add passes and may install the lit pass's
 // per-light visibility hook (the shadow plugin's contribution to shading).
 #include "engine/graph/RenderGraph.h"
+#include "engine/render/ShadowView.h"
 
 #include <glm/glm.hpp>
 
@@ -84,6 +85,11 @@ public:
     void setLightVisibility(LightVisibilityHook hook);
     const std::optional<LightVisibilityHook>& lightVisibility() const { return visibility_; }
 
+    // A shadow plugin publishes one view per light instance (ShadowView.h); the frame's
+    // result hands them to the tools.
+    void publishShadowView(ShadowView view) { shadowViews_.push_back(std::move(view)); }
+    const std::vector<ShadowView>& shadowViews() const { return shadowViews_; }
+
 private:
     const Scene& scene_;
     const SceneGpu& gpu_;
@@ -91,6 +97,7 @@ private:
     FrameCamera camera_;
     std::uint64_t index_;
     std::optional<LightVisibilityHook> visibility_;
+    std::vector<ShadowView> shadowViews_;
 };
 
 } // namespace engine

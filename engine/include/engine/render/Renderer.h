@@ -25,9 +25,10 @@ struct FrameRequest {
     std::vector<int> shadowMaskSlots;  // lights (slots) whose shade is also rendered
     std::vector<int> comparisonSlots;  // lights whose comparison view is also rendered
     bool timing = false;               // close every pass with glFinish and time it
-    // Imported depth textures to read back after the frame, by graph name (the shadow
-    // plugin publishes each light's map as "shadow_map_<light>"). Unknown names are skipped.
-    std::vector<std::string> depthReadbacks;
+    // Lights (slots) whose shadow map is read back after the frame (FrameResult::shadowMaps),
+    // found through the shadow views the plugin published. A light without a map this frame
+    // is skipped.
+    std::vector<int> shadowMapSlots;
 };
 
 struct DepthReadback {
@@ -46,7 +47,13 @@ struct FrameResult {
     // "fetched" (reused), "computed" (recomputed and cached), "moving" (recomputed, not
     // stored: changed two frames running), "uncached", "constant"}.
     nlohmann::json shadeCache = nlohmann::json::object();
-    std::map<std::string, DepthReadback> depthReadbacks;
+    std::map<int, DepthReadback> shadowMaps;  // by light slot (FrameRequest::shadowMapSlots)
+    // Every light instance's shadow as the shadow plugin published it (ShadowView.h), by slot.
+    std::vector<ShadowView> shadowViews;
+    const ShadowView* shadowView(int slot) const;
+    // The wall time of the passes `view` names that ran this frame; `ran` says whether any did
+    // (none: the map was cached, or the light has none).
+    double shadowPassMs(const ShadowView& view, bool& ran) const;
 };
 
 class Renderer {

@@ -1,0 +1,44 @@
+#pragma once
+// What a shadow plugin publishes about every light's shadow in a frame: the typed contract
+// between the plugin and the tools that check or show shadows (the ray-traced evaluation,
+// engine-render's map readback and timings, engine-view's light camera and map views, the
+// stress tool). Tools read these; the plugin's --stats JSON is a report for people and
+// scripts, and the names of its graph passes and resources are its own business.
+#include <glm/glm.hpp>
+#include <nlohmann/json.hpp>
+
+#include <string>
+#include <vector>
+
+namespace engine {
+
+// One layer of a light's map: the 2D map, or one cube face (GL face order).
+struct ShadowMapLayer {
+    glm::dmat4 lightToWorld{1.0};  // L of this layer's view
+    glm::dmat4 projection{1.0};    // P_light
+    bool rendered = false;         // false: no receiver in view, cleared to far
+};
+
+struct ShadowView {
+    // The light instance (node + light) the view belongs to: its index in
+    // Scene::lightInstances, the lit pass's light slot. Names are for people only: two
+    // instances may share one, or have none.
+    int slot = -1;
+    std::string name;
+    std::string variant;  // "standard", "woo", "backface" or "none"
+    // The effective per-light settings, keyed as in glTF extras.shadow.
+    nlohmann::json settings = nlohmann::json::object();
+    // The map this frame; without one, skipReason says why (variant none, nothing in view...).
+    bool hasMap = false;
+    std::string skipReason;
+    bool cube = false;                  // six layers, one per cube face
+    std::vector<ShadowMapLayer> layers; // 1 (2D) or 6 (cube); empty without a map
+    double nearPlane = 0.0, farPlane = 0.0;  // farPlane may be +infinity
+    bool renderedThisFrame = false;     // false: the map was still right (served from the cache)
+    // The graph resource holding the map (FrameRequest::shadowMapSlots reads it back), and
+    // the graph passes that render it (their sum is the light's shadow time).
+    std::string mapResource;
+    std::vector<std::string> passes;
+};
+
+} // namespace engine
