@@ -77,7 +77,7 @@ nlohmann::json statsJson(const RenderOptions& options, const std::vector<double>
 }
 
 // Per shadowed light: the median time of its map passes and its errors against ray-traced
-// truth (DESIGN.md metrics, percent of the evaluation set), printed and returned for --stats.
+// truth (docs/metrics.md, percent of the evaluation set), printed and returned for --stats.
 nlohmann::json printLightErrors(engine::Renderer& renderer, const engine::Scene& scene,
                                 const engine::FrameCamera& camera,
                                 const std::map<std::string, PassSummary>& passes) {
