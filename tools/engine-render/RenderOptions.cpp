@@ -8,7 +8,9 @@
 
 const char* const kRenderUsage =
     "usage: engine-render --config CONFIG.json --scene SCENE.gltf|.glb --out OUT.png\n"
-    "  [--width W] [--height H] [--camera NAME]\n"
+    "       engine-render --scene SCENE.gltf|.glb --list   (its cameras and lights, numbered)\n"
+    "  [--width W] [--height H] [--camera NAME|NUMBER]\n"
+    "  (a light or camera is named by its name, its node's name, or its number in --list)\n"
     "  [--light NAME=VARIANT]... [--shadow-mask NAME=MASK.png]... [--shadow-map NAME=MAP.png]...\n"
     "  [--shadow-compare NAME=VIEW.png]...  (green: r agrees with the map, red: shadowed)\n"
     "  [--frames N] [--stats STATS.json] [--graph-dot GRAPH.dot]\n"
@@ -41,10 +43,11 @@ std::pair<std::string, std::string> parseAssignment(const std::string& flag,
 RenderOptions parseRenderOptions(int argc, char** argv) {
     RenderOptions options;
     bool sawScene = false, sawOut = false;
-    options.help = tools::parseFlags(argc, argv, {"--orbit-camera", "--truth"},
+    options.help = tools::parseFlags(argc, argv, {"--orbit-camera", "--truth", "--list"},
                                      [&](const std::string& flag, const std::string& value) {
         if (flag == "--orbit-camera") options.orbitCamera = true;
         else if (flag == "--truth") options.truth = true;
+        else if (flag == "--list") options.list = true;
         else if (flag == "--config") options.config = value;
         else if (flag == "--scene") { options.scene = value; sawScene = true; }
         else if (flag == "--out") { options.out = value; sawOut = true; }
@@ -70,6 +73,6 @@ RenderOptions parseRenderOptions(int argc, char** argv) {
     });
     if (options.help) return options;
     if (!sawScene) throw std::invalid_argument("--scene is required");
-    if (!sawOut) throw std::invalid_argument("--out is required");
+    if (!sawOut && !options.list) throw std::invalid_argument("--out is required");
     return options;
 }

@@ -13,6 +13,7 @@
 #include "engine/render/CameraSetup.h"
 #include "engine/render/Renderer.h"
 #include "engine/scene/SceneEdit.h"
+#include "engine/scene/SceneNames.h"
 #include "engine/util/Error.h"
 #include "engine/util/OutputFile.h"
 #include "engine/util/ProcessSetup.h"
@@ -31,9 +32,12 @@ double median(std::vector<double> values) {
     return values.size() % 2 ? values[mid] : 0.5 * (values[mid - 1] + values[mid]);
 }
 
+// The light a command-line word names (a name, else its number in --list).
 int lightSlot(const engine::Scene& scene, const std::string& sceneFile, const std::string& name) {
-    const int slot = scene.findLightInstance(name);
-    if (slot < 0) engine::throwInputError(sceneFile, "light \"" + name + "\"", "no such light in the scene");
+    const int slot = engine::findLightInstanceByNameOrNumber(scene, name);
+    if (slot < 0)
+        engine::throwInputError(sceneFile, "light \"" + name + "\"",
+                                "no such light (" + engine::describeLightInstances(scene) + ")");
     if (slot >= engine::kMaxLights)
         engine::throwInputError(sceneFile, "light \"" + name + "\"",
                                 "only the first " + std::to_string(engine::kMaxLights) +
@@ -127,12 +131,36 @@ void applySettingOverrides(engine::EngineConfig& config, const RenderOptions& op
     }
 }
 
+// --list: the scene's cameras and lights with the numbers and names the options accept.
+void printCamerasAndLights(const engine::Scene& scene, const std::string& sceneFile) {
+    std::printf("%s\n  cameras (--camera NAME or number; none: a framing camera)\n", sceneFile.c_str());
+    for (std::size_t i = 0; i < scene.cameraInstances.size(); ++i)
+        std::printf("  %4zu  %-28s %s\n", i + 1, engine::cameraInstanceName(scene, static_cast<int>(i)).c_str(),
+                    engine::toString(scene.cameras[scene.cameraInstances[i].camera].type));
+    std::printf("  lights (--light NAME=VARIANT and the other per-light options: name or number)\n");
+    for (std::size_t i = 0; i < scene.lightInstances.size(); ++i)
+        std::printf("  %4zu  %-28s %s\n", i + 1, engine::lightInstanceName(scene, static_cast<int>(i)).c_str(),
+                    engine::toString(scene.lights[scene.lightInstances[i].light].type));
+}
+
 // `context` and `host` live in main(), outside the try block that reports errors: an
 // exception thrown by plugin code must be read before the plugin is unloaded, and the
 // plugin's GL objects must be deleted while the context still exists (host first).
 int run(const RenderOptions& options, std::unique_ptr<engine::GlContext>& context,
         engine::PluginHost& host) {
     engine::tuneAllocatorForRendering();
+    std::vector<std::string> warnings;
+    engine::Scene scene = engine::loadGltf(options.scene, &warnings);
+    for (const std::string& warning : warnings) std::cerr << "warning: " << warning << "\n";
+    if (!options.keyLight.empty())
+        engine::addKeyLight(scene, options.keyLight == "spot"    ? engine::Light::Type::Spot
+                                   : options.keyLight == "point" ? engine::Light::Type::Point
+                                                                 : engine::Light::Type::Directional);
+    if (options.list) {
+        printCamerasAndLights(scene, options.scene);
+        return 0;
+    }
+
     engine::EngineConfig config = engine::loadEngineConfig(options.config);
     applySettingOverrides(config, options);
     context = engine::createEglContext();
@@ -141,22 +169,16 @@ int run(const RenderOptions& options, std::unique_ptr<engine::GlContext>& contex
     host.loadAll(config);
     const auto plugins = host.renderPlugins();
     for (const auto& [light, variant] : options.lightVariants) {
+        // Plugins know lights by the name the scene gives them, not by what was typed.
+        const std::string name = engine::lightInstanceName(scene, lightSlot(scene, options.scene, light));
         bool handled = false;
-        for (engine::RenderPlugin* plugin : plugins) handled = plugin->setLightOption(light, variant) || handled;
+        for (engine::RenderPlugin* plugin : plugins) handled = plugin->setLightOption(name, variant) || handled;
         if (!handled)
             throw engine::InputError("--light " + light + "=" + variant +
                                      ": no loaded plugin takes per-light options (config " +
                                      options.config + " loads " +
                                      std::to_string(plugins.size()) + " plugins)");
     }
-
-    std::vector<std::string> warnings;
-    engine::Scene scene = engine::loadGltf(options.scene, &warnings);
-    for (const std::string& warning : warnings) std::cerr << "warning: " << warning << "\n";
-    if (!options.keyLight.empty())
-        engine::addKeyLight(scene, options.keyLight == "spot"    ? engine::Light::Type::Spot
-                                   : options.keyLight == "point" ? engine::Light::Type::Point
-                                                                 : engine::Light::Type::Directional);
     const int orbitingLight =
         options.orbitLight.empty() ? -1 : scene.lightInstances[lightSlot(scene, options.scene, options.orbitLight)].node;
     const glm::dvec3 orbitCenter = scene.worldBounds.empty() ? glm::dvec3(0.0) : scene.worldBounds.center();
@@ -174,9 +196,10 @@ int run(const RenderOptions& options, std::unique_ptr<engine::GlContext>& contex
         request.comparisonSlots.push_back(lightSlot(scene, options.scene, light));
 
     // The shadow plugin publishes each light's map as "shadow_map_<light>" in the frame graph.
+    std::vector<std::string> mapNames;
     for (const auto& [light, file] : options.shadowMaps) {
-        lightSlot(scene, options.scene, light);  // the light must exist
-        request.depthReadbacks.push_back("shadow_map_" + light);
+        mapNames.push_back("shadow_map_" + engine::lightInstanceName(scene, lightSlot(scene, options.scene, light)));
+        request.depthReadbacks.push_back(mapNames.back());
     }
 
     std::vector<double> frameMs;
@@ -217,8 +240,9 @@ int run(const RenderOptions& options, std::unique_ptr<engine::GlContext>& contex
     for (std::size_t i = 0; i < options.comparisons.size(); ++i)
         engine::writePngAtomically(options.comparisons[i].second, options.width, options.height, 4,
                                    renderer.readComparison(request.comparisonSlots[i]));
-    for (const auto& [light, file] : options.shadowMaps) {
-        const auto found = last.depthReadbacks.find("shadow_map_" + light);
+    for (std::size_t i = 0; i < options.shadowMaps.size(); ++i) {
+        const auto& [light, file] = options.shadowMaps[i];
+        const auto found = last.depthReadbacks.find(mapNames[i]);
         if (found == last.depthReadbacks.end())
             throw engine::InputError("--shadow-map " + light + ": the light has no shadow map this frame "
                                      "(variant none, nothing in its frustum, or no shadow plugin)");

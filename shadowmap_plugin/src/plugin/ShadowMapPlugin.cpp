@@ -8,6 +8,7 @@
 
 #include "engine/render/Frame.h"
 #include "engine/scene/Scene.h"
+#include "engine/scene/SceneNames.h"
 #include "engine/util/Error.h"
 #include "engine/util/Hasher.h"
 
@@ -27,11 +28,6 @@ extern const char texgen_glsl[];
 namespace {
 
 constexpr int kFirstUnit = engine::kFirstPluginTextureUnit;
-
-std::string lightName(const engine::Scene& scene, const engine::LightInstance& placed) {
-    const std::string& name = scene.lights[placed.light].name;
-    return name.empty() ? scene.nodes[placed.node].name : name;
-}
 
 // Receivers the camera can see (only they need shadows this frame) and every caster.
 ShadowBounds frameBounds(const engine::Frame& frame) {
@@ -85,9 +81,15 @@ void ShadowMapPlugin::resolveLights(const engine::Scene& scene) {
     GLint maxTextureSize = 0;
     glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxTextureSize);
     glGetIntegerv(GL_MAX_TEXTURE_IMAGE_UNITS, &maxTextureUnits_);
-    for (const auto& [name, variant] : variantOverrides_)
-        if (scene.findLightInstance(name) < 0)
-            engine::throwInputError(source, "--light " + name, "no light of that name in the scene");
+    // Overrides name lights as engine-render resolved them (lightInstanceName).
+    for (const auto& [name, variant] : variantOverrides_) {
+        bool found = false;
+        for (std::size_t i = 0; i < scene.lightInstances.size() && !found; ++i)
+            found = engine::lightInstanceName(scene, static_cast<int>(i)) == name;
+        if (!found)
+            engine::throwInputError(source, "--light " + name,
+                                    "no light of that name in the scene (" + engine::describeLightInstances(scene) + ")");
+    }
 
     lights_.clear();
     scenePath_ = source;
@@ -110,7 +112,7 @@ void ShadowMapPlugin::resolveLights(const engine::Scene& scene) {
         const engine::LightInstance& placed = scene.lightInstances[slot];
         const engine::Light& light = scene.lights[placed.light];
         LightShadow shadow;
-        shadow.name = lightName(scene, placed);
+        shadow.name = engine::lightInstanceName(scene, static_cast<int>(slot));
         shadow.slot = static_cast<int>(slot);
         shadow.type = light.type;
         shadow.settings = defaults_;

@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <regex>
 
 namespace {
 
@@ -47,6 +48,21 @@ protected:
         for (auto& light : scene_["extensions"]["KHR_lights_punctual"]["lights"])
             if (light["name"] == name) return light;
         throw std::runtime_error("no light " + name);
+    }
+
+    // The node that places the light (camera) called `name`.
+    nlohmann::json& nodeNamed(const std::string& name) {
+        for (auto& node : scene_["nodes"])
+            if (node.value("name", "") == name) return node;
+        throw std::runtime_error("no node " + name);
+    }
+
+    // The entry of --stats' plugin report for one light.
+    nlohmann::json pluginLightStats(const std::string& name) {
+        const nlohmann::json all = stats();
+        for (const auto& entry : all["plugins"]["shadowmap"]["lights"])
+            if (entry["light"] == name) return entry;
+        throw std::runtime_error("no stats for light " + name + " in " + all.dump());
     }
 
     // Writes the (edited) scene and renders it small.
@@ -169,8 +185,56 @@ TEST_F(EngineRenderShadows, ConeAngleOutOfRangeIsRefused) {
 }
 
 TEST_F(EngineRenderShadows, CommandLineLightMustExistAndVariantMustBeKnown) {
-    expectError(render("--light nosuchlight=standard"), {"nosuchlight", "no light of that name"});
+    // The error lists the lights there are, numbered as --list numbers them.
+    expectError(render("--light nosuchlight=standard"),
+                {"light \"nosuchlight\"", "no such light", "the scene's lights: 1 spot_light, 2 sun, 3 point_light"});
+    expectError(render("--shadow-mask nosuchlight=" + (dir_ / "m.png").string()),
+                {"light \"nosuchlight\"", "the scene's lights: 1 spot_light"});
     expectError(render("--light sun=fuzzy"), {"sun=fuzzy", "unknown variant \"fuzzy\""});
+    expectError(render("--light 4=none"), {"light \"4\"", "no such light"});  // three lights
+}
+
+TEST_F(EngineRenderShadows, UnknownCameraListsTheCameras) {
+    expectError(render("--camera nosuchcamera"),
+                {"scene.gltf", "camera \"nosuchcamera\"", "no such camera", "the scene's cameras: 1 main_camera"});
+}
+
+// --list: what the options can name, and nothing rendered.
+TEST_F(EngineRenderShadows, ListPrintsCamerasAndLightsWithNumbersAndTypes) {
+    std::ofstream(dir_ / "scene.gltf") << scene_.dump();
+    const CommandResult result = runEngineRender("--scene " + (dir_ / "scene.gltf").string() + " --list");
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    for (const char* line : {"1 main_camera perspective", "1 spot_light spot", "2 sun directional", "3 point_light point"}) {
+        // One line per object: its number, name and type, separated by spaces.
+        std::string pattern = "(^|\n) *";
+        for (const char c : std::string(line)) pattern += c == ' ' ? std::string(" +") : std::string(1, c);
+        EXPECT_TRUE(std::regex_search(result.output, std::regex(pattern + "\n")))
+            << "missing \"" << line << "\" in:\n" << result.output;
+    }
+    EXPECT_FALSE(fs::exists(dir_ / "out.png"));
+}
+
+// glTF cameras and lights are often unnamed, their nodes too: the command line names them
+// by their number in --list, and the plugin reports them under "light N".
+TEST_F(EngineRenderShadows, UnnamedCameraAndLightAreChosenByNumber) {
+    scene_["cameras"][0].erase("name");
+    nodeNamed("main_camera").erase("name");
+    light("sun").erase("name");
+    nodeNamed("sun").erase("name");
+    const CommandResult result = render("--camera 1 --light 2=none");
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    EXPECT_EQ(pluginLightStats("light 2")["skip_reason"], "variant none");
+    EXPECT_TRUE(ranPass("shadow_spot_light"));
+    EXPECT_TRUE(ranPass("shadow_point_light"));
+}
+
+// The rule's other half: a name wins over a number, so a light called "1" is that light.
+TEST_F(EngineRenderShadows, ANameWinsOverANumber) {
+    light("point_light")["name"] = "1";
+    const CommandResult result = render("--light 1=none");
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    EXPECT_EQ(pluginLightStats("1")["skip_reason"], "variant none");
+    EXPECT_TRUE(ranPass("shadow_spot_light"));  // light number 1 keeps its shadow
 }
 
 TEST_F(EngineRenderShadows, MissingPluginLibraryIsNamed) {
