@@ -2,6 +2,7 @@
 
 #include "CommandLine.h"
 
+#include <cctype>
 #include <cerrno>
 #include <cstdlib>
 #include <stdexcept>
@@ -38,6 +39,23 @@ std::pair<std::string, std::string> parseAssignment(const std::string& flag,
     return {text.substr(0, equals), text.substr(equals + 1)};
 }
 
+// Every image engine-render writes is PNG (lossless: masks and maps are measured): a file
+// named otherwise would hold PNG bytes under a name that says something else.
+std::string pngPath(const std::string& flag, const std::string& path) {
+    const auto dot = path.rfind('.');
+    std::string extension = dot == std::string::npos || path.find('/', dot) != std::string::npos ? "" : path.substr(dot);
+    for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (extension != ".png")
+        throw std::invalid_argument(flag + " " + path + ": engine-render writes PNG only; name the file *.png");
+    return path;
+}
+
+std::pair<std::string, std::string> parsePngAssignment(const std::string& flag, const std::string& text) {
+    auto assignment = parseAssignment(flag, text);
+    pngPath(flag, assignment.second);
+    return assignment;
+}
+
 } // namespace
 
 RenderOptions parseRenderOptions(int argc, char** argv) {
@@ -50,14 +68,14 @@ RenderOptions parseRenderOptions(int argc, char** argv) {
         else if (flag == "--list") options.list = true;
         else if (flag == "--config") options.config = value;
         else if (flag == "--scene") { options.scene = value; sawScene = true; }
-        else if (flag == "--out") { options.out = value; sawOut = true; }
+        else if (flag == "--out") { options.out = pngPath(flag, value); sawOut = true; }
         else if (flag == "--width") options.width = parsePositive(flag, value, 16384);
         else if (flag == "--height") options.height = parsePositive(flag, value, 16384);
         else if (flag == "--camera") options.camera = value;
         else if (flag == "--light") options.lightVariants.push_back(parseAssignment(flag, value));
-        else if (flag == "--shadow-mask") options.shadowMasks.push_back(parseAssignment(flag, value));
-        else if (flag == "--shadow-map") options.shadowMaps.push_back(parseAssignment(flag, value));
-        else if (flag == "--shadow-compare") options.comparisons.push_back(parseAssignment(flag, value));
+        else if (flag == "--shadow-mask") options.shadowMasks.push_back(parsePngAssignment(flag, value));
+        else if (flag == "--shadow-map") options.shadowMaps.push_back(parsePngAssignment(flag, value));
+        else if (flag == "--shadow-compare") options.comparisons.push_back(parsePngAssignment(flag, value));
         else if (flag == "--frames") options.frames = parsePositive(flag, value, 100000);
         else if (flag == "--warmup") options.warmup = value == "0" ? 0 : parsePositive(flag, value, 1000);
         else if (flag == "--set") options.pluginSettings.push_back(parseAssignment(flag, value));

@@ -237,6 +237,22 @@ TEST_F(EngineRenderShadows, ANameWinsOverANumber) {
     EXPECT_TRUE(ranPass("shadow_spot_light"));  // light number 1 keeps its shadow
 }
 
+// engine-render writes PNG and nothing else: a file named .jpg would hold PNG bytes.
+TEST_F(EngineRenderShadows, AnImageNamedOtherThanPngIsRefused) {
+    std::ofstream(dir_ / "scene.gltf") << scene_.dump();
+    const std::string common = "--config " + std::string(CONTENT_DIR) + "/engine.json --scene " +
+                               (dir_ / "scene.gltf").string() + " --width 32 --height 32 ";
+    for (const std::string& bad : {"--out " + (dir_ / "out.jpg").string(),
+                                  "--out " + (dir_ / "out.png").string() + " --shadow-mask sun=" + (dir_ / "sun.bmp").string()}) {
+        const CommandResult result = runEngineRender(common + bad);
+        EXPECT_EQ(result.exitCode, 1) << bad << ": " << result.output;
+        EXPECT_NE(result.output.find("writes PNG only"), std::string::npos) << result.output;
+    }
+    EXPECT_FALSE(fs::exists(dir_ / "out.jpg"));
+    EXPECT_FALSE(fs::exists(dir_ / "out.png"));
+    EXPECT_EQ(runEngineRender(common + "--out " + (dir_ / "upper.PNG").string()).exitCode, 0);
+}
+
 TEST_F(EngineRenderShadows, MissingPluginLibraryIsNamed) {
     std::ofstream(dir_ / "bad.json") << R"({"plugins":[{"library":"no_such_shadow_plugin"}]})";
     const CommandResult result = runEngineRender("--config " + (dir_ / "bad.json").string() + " --scene " +
