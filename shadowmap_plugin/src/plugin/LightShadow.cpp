@@ -2,6 +2,10 @@
 
 #include <epoxy/gl.h>
 
+#include <charconv>
+#include <cstdlib>
+#include <string>
+
 namespace shadowmap {
 
 void LightShadow::ensureMap() {
@@ -24,6 +28,18 @@ void LightShadow::ensureMap() {
     map.setParameter(GL_TEXTURE_MAG_FILTER, filter);
 }
 
+namespace {
+
+// A float setting as the decimal it was written as: float 0.4 widened to double would read
+// 0.4000000059604645; its shortest float decimal reads 0.4.
+double asWritten(float value) {
+    char text[32];
+    const auto end = std::to_chars(text, text + sizeof text, value).ptr;
+    return std::strtod(std::string(text, end).c_str(), nullptr);
+}
+
+} // namespace
+
 nlohmann::json LightShadow::stats() const {
     nlohmann::json out{{"light", name},
                        {"slot", slot},
@@ -31,8 +47,9 @@ nlohmann::json LightShadow::stats() const {
                        {"resolution", settings.resolution},
                        {"depth_format", toString(settings.depthFormat)},
                        {"filter", toString(settings.filter)},
-                       {"polygon_offset", {settings.effectivePolygonOffset().x,
-                                           settings.effectivePolygonOffset().y}},
+                       {"polygon_offset", {asWritten(settings.effectivePolygonOffset().x),
+                                           asWritten(settings.effectivePolygonOffset().y)}},
+                       {"dimming", asWritten(settings.dimming)},
                        {"map", frame.kind == MapKind::None ? "none"
                                : frame.kind == MapKind::Cube ? "cube"
                                                              : "2d"},

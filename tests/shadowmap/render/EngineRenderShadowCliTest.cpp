@@ -253,6 +253,14 @@ TEST_F(EngineRenderShadows, AnImageNamedOtherThanPngIsRefused) {
     EXPECT_EQ(runEngineRender(common + "--out " + (dir_ / "upper.PNG").string()).exitCode, 0);
 }
 
+TEST_F(EngineRenderShadows, StatsReportEachLightsDimming) {
+    light("sun")["extras"]["shadow"]["dimming"] = 0.25;
+    const CommandResult result = render();
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    EXPECT_EQ(pluginLightStats("sun")["dimming"], 0.25);
+    EXPECT_EQ(pluginLightStats("spot_light")["dimming"], 0.4);  // the default, written as set
+}
+
 TEST_F(EngineRenderShadows, MissingPluginLibraryIsNamed) {
     std::ofstream(dir_ / "bad.json") << R"({"plugins":[{"library":"no_such_shadow_plugin"}]})";
     const CommandResult result = runEngineRender("--config " + (dir_ / "bad.json").string() + " --scene " +
