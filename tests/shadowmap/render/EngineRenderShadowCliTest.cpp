@@ -261,6 +261,13 @@ TEST_F(EngineRenderShadows, StatsReportEachLightsDimming) {
     EXPECT_EQ(pluginLightStats("spot_light")["dimming"], 0.4);  // the default, written as set
 }
 
+// One way to write numbers in messages: 5, not 5.000000.
+TEST_F(EngineRenderShadows, NumbersInMessagesAreWrittenAsPeopleWriteThem) {
+    light("spot_light")["extras"]["shadow"]["near_plane"] = 5;
+    light("spot_light")["extras"]["shadow"]["far_plane"] = 2.5;
+    expectError(render(), {"light \"spot_light\"", "far_plane", "must be beyond near_plane (5), got 2.5"});
+}
+
 TEST_F(EngineRenderShadows, MissingPluginLibraryIsNamed) {
     std::ofstream(dir_ / "bad.json") << R"({"plugins":[{"library":"no_such_shadow_plugin"}]})";
     const CommandResult result = runEngineRender("--config " + (dir_ / "bad.json").string() + " --scene " +
