@@ -12,6 +12,9 @@ packages=(
   # The scene generators (tools/scripts/*.py) and tools/engine-view/test/settings_round_trip.sh
   # run python3, which a minimal Debian 12 lacks.
   python3
+  # tools/check-markdown.sh (CTest Readme.*) renders the README with CommonMark's reference
+  # implementation.
+  cmark
   # glTF loader fuzzing (tools/fuzz/run.sh): clang, and libFuzzer's runtime
   # (libclang_rt.fuzzer-x86_64.a), which Debian 12 ships in libclang-rt-14-dev.
   clang libclang-rt-14-dev

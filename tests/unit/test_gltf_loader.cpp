@@ -292,6 +292,31 @@ TEST(GltfLoader, ReadsCastAndReceiveShadowExtras) {
     EXPECT_FALSE(scene.meshInstances[1].receiveShadows);
 }
 
+// Node extras are shared with other exporters: keys that are not ours load silently, but
+// one that reads like ours (a typo, another spelling) is reported with the node and the key
+// we read, since ignoring it silently would keep a shadow its author opted out of.
+TEST(GltfLoader, WarnsAboutNodeExtrasThatLookLikeOurShadowFlags) {
+    TempDir dir;
+    GltfBuilder b = quadScene();
+    b.doc["nodes"][0]["extras"] = {{"cast_shadow", false}, {"receiveShadows", false}, {"label", "not ours"},
+                                   {"shadow_color", "red"}};
+    std::vector<std::string> warnings;
+    const engine::Scene scene = engine::loadGltf(b.writeGltf(dir.path(), "typo"), &warnings);
+    std::vector<std::string> aboutExtras;
+    for (const std::string& warning : warnings)
+        if (warning.find("extras.") != std::string::npos) aboutExtras.push_back(warning);
+    const auto warned = [&](const std::string& text) {
+        return std::any_of(aboutExtras.begin(), aboutExtras.end(),
+                           [&](const std::string& warning) { return warning.find(text) != std::string::npos; });
+    };
+    EXPECT_EQ(aboutExtras.size(), 2u) << ::testing::PrintToString(aboutExtras);
+    EXPECT_TRUE(warned("typo.gltf: nodes[0] 'Quad': extras.cast_shadow is not read (did you mean \"cast_shadows\"?)"))
+        << ::testing::PrintToString(aboutExtras);
+    EXPECT_TRUE(warned("typo.gltf: nodes[0] 'Quad': extras.receiveShadows is not read (did you mean \"receive_shadows\"?)"))
+        << ::testing::PrintToString(aboutExtras);
+    EXPECT_TRUE(scene.meshInstances[0].castShadows);  // a warning, not a reading
+}
+
 TEST(GltfLoader, ReadsMaterialsAndDecodesTheBaseColorImage) {
     TempDir dir;
     GltfBuilder b = quadScene();

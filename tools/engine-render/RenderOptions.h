@@ -9,7 +9,7 @@ struct RenderOptions {
     std::string scene;
     std::string out;
     int width = 1280, height = 720;
-    std::string camera;                                       // empty: first glTF camera
+    std::string camera;  // a name, else a number from --list; empty: first glTF camera
     std::vector<std::pair<std::string, std::string>> lightVariants;  // --light NAME=VARIANT
     std::vector<std::pair<std::string, std::string>> shadowMasks;    // --shadow-mask NAME=FILE
     std::vector<std::pair<std::string, std::string>> shadowMaps;     // --shadow-map NAME=FILE
@@ -22,6 +22,7 @@ struct RenderOptions {
     std::string orbitLight;   // --orbit-light NAME: turn that light 2 degrees per frame
     bool orbitCamera = false; // --orbit-camera: turn the camera 2 degrees per frame
     bool truth = false;       // --truth: per-light error against ray-traced shadows
+    bool list = false;        // --list: print the scene's cameras and lights, render nothing
     std::string stats;      // JSON
     std::string graphDot;   // graphviz of the last frame's compiled graph
     bool help = false;

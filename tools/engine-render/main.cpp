@@ -13,6 +13,7 @@
 #include "engine/render/CameraSetup.h"
 #include "engine/render/Renderer.h"
 #include "engine/scene/SceneEdit.h"
+#include "engine/scene/SceneNames.h"
 #include "engine/util/Error.h"
 #include "engine/util/OutputFile.h"
 #include "engine/util/ProcessSetup.h"
@@ -31,9 +32,26 @@ double median(std::vector<double> values) {
     return values.size() % 2 ? values[mid] : 0.5 * (values[mid - 1] + values[mid]);
 }
 
-int lightSlot(const engine::Scene& scene, const std::string& sceneFile, const std::string& name) {
-    const int slot = scene.findLightInstance(name);
-    if (slot < 0) engine::throwInputError(sceneFile, "light \"" + name + "\"", "no such light in the scene");
+// The light a command-line word names (a name, else its number in --list).
+// The light instance a command-line word means. A name that several instances share (one
+// light placed by two nodes, or a repeated name) is refused with their numbers, unless the
+// option applies to all of them (`sharedNameSelectsAll`: --light sets every such instance).
+int lightSlot(const engine::Scene& scene, const std::string& sceneFile, const std::string& name,
+              bool sharedNameSelectsAll = false) {
+    const int slot = engine::findLightInstanceByNameOrNumber(scene, name);
+    if (slot < 0)
+        engine::throwInputError(sceneFile, "light \"" + name + "\"",
+                                "no such light (" + engine::describeLightInstances(scene) + ")");
+    std::string sharing;
+    int shared = 0;
+    for (int i = 0; i < static_cast<int>(scene.lightInstances.size()); ++i)
+        if (engine::lightInstanceName(scene, i) == name) {
+            sharing += (shared++ ? ", " : "") + std::to_string(i + 1);
+        }
+    if (shared > 1 && !sharedNameSelectsAll)
+        engine::throwInputError(sceneFile, "light \"" + name + "\"",
+                                "names " + std::to_string(shared) + " light instances (numbers " + sharing +
+                                    "): choose one by its number (--list)");
     if (slot >= engine::kMaxLights)
         engine::throwInputError(sceneFile, "light \"" + name + "\"",
                                 "only the first " + std::to_string(engine::kMaxLights) +
@@ -77,7 +95,7 @@ nlohmann::json statsJson(const RenderOptions& options, const std::vector<double>
 }
 
 // Per shadowed light: the median time of its map passes and its errors against ray-traced
-// truth (DESIGN.md metrics, percent of the evaluation set), printed and returned for --stats.
+// truth (docs/metrics.md, percent of the evaluation set), printed and returned for --stats.
 nlohmann::json printLightErrors(engine::Renderer& renderer, const engine::Scene& scene,
                                 const engine::FrameCamera& camera,
                                 const std::map<std::string, PassSummary>& passes) {
@@ -127,12 +145,36 @@ void applySettingOverrides(engine::EngineConfig& config, const RenderOptions& op
     }
 }
 
+// --list: the scene's cameras and lights with the numbers and names the options accept.
+void printCamerasAndLights(const engine::Scene& scene, const std::string& sceneFile) {
+    std::printf("%s\n  cameras (--camera NAME or number; none: a framing camera)\n", sceneFile.c_str());
+    for (std::size_t i = 0; i < scene.cameraInstances.size(); ++i)
+        std::printf("  %4zu  %-28s %s\n", i + 1, engine::cameraInstanceName(scene, static_cast<int>(i)).c_str(),
+                    engine::toString(scene.cameras[scene.cameraInstances[i].camera].type));
+    std::printf("  lights (--light NAME=VARIANT and the other per-light options: name or number)\n");
+    for (std::size_t i = 0; i < scene.lightInstances.size(); ++i)
+        std::printf("  %4zu  %-28s %s\n", i + 1, engine::lightInstanceName(scene, static_cast<int>(i)).c_str(),
+                    engine::toString(scene.lights[scene.lightInstances[i].light].type));
+}
+
 // `context` and `host` live in main(), outside the try block that reports errors: an
 // exception thrown by plugin code must be read before the plugin is unloaded, and the
 // plugin's GL objects must be deleted while the context still exists (host first).
 int run(const RenderOptions& options, std::unique_ptr<engine::GlContext>& context,
         engine::PluginHost& host) {
     engine::tuneAllocatorForRendering();
+    std::vector<std::string> warnings;
+    engine::Scene scene = engine::loadGltf(options.scene, &warnings);
+    for (const std::string& warning : warnings) std::cerr << "warning: " << warning << "\n";
+    if (!options.keyLight.empty())
+        engine::addKeyLight(scene, options.keyLight == "spot"    ? engine::Light::Type::Spot
+                                   : options.keyLight == "point" ? engine::Light::Type::Point
+                                                                 : engine::Light::Type::Directional);
+    if (options.list) {
+        printCamerasAndLights(scene, options.scene);
+        return 0;
+    }
+
     engine::EngineConfig config = engine::loadEngineConfig(options.config);
     applySettingOverrides(config, options);
     context = engine::createEglContext();
@@ -141,22 +183,16 @@ int run(const RenderOptions& options, std::unique_ptr<engine::GlContext>& contex
     host.loadAll(config);
     const auto plugins = host.renderPlugins();
     for (const auto& [light, variant] : options.lightVariants) {
+        // Plugins know lights by the name the scene gives them, not by what was typed.
+        const std::string name = engine::lightInstanceName(scene, lightSlot(scene, options.scene, light, true));
         bool handled = false;
-        for (engine::RenderPlugin* plugin : plugins) handled = plugin->setLightOption(light, variant) || handled;
+        for (engine::RenderPlugin* plugin : plugins) handled = plugin->setLightOption(name, variant) || handled;
         if (!handled)
             throw engine::InputError("--light " + light + "=" + variant +
                                      ": no loaded plugin takes per-light options (config " +
                                      options.config + " loads " +
                                      std::to_string(plugins.size()) + " plugins)");
     }
-
-    std::vector<std::string> warnings;
-    engine::Scene scene = engine::loadGltf(options.scene, &warnings);
-    for (const std::string& warning : warnings) std::cerr << "warning: " << warning << "\n";
-    if (!options.keyLight.empty())
-        engine::addKeyLight(scene, options.keyLight == "spot"    ? engine::Light::Type::Spot
-                                   : options.keyLight == "point" ? engine::Light::Type::Point
-                                                                 : engine::Light::Type::Directional);
     const int orbitingLight =
         options.orbitLight.empty() ? -1 : scene.lightInstances[lightSlot(scene, options.scene, options.orbitLight)].node;
     const glm::dvec3 orbitCenter = scene.worldBounds.empty() ? glm::dvec3(0.0) : scene.worldBounds.center();

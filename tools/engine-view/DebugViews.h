@@ -15,7 +15,7 @@
 //   shadow      the light's shadow term alone (FrameRequest::shadowMaskSlots), gray;
 //   truth       the shaded image with acne (false shadow, red) and leak (false light, blue)
 //               against Embree shadow rays from every pixel's surface point, weighted by
-//               how wrong the shade is; rates of DESIGN.md's metrics in the notes. The ray
+//               how wrong the shade is; rates of the metrics (docs/metrics.md) in the notes. The ray
 //               tracing (~0.1 s) runs only when the camera, size or light changed.
 #include "Image.h"
 #include "ViewerState.h"

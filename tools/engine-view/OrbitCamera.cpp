@@ -1,6 +1,7 @@
 #include "OrbitCamera.h"
 
 #include "engine/render/CameraSetup.h"
+#include "engine/scene/SceneNames.h"
 #include "engine/util/Error.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -27,9 +28,10 @@ glm::dvec3 sceneCenter(const engine::Scene& scene) {
 OrbitCamera::OrbitCamera(const engine::Scene& scene, const std::string& sceneFile, const std::string& name)
     : scene_(scene) {
     if (!name.empty()) {
-        instance_ = scene.findCameraInstance(name);
+        instance_ = engine::findCameraInstanceByNameOrNumber(scene, name);
         if (instance_ < 0)
-            engine::throwInputError(sceneFile, "camera \"" + name + "\"", "no such camera in the scene");
+            engine::throwInputError(sceneFile, "camera \"" + name + "\"",
+                                    "no such camera (" + engine::describeCameraInstances(scene) + ")");
     } else {
         instance_ = scene.cameraInstances.empty() ? -1 : 0;
     }

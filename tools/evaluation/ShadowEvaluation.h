@@ -2,7 +2,7 @@
 // Time and error of every shadowed light of one view, as the main job, the bench and the
 // stress tool report them: frames rendered with per-pass timing (each pass closed by
 // glFinish), then one more frame with every light's shadow mask, compared with the
-// ray-traced truth (truth/RayTracedVisibility.h) on DESIGN.md's evaluation set.
+// ray-traced truth (truth/RayTracedVisibility.h) on the evaluation set of docs/metrics.md.
 #include "truth/RayTracedVisibility.h"
 #include "truth/ShadowMetrics.h"
 #include "truth/SurfaceCapture.h"

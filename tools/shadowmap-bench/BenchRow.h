@@ -21,6 +21,6 @@ struct BenchRow {
     ShadowSetting setting;
     double shadowMs = 0.0;  // median wall time of the light's shadow passes
     double frameMs = 0.0;   // median wall time of the whole frame (all lights)
-    // Percent of the evaluation set (DESIGN.md "Error metrics").
+    // Percent of the evaluation set (docs/metrics.md).
     double acne = 0.0, leak = 0.0, error = 0.0, errorNoEdge = 0.0;
 };

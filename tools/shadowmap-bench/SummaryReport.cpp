@@ -82,7 +82,7 @@ std::string summaryMarkdown(const std::vector<BenchRow>& rows, const SweepDescri
     text += " timed frame(s) per setting, each setting applied to every light of the scene. "
             "Shadow ms: median wall time of the light's shadow passes, each closed by glFinish. "
             "Errors: percent of the light's evaluation set against Embree ray-traced shadows "
-            "(DESIGN.md \"Error metrics\"); \"off edges\" leaves out pixels within 1 px of a true shadow edge.\n\n";
+            "(docs/metrics.md); \"off edges\" leaves out pixels within 1 px of a true shadow edge.\n\n";
     text += concat({"Machine: ", sweep.cpuModel, ", ", std::to_string(sweep.cores), " cores; ", sweep.glRenderer,
                     ", ", sweep.glVersion, ". Sweep wall time: ", format("%.0f", sweep.seconds), " s.\n\n"});
     text += "Most accurate setting (error %) within each budget of shadow time per frame:\n\n";

@@ -225,7 +225,7 @@ void writeSummary(const std::filesystem::path& path, const RunInfo& info, const 
     out << "- GL: " << info.glRenderer << "\n";
     out << "- view " << info.width << "x" << info.height << ", shadow maps " << info.resolution
         << "² (PCF 2x2), " << rows.size() << " cases in " << fixed(info.seconds, 1) << " s\n";
-    out << "- errors: percent of the evaluation set (DESIGN.md \"Error metrics\", Embree truth); "
+    out << "- errors: percent of the evaluation set (docs/metrics.md, Embree truth); "
            "tables show `error (error without edge pixels)`\n";
     out << "- result: " << (failed ? std::to_string(failed) + " bound(s) FAILED" : std::string("all bounds hold"))
         << "\n\n";

@@ -1,5 +1,5 @@
 #pragma once
-// RayTracedVisibility: the shadow ground truth of DESIGN.md "Error metrics". For every
+// RayTracedVisibility: the shadow ground truth of docs/metrics.md. For every
 // covered pixel of a SurfaceBuffer, one shadow ray (Embree 3) from the surface point to the
 // light: 1 = the light is visible there, 0 = something blocks it.
 //
@@ -60,7 +60,7 @@ private:
 std::vector<std::uint8_t> visibility(const engine::Scene& scene, int lightInstance,
                                      const SurfaceBuffer& surfaces);
 
-// The evaluation set E of DESIGN.md for light `lightInstance`, per pixel (1 = in E):
+// The evaluation set E of docs/metrics.md for light `lightInstance`, per pixel (1 = in E):
 // covered pixels of a shadow-receiving surface (node and primitive), inside the light's cone (spot: angle to the
 // axis <= outer cone angle; point, directional: everywhere), within range (range > 0; not
 // for directional lights), whose surface faces the light (geometric N.L > 0).

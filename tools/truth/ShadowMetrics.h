@@ -1,5 +1,5 @@
 #pragma once
-// The shadow error metrics of DESIGN.md "Error metrics", as fractions of |E| (the bench
+// The shadow error metrics of docs/metrics.md, as fractions of |E| (the bench
 // prints percent). Pure CPU, no GL, no Embree.
 //
 //   acne  (false shadow) = sum over E with truth lit      of (1 - shade) / |E|

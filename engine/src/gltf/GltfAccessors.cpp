@@ -123,7 +123,7 @@ std::vector<float> readFloatComponents(const LoadContext& context, const tinyglt
             if (!std::isfinite(value))
                 context.fail(indexed("accessors", accessorIndex),
                              "used as " + use.usedAs + ", element " + std::to_string(element) + " holds " +
-                                 std::to_string(value) + ", not a finite number");
+                                 formatNumber(value) + ", not a finite number");
             values[element * components + c] = value;
         }
     });

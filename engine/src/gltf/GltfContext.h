@@ -3,6 +3,7 @@
 // folder (the only place URIs may point into), the limits, and where warnings go.
 #include "engine/gltf/GltfLoader.h"
 #include "engine/util/Error.h"
+#include "engine/util/FormatNumber.h"
 
 #include <cstddef>
 #include <cstdio>
@@ -41,11 +42,6 @@ inline std::string indexedNamed(std::string_view array, std::size_t index, const
     return withName(indexed(array, index), name);
 }
 
-// Numbers in messages as people write them: 0.5, 2, -1, 1e+30 (not 0.500000).
-inline std::string formatNumber(double value) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.9g", value);
-    return text;
-}
+using engine::formatNumber;  // numbers in messages: engine/util/FormatNumber.h
 
 } // namespace engine::gltf

@@ -9,6 +9,10 @@
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include <algorithm>
+#include <cctype>
+#include <vector>
+
 namespace engine::gltf {
 
 namespace {
@@ -29,17 +33,54 @@ glm::dmat4 localTransform(const tinygltf::Node& node) {
     return local;
 }
 
-// Node extras "cast_shadows" / "receive_shadows" (DESIGN.md): booleans, default true.
+// Lower case without '_', '-' or spaces: "Cast-Shadows" and "castShadows" read alike.
+std::string foldKey(const std::string& key) {
+    std::string folded;
+    for (const char c : key)
+        if (c != '_' && c != '-' && c != ' ') folded += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return folded;
+}
+
+// Levenshtein distance (insertions, deletions, substitutions), one row at a time.
+std::size_t editDistance(const std::string& a, const std::string& b) {
+    std::vector<std::size_t> row(b.size() + 1);
+    for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+    for (std::size_t i = 1; i <= a.size(); ++i) {
+        std::size_t diagonal = row[0];
+        row[0] = i;
+        for (std::size_t j = 1; j <= b.size(); ++j) {
+            const std::size_t above = row[j];
+            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+            diagonal = above;
+        }
+    }
+    return row[b.size()];
+}
+
+// Node extras "cast_shadows" / "receive_shadows": booleans (any other value is an error),
+// default true. Node extras are shared with every exporter (Blender's custom properties,
+// three.js userData), so other keys are not ours to refuse; but a key that reads like one
+// of ours (a typo such as "cast_shadow", or "castShadows") is almost surely meant as ours,
+// and ignoring it would silently shadow what the author opted out: a warning names the
+// node, the key and the one we read.
 void readShadowFlags(const LoadContext& context, const tinygltf::Node& source, const std::string& object, Node& node) {
     if (!source.extras.IsObject()) return;
+    static constexpr const char* kOurs[] = {"cast_shadows", "receive_shadows"};
     const auto flag = [&](const char* key, bool& target) {
         if (!source.extras.Has(key)) return;
         const tinygltf::Value& value = source.extras.Get(key);
         if (!value.IsBool()) context.fail(object, std::string("extras.") + key + " is not a boolean");
         target = value.Get<bool>();
     };
-    flag("cast_shadows", node.castShadows);
-    flag("receive_shadows", node.receiveShadows);
+    flag(kOurs[0], node.castShadows);
+    flag(kOurs[1], node.receiveShadows);
+    for (const std::string& key : source.extras.Keys()) {
+        if (key == kOurs[0] || key == kOurs[1]) continue;
+        for (const char* ours : kOurs)
+            // Two edits on the folded key: a dropped or doubled letter, a swapped pair.
+            if (editDistance(foldKey(key), foldKey(ours)) <= 2)
+                context.warn(object, "extras." + key + " is not read (did you mean \"" + ours + "\"?)");
+    }
 }
 
 std::vector<Node> convertNodes(const LoadContext& context, const tinygltf::Model& model) {

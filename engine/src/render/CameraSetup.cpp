@@ -1,5 +1,6 @@
 #include "engine/render/CameraSetup.h"
 
+#include "engine/scene/SceneNames.h"
 #include "engine/util/Error.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -55,8 +56,9 @@ FrameCamera chooseCamera(const Scene& scene, const std::string& name, int width,
                          const std::string& sceneFile) {
     int instance = scene.cameraInstances.empty() ? -1 : 0;
     if (!name.empty()) {
-        instance = scene.findCameraInstance(name);
-        if (instance < 0) throwInputError(sceneFile, "camera \"" + name + "\"", "no such camera in the scene");
+        instance = findCameraInstanceByNameOrNumber(scene, name);
+        if (instance < 0)
+            throwInputError(sceneFile, "camera \"" + name + "\"", "no such camera (" + describeCameraInstances(scene) + ")");
     }
     return instance < 0 ? framingCamera(scene, width, height)
                         : cameraFromScene(scene, instance, width, height);

@@ -1,13 +1,13 @@
 #include "math/LightFrustum.h"
 
 #include "engine/scene/FrustumCull.h"
+#include "engine/util/FormatNumber.h"
 #include "math/Texgen.h"
 
 #include <algorithm>
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 #include <limits>
-#include <sstream>
 
 namespace shadowmap {
 namespace {
@@ -95,9 +95,8 @@ bool pyramidDepthRange(const std::array<glm::dvec3, 8>& c, double k, bool apexIn
 }
 
 std::string describe(const char* what, const glm::dvec3& v) {
-    std::ostringstream s;
-    s << what << " (" << v.x << ", " << v.y << ", " << v.z << ")";
-    return s.str();
+    return std::string(what) + " (" + engine::formatNumber(v.x) + ", " + engine::formatNumber(v.y) + ", " +
+           engine::formatNumber(v.z) + ")";
 }
 
 // The light's -Z in world space from its node matrix; empty string when usable.
@@ -126,11 +125,9 @@ void checkFinite(LightView& v) {
         v.valid = true;
         return;
     }
-    std::ostringstream s;
-    s << "fitted light frustum is degenerate (near " << v.nearPlane << ", far " << v.farPlane
-      << ")";
     v.valid = false;
-    v.invalidReason = s.str();
+    v.invalidReason = "fitted light frustum is degenerate (near " + engine::formatNumber(v.nearPlane) + ", far " +
+                      engine::formatNumber(v.farPlane) + ")";
 }
 
 // Perspective near/far from receiver and caster depth ranges. Returns false when no
@@ -304,11 +301,9 @@ LightView fitSpotLight(const engine::LightInstance& instance, const engine::Ligh
     v.reversedZ = opt.reversedZ;
     const double half = std::min(light.outerConeAngle, opt.maxSpotHalfAngle);
     if (light.outerConeAngle > opt.maxSpotHalfAngle) {
-        std::ostringstream s;
-        s << "spot outer cone angle " << light.outerConeAngle * 57.29577951308232
-          << " deg clamped to " << opt.maxSpotHalfAngle * 57.29577951308232
-          << " deg for its shadow map (a perspective map needs < 90 deg)";
-        v.clampWarning = s.str();
+        v.clampWarning = "spot outer cone angle " + engine::formatNumber(light.outerConeAngle * 57.29577951308232) +
+                         " deg clamped to " + engine::formatNumber(opt.maxSpotHalfAngle * 57.29577951308232) +
+                         " deg for its shadow map (a perspective map needs < 90 deg)";
     }
     const double k = std::tan(half);
     v.lightToWorld = lightToWorldFromDirection(position, direction);

@@ -18,7 +18,7 @@ struct DepthPassStyle {
     // turned away from the light, for casters that are closed; open ones are drawn with
     // both faces (and openCasterOffset) so their shadow stays right.
     bool backFacesOnly = false;
-    glm::vec2 polygonOffset{0.0f};      // for every draw (standard), or none
+    glm::vec2 polygonOffset{0.0f};      // for every draw (standard; both woo passes), or none
     glm::vec2 openCasterOffset{0.0f};   // backface: the offset for two-sided open casters
     const std::vector<bool>* closedMeshes = nullptr;  // backface: per Scene::meshes
     // Woo pass 2: the nearest-layer depth to peel against (0: not peeling). A 2D texture,

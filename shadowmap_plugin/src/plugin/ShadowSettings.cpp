@@ -1,6 +1,7 @@
 #include "plugin/ShadowSettings.h"
 
 #include "engine/util/Error.h"
+#include "engine/util/FormatNumber.h"
 #include "engine/util/JsonRead.h"
 
 #include <epoxy/gl.h>
@@ -131,8 +132,8 @@ void checkLimits(const ShadowSettings& settings, int maxTextureSize, const std::
                                     "\" (fixed-point depth gains nothing from the reversal)");
     if (settings.nearPlane > 0.0 && settings.farPlane > 0.0 && !(settings.farPlane > settings.nearPlane))
         engine::throwInputError(source, object + ".far_plane",
-                                "must be beyond near_plane (" + std::to_string(settings.nearPlane) +
-                                    "), got " + std::to_string(settings.farPlane));
+                                "must be beyond near_plane (" + engine::formatNumber(settings.nearPlane) +
+                                    "), got " + engine::formatNumber(settings.farPlane));
 }
 
 unsigned glInternalFormat(DepthFormat format) {

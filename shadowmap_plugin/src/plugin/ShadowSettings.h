@@ -15,7 +15,9 @@
 //                                                              nearest, [2.0, 8.0] pcf;
 //                                                              woo, backface: none
 // woo and backface need no tuned offset (that is their point); backface still draws open
-// casters two-sided, with the standard offset.
+// casters two-sided, with the standard offset. An explicit offset on woo applies to both
+// of its passes alike (the peel compares them): on the showcase it lowered woo's error
+// (sun at 2048: 0.079% without, 0.034% with [2, 8]; at 512: 0.264%, 0.135% with [1, 2]).
 // The default offset departs from the seeds' (1, 4), for measured reasons:
 //  - units 8, not 4: the comparison's reference r/q is computed in float32, whose spacing
 //    near depth 1 is 2^-24, one d24 unit; with 4 units a floor facing a spot light head-on

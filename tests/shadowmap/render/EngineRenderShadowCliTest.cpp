@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <regex>
 
 namespace {
 
@@ -49,6 +50,21 @@ protected:
         throw std::runtime_error("no light " + name);
     }
 
+    // The node that places the light (camera) called `name`.
+    nlohmann::json& nodeNamed(const std::string& name) {
+        for (auto& node : scene_["nodes"])
+            if (node.value("name", "") == name) return node;
+        throw std::runtime_error("no node " + name);
+    }
+
+    // The entry of --stats' plugin report for one light.
+    nlohmann::json pluginLightStats(const std::string& name) {
+        const nlohmann::json all = stats();
+        for (const auto& entry : all["plugins"]["shadowmap"]["lights"])
+            if (entry["light"] == name) return entry;
+        throw std::runtime_error("no stats for light " + name + " in " + all.dump());
+    }
+
     // Writes the (edited) scene and renders it small.
     CommandResult render(const std::string& extra = "", const std::string& config = "engine.json") {
         std::ofstream(dir_ / "scene.gltf") << scene_.dump();
@@ -87,9 +103,9 @@ protected:
 TEST_F(EngineRenderShadows, EveryLightTypeGetsItsDepthPass) {
     const CommandResult result = render();
     ASSERT_EQ(result.exitCode, 0) << result.output;
-    EXPECT_TRUE(ranPass("shadow_spot_light"));
-    EXPECT_TRUE(ranPass("shadow_sun"));
-    EXPECT_TRUE(ranPass("shadow_point_light"));
+    EXPECT_TRUE(ranPass("shadow_0_spot_light"));
+    EXPECT_TRUE(ranPass("shadow_1_sun"));
+    EXPECT_TRUE(ranPass("shadow_2_point_light"));
     int width = 0, height = 0;
     EXPECT_EQ(engine::readPng(dir_ / "out.png", 4, width, height).size(), 96u * 64u * 4u);
 }
@@ -98,9 +114,9 @@ TEST_F(EngineRenderShadows, VariantNoneCostsNoPassFromGltfAndFromTheCommandLine)
     light("sun")["extras"]["shadow"]["variant"] = "none";
     const CommandResult result = render("--light point_light=none");
     ASSERT_EQ(result.exitCode, 0) << result.output;
-    EXPECT_TRUE(ranPass("shadow_spot_light"));
-    EXPECT_FALSE(ranPass("shadow_sun"));
-    EXPECT_FALSE(ranPass("shadow_point_light"));
+    EXPECT_TRUE(ranPass("shadow_0_spot_light"));
+    EXPECT_FALSE(ranPass("shadow_1_sun"));
+    EXPECT_FALSE(ranPass("shadow_2_point_light"));
     const nlohmann::json all = stats();
     for (const auto& entry : all["plugins"]["shadowmap"]["lights"])
         if (entry["light"] != "spot_light") {
@@ -169,8 +185,87 @@ TEST_F(EngineRenderShadows, ConeAngleOutOfRangeIsRefused) {
 }
 
 TEST_F(EngineRenderShadows, CommandLineLightMustExistAndVariantMustBeKnown) {
-    expectError(render("--light nosuchlight=standard"), {"nosuchlight", "no light of that name"});
+    // The error lists the lights there are, numbered as --list numbers them.
+    expectError(render("--light nosuchlight=standard"),
+                {"light \"nosuchlight\"", "no such light", "the scene's lights: 1 spot_light, 2 sun, 3 point_light"});
+    expectError(render("--shadow-mask nosuchlight=" + (dir_ / "m.png").string()),
+                {"light \"nosuchlight\"", "the scene's lights: 1 spot_light"});
     expectError(render("--light sun=fuzzy"), {"sun=fuzzy", "unknown variant \"fuzzy\""});
+    expectError(render("--light 4=none"), {"light \"4\"", "no such light"});  // three lights
+}
+
+TEST_F(EngineRenderShadows, UnknownCameraListsTheCameras) {
+    expectError(render("--camera nosuchcamera"),
+                {"scene.gltf", "camera \"nosuchcamera\"", "no such camera", "the scene's cameras: 1 main_camera"});
+}
+
+// --list: what the options can name, and nothing rendered.
+TEST_F(EngineRenderShadows, ListPrintsCamerasAndLightsWithNumbersAndTypes) {
+    std::ofstream(dir_ / "scene.gltf") << scene_.dump();
+    const CommandResult result = runEngineRender("--scene " + (dir_ / "scene.gltf").string() + " --list");
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    for (const char* line : {"1 main_camera perspective", "1 spot_light spot", "2 sun directional", "3 point_light point"}) {
+        // One line per object: its number, name and type, separated by spaces.
+        std::string pattern = "(^|\n) *";
+        for (const char c : std::string(line)) pattern += c == ' ' ? std::string(" +") : std::string(1, c);
+        EXPECT_TRUE(std::regex_search(result.output, std::regex(pattern + "\n")))
+            << "missing \"" << line << "\" in:\n" << result.output;
+    }
+    EXPECT_FALSE(fs::exists(dir_ / "out.png"));
+}
+
+// glTF cameras and lights are often unnamed, their nodes too: the command line names them
+// by their number in --list, and the plugin reports them under "light N".
+TEST_F(EngineRenderShadows, UnnamedCameraAndLightAreChosenByNumber) {
+    scene_["cameras"][0].erase("name");
+    nodeNamed("main_camera").erase("name");
+    light("sun").erase("name");
+    nodeNamed("sun").erase("name");
+    const CommandResult result = render("--camera 1 --light 2=none");
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    EXPECT_EQ(pluginLightStats("light 2")["skip_reason"], "variant none");
+    EXPECT_TRUE(ranPass("shadow_0_spot_light"));
+    EXPECT_TRUE(ranPass("shadow_2_point_light"));
+}
+
+// The rule's other half: a name wins over a number, so a light called "1" is that light.
+TEST_F(EngineRenderShadows, ANameWinsOverANumber) {
+    light("point_light")["name"] = "1";
+    const CommandResult result = render("--light 1=none");
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    EXPECT_EQ(pluginLightStats("1")["skip_reason"], "variant none");
+    EXPECT_TRUE(ranPass("shadow_0_spot_light"));  // light number 1 keeps its shadow
+}
+
+// engine-render writes PNG and nothing else: a file named .jpg would hold PNG bytes.
+TEST_F(EngineRenderShadows, AnImageNamedOtherThanPngIsRefused) {
+    std::ofstream(dir_ / "scene.gltf") << scene_.dump();
+    const std::string common = "--config " + std::string(CONTENT_DIR) + "/engine.json --scene " +
+                               (dir_ / "scene.gltf").string() + " --width 32 --height 32 ";
+    for (const std::string& bad : {"--out " + (dir_ / "out.jpg").string(),
+                                  "--out " + (dir_ / "out.png").string() + " --shadow-mask sun=" + (dir_ / "sun.bmp").string()}) {
+        const CommandResult result = runEngineRender(common + bad);
+        EXPECT_EQ(result.exitCode, 1) << bad << ": " << result.output;
+        EXPECT_NE(result.output.find("writes PNG only"), std::string::npos) << result.output;
+    }
+    EXPECT_FALSE(fs::exists(dir_ / "out.jpg"));
+    EXPECT_FALSE(fs::exists(dir_ / "out.png"));
+    EXPECT_EQ(runEngineRender(common + "--out " + (dir_ / "upper.PNG").string()).exitCode, 0);
+}
+
+TEST_F(EngineRenderShadows, StatsReportEachLightsDimming) {
+    light("sun")["extras"]["shadow"]["dimming"] = 0.25;
+    const CommandResult result = render();
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    EXPECT_EQ(pluginLightStats("sun")["dimming"], 0.25);
+    EXPECT_EQ(pluginLightStats("spot_light")["dimming"], 0.4);  // the default, written as set
+}
+
+// One way to write numbers in messages: 5, not 5.000000.
+TEST_F(EngineRenderShadows, NumbersInMessagesAreWrittenAsPeopleWriteThem) {
+    light("spot_light")["extras"]["shadow"]["near_plane"] = 5;
+    light("spot_light")["extras"]["shadow"]["far_plane"] = 2.5;
+    expectError(render(), {"light \"spot_light\"", "far_plane", "must be beyond near_plane (5), got 2.5"});
 }
 
 TEST_F(EngineRenderShadows, MissingPluginLibraryIsNamed) {
@@ -202,6 +297,46 @@ TEST_F(EngineRenderShadows, TruthReportsTimeAndErrorPerShadowedLight) {
     EXPECT_EQ(all["lights"][1]["variant"], "woo");
 }
 
+// Lights are light instances (node + light), names only for people: one light placed by two
+// nodes, and lights and nodes without names, render with every instance shadowed and scored
+// (refused before: "resource 'shadow_map_spot_light' already imported"), within the bound
+// that distinct lights hold below (error <= 0.25 % at 320x180 with 2048 maps).
+TEST_F(EngineRenderShadows, OneLightPlacedByTwoNodesIsTwoShadowedInstances) {
+    light("spot_light")["extras"]["shadow"]["resolution"] = 2048;
+    nodeNamed("point_light")["extensions"]["KHR_lights_punctual"]["light"] = 0;  // the spot, placed again
+    const CommandResult result = render("--width 320 --height 180 --truth");
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    const nlohmann::json all = stats();
+    ASSERT_EQ(all["lights"].size(), 3u) << all.dump();
+    std::vector<int> spotSlots;
+    for (const auto& entry : all["lights"]) {
+        EXPECT_GT(entry["evaluated_pixels"].get<int>(), 1000) << entry;
+        EXPECT_LE(entry["error"].get<double>(), 0.25) << entry;
+        if (entry["light"] == "spot_light") spotSlots.push_back(entry["slot"]);
+    }
+    EXPECT_EQ(spotSlots, (std::vector<int>{0, 2}));
+    // An output for "spot_light" would be ambiguous: refused, naming both numbers.
+    const CommandResult ambiguous = render("--shadow-mask spot_light=" + (dir_ / "mask.png").string());
+    EXPECT_EQ(ambiguous.exitCode, 1);
+    EXPECT_NE(ambiguous.output.find("names 2 light instances (numbers 1, 3)"), std::string::npos) << ambiguous.output;
+    const CommandResult byNumber = render("--shadow-mask 3=" + (dir_ / "mask.png").string());
+    EXPECT_EQ(byNumber.exitCode, 0) << byNumber.output;
+}
+
+TEST_F(EngineRenderShadows, UnnamedLightsOnUnnamedNodesAreEachShadowed) {
+    for (auto& entry : scene_["extensions"]["KHR_lights_punctual"]["lights"]) entry.erase("name");
+    for (auto& node : scene_["nodes"])
+        if (node.contains("extensions")) node.erase("name");  // the lights' nodes
+    const CommandResult result = render("--truth");
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    const nlohmann::json all = stats();
+    ASSERT_EQ(all["lights"].size(), 3u) << all.dump();
+    for (int i = 0; i < 3; ++i) {
+        EXPECT_EQ(all["lights"][i]["light"], "light " + std::to_string(i + 1));
+        EXPECT_GT(all["lights"][i]["evaluated_pixels"].get<int>(), 100) << all["lights"][i];
+    }
+}
+
 // Accuracy guards against ray-traced truth (errors, never timings): the showcase at 320x180
 // with every light's map at 2048 under each variant. Bounds: error <= 0.25 % and error off
 // truth edges <= 0.06 % of the evaluation set; measured on llvmpipe: at most 0.133 % and
@@ -222,4 +357,31 @@ TEST_F(EngineRenderShadows, EveryVariantStaysWithinItsErrorBoundAt2048) {
             EXPECT_LE(entry["error_noedge"].get<double>(), 0.06) << variant << " " << entry;
         }
     }
+}
+
+// woo with an explicit polygon_offset: both of its passes take the offset, so the peel still
+// recognises the nearest surface. With the offset in the peel pass alone the sun's error at
+// 512 texels with [1, 2] was 14.8 % at this size (measured); with it in both, 0.130 %,
+// below the 0.258 % of no offset. Bound: no worse than without the offset, give or take one
+// evaluated pixel (100 / |E| percent), the metric's own resolution.
+TEST_F(EngineRenderShadows, WooWithAnExplicitOffsetIsNoWorseThanWithout) {
+    light("sun")["extras"]["shadow"]["variant"] = "woo";
+    light("sun")["extras"]["shadow"]["resolution"] = 512;
+    const auto sunErrors = [&] {
+        const CommandResult result = render("--width 320 --height 180 --truth");
+        EXPECT_EQ(result.exitCode, 0) << result.output;
+        const nlohmann::json all = stats();
+        for (const auto& entry : all["lights"])
+            if (entry["light"] == "sun") return entry;
+        ADD_FAILURE() << "no truth for the sun in " << all.dump();
+        return nlohmann::json();
+    };
+    const nlohmann::json without = sunErrors();
+    light("sun")["extras"]["shadow"]["polygon_offset"] = {1.0, 2.0};
+    const nlohmann::json with = sunErrors();
+    ASSERT_FALSE(without.is_null() || with.is_null());
+    ASSERT_EQ(with["variant"], "woo");
+    const double onePixel = 100.0 / with["evaluated_pixels"].get<double>();
+    EXPECT_LE(with["error"].get<double>(), without["error"].get<double>() + onePixel) << with << "\n" << without;
+    EXPECT_LE(with["acne"].get<double>(), without["acne"].get<double>() + onePixel) << with << "\n" << without;
 }

@@ -84,7 +84,7 @@ TEST_P(ShadowMask, LightUnderTheFloorShadowsItsWholeTop) {
     if (std::string(GetParam()) == "backface")
         GTEST_SKIP() << "backface maps hold the faces turned away from the light, here the "
                         "floor's top itself: the shade of a face turned away is undefined by "
-                        "design (N.L = 0 darkens it, and DESIGN.md's evaluation set leaves it out)";
+                        "design (N.L = 0 darkens it, and the evaluation set of docs/metrics.md leaves it out)";
     SceneBuilder builder;
     builder.addLight("under", Light::Type::Point, {0.5, -3, 0.5}, {0.5, -4, 0.5}, shadow());
     const auto result = compare(boxOverFloor(builder), kEverywhere);

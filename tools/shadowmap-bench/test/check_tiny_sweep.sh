@@ -25,5 +25,8 @@ awk -F, 'NR > 1 {
   for (i = 9; i <= 12; ++i) if (!($i >= 0 && $i <= 100)) { print "error out of [0,100]: " $0; bad = 1 }
 } END { exit bad }' "$csv"
 [[ -s $out/summary.md ]] || { echo "summary.md missing or empty"; exit 1; }
+# It cites the metric definitions by a file the repository has.
+grep -q 'docs/metrics.md' "$out/summary.md" && [[ -f $content/../docs/metrics.md ]] \
+  || { echo "summary.md does not cite docs/metrics.md for its error metrics"; exit 1; }
 [[ -s $out/time_vs_error.gp ]] || { echo "time_vs_error.gp missing or empty"; exit 1; }
 echo "ok: $rows rows"

@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <map>
 #include <set>
 #include <sstream>
@@ -103,6 +104,13 @@ TEST_F(StressQuick, RunsAndEveryBoundHolds) {
     EXPECT_EQ(exitCode_, 0) << log_;
     ASSERT_FALSE(records_.empty()) << log_;
     EXPECT_TRUE(std::filesystem::exists(std::filesystem::path(STRESS_OUTPUT_DIR) / "summary.md"));
+}
+
+// The summary cites the metric definitions by a file the repository has.
+TEST_F(StressQuick, SummaryCitesTheMetricsOfTheRepository) {
+    std::ifstream in(std::filesystem::path(STRESS_OUTPUT_DIR) / "summary.md");
+    const std::string summary((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    EXPECT_NE(summary.find("docs/metrics.md"), std::string::npos) << summary.substr(0, 600);
 }
 
 TEST_F(StressQuick, ErrorAtAMillionUnitsMatchesTheOrigin) { expectClose("distance", "0", "1e6", 0.1); }

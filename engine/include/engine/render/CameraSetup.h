@@ -13,8 +13,9 @@ FrameCamera cameraFromScene(const Scene& scene, int instance, int width, int hei
 // A camera that frames the whole scene from above and to the side, for scenes without one.
 FrameCamera framingCamera(const Scene& scene, int width, int height);
 
-// The tools' rule: the glTF camera called `name` (an InputError naming `sceneFile` if there
-// is none), else the scene's first camera, else the framing camera.
+// The tools' rule: the glTF camera `name` means (its name, its node's, or its number:
+// findCameraInstanceByNameOrNumber; an InputError naming `sceneFile` and listing the
+// scene's cameras if none), else the scene's first camera, else the framing camera.
 FrameCamera chooseCamera(const Scene& scene, const std::string& name, int width, int height,
                          const std::string& sceneFile);
 
