@@ -4,6 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
+#include <thread>
+
 #include <string>
 #include <vector>
 
@@ -270,12 +273,17 @@ TEST_F(GraphTest, DrawsAndTrianglesAreCountedPerPass) {
 }
 
 TEST_F(GraphTest, TimingCallsFinishAfterEachPass) {
-    graph.addPass("one", [](PassBuilder& b) { b.sideEffect(); }, logged("one"));
+    // Pass "one" takes at least 5 ms (sleep_for never returns early): its wall time must show
+    // it, so a timing that measured nothing (0) fails.
+    graph.addPass("one", [](PassBuilder& b) { b.sideEffect(); }, [&](PassContext& context) {
+        logged("one")(context);
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    });
     graph.addPass("two", [](PassBuilder& b) { b.sideEffect(); }, logged("two"));
     ExecuteOptions options{.timing = true, .finish = [&] { log.push_back("finish"); }};
     graph.execute(allocator, options);
     EXPECT_EQ(log, (std::vector<std::string>{"exec one", "finish", "exec two", "finish"}));
-    EXPECT_GE(reportOf(graph, "one").wallMs, 0.0);
+    EXPECT_GE(reportOf(graph, "one").wallMs, 5.0);
     log.clear();
     graph.execute(allocator, ExecuteOptions{.timing = false, .finish = options.finish});
     EXPECT_EQ(log, (std::vector<std::string>{"exec one", "exec two"}));  // no finish without timing

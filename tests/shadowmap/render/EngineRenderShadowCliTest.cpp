@@ -281,6 +281,10 @@ TEST_F(EngineRenderShadows, ShadowMaskWithoutAShadowPluginIsAClearError) {
                 {"--shadow-mask", "no loaded plugin provides a shadow term"});
 }
 
+// At 96x64 a light's evaluation set is 2900-4200 pixels, so one pixel is ~0.03 %: measured
+// at most 0.114 % (the spot light, 2940 pixels); bound 0.25 %, four pixels of margin.
+constexpr double kSmallImageErrorBound = 0.25;
+
 TEST_F(EngineRenderShadows, TruthReportsTimeAndErrorPerShadowedLight) {
     light("sun")["extras"]["shadow"]["variant"] = "woo";
     const CommandResult result = render("--truth");
@@ -289,9 +293,9 @@ TEST_F(EngineRenderShadows, TruthReportsTimeAndErrorPerShadowedLight) {
     ASSERT_EQ(all["lights"].size(), 3u) << all.dump();
     for (const auto& entry : all["lights"]) {
         EXPECT_GT(entry["evaluated_pixels"].get<int>(), 100) << entry;
-        EXPECT_GE(entry["map_ms"].get<double>(), 0.0) << entry;
-        // Small image (96x64): a few edge pixels weigh a lot; the showcase stays well under.
-        EXPECT_LT(entry["error"].get<double>(), 5.0) << entry;
+        // The one frame rendered every map (--warmup 0, --frames 1), so each took time.
+        EXPECT_GT(entry["map_ms"].get<double>(), 0.0) << entry;
+        EXPECT_LT(entry["error"].get<double>(), kSmallImageErrorBound) << entry;
         EXPECT_NE(result.output.find(entry["light"].get<std::string>()), std::string::npos);
     }
     EXPECT_EQ(all["lights"][1]["variant"], "woo");
