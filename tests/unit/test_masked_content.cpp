@@ -63,12 +63,21 @@ void expectOpaqueDoubleSided(const engine::Scene& scene, int index) {
     EXPECT_FALSE(material.baseColorTexture.present());
 }
 
+// The caster primitives (mesh `shape`) of a masked scene and its twin, each made of the
+// material its role needs: masked and textured, or opaque.
+std::pair<const engine::Primitive&, const engine::Primitive&> casters(const engine::Scene& masked,
+                                                                     const engine::Scene& twin,
+                                                                     const std::string& shape) {
+    const engine::Primitive& maskedCaster = meshNamed(masked, shape).primitives.at(0);
+    const engine::Primitive& twinCaster = meshNamed(twin, shape).primitives.at(0);
+    expectMaskMaterial(masked, maskedCaster.material);
+    expectOpaqueDoubleSided(twin, twinCaster.material);
+    return {maskedCaster, twinCaster};
+}
+
 TEST(MaskedContent, FenceMaskKeepsExactlyTheTexelsItsTwinCovers) {
     const engine::Scene masked = load("masked_fence"), twin = load("opaque_fence");
-    const engine::Primitive& quad = meshNamed(masked, "fence").primitives.at(0);
-    const engine::Primitive& slats = meshNamed(twin, "fence").primitives.at(0);
-    expectMaskMaterial(masked, quad.material);
-    expectOpaqueDoubleSided(twin, slats.material);
+    const auto [quad, slats] = casters(masked, twin, "fence");
     ASSERT_EQ(quad.triangleCount(), 2u);
     ASSERT_EQ(masked.images.size(), 1u);
     const engine::Image& image = masked.images[0];
@@ -102,10 +111,7 @@ TEST(MaskedContent, FenceMaskKeepsExactlyTheTexelsItsTwinCovers) {
 
 TEST(MaskedContent, CanopyLeavesAndTheirPolygonsShareCentreAndPlane) {
     const engine::Scene masked = load("masked_canopy"), twin = load("opaque_canopy");
-    const engine::Primitive& quads = meshNamed(masked, "canopy").primitives.at(0);
-    const engine::Primitive& fans = meshNamed(twin, "canopy").primitives.at(0);
-    expectMaskMaterial(masked, quads.material);
-    expectOpaqueDoubleSided(twin, fans.material);
+    const auto [quads, fans] = casters(masked, twin, "canopy");
     ASSERT_EQ(masked.images.size(), 1u);
     EXPECT_EQ(masked.images[0].width, 64);
     EXPECT_EQ(masked.images[0].height, 64);
