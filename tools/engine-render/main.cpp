@@ -174,6 +174,11 @@ int run(const RenderOptions& options, std::unique_ptr<engine::GlContext>& contex
         printCamerasAndLights(scene, options.scene);
         return 0;
     }
+    // Most sample files bring no light: say why the picture is ambient only, and what helps.
+    if (scene.lightInstances.empty())
+        std::cerr << "warning: " << options.scene
+                  << ": the scene has no lights: ambient only, no shadows (--key-light spot|point|directional "
+                     "adds one)\n";
 
     engine::EngineConfig config = engine::loadEngineConfig(options.config);
     applySettingOverrides(config, options);

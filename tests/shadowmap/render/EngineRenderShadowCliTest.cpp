@@ -327,6 +327,19 @@ TEST_F(EngineRenderShadows, OneLightPlacedByTwoNodesIsTwoShadowedInstances) {
     EXPECT_EQ(byNumber.exitCode, 0) << byNumber.output;
 }
 
+// A scene without lights renders ambient only: said once, with the option that adds a light.
+TEST_F(EngineRenderShadows, ASceneWithoutLightsSaysSo) {
+    scene_["extensions"].erase("KHR_lights_punctual");
+    scene_.erase("extensionsUsed");
+    for (auto& node : scene_["nodes"]) node.erase("extensions");
+    const CommandResult result = render();
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    EXPECT_NE(result.output.find("the scene has no lights: ambient only, no shadows (--key-light"), std::string::npos)
+        << result.output;
+    const CommandResult lit = render("--key-light spot");
+    EXPECT_EQ(lit.output.find("has no lights"), std::string::npos) << lit.output;
+}
+
 TEST_F(EngineRenderShadows, UnnamedLightsOnUnnamedNodesAreEachShadowed) {
     for (auto& entry : scene_["extensions"]["KHR_lights_punctual"]["lights"]) entry.erase("name");
     for (auto& node : scene_["nodes"])
