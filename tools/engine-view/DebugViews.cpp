@@ -84,7 +84,7 @@ ViewFrame DebugViews::render(DebugView view, const ViewedLight* light, const eng
     case DebugView::DepthMap:
         return depthMap(*light, camera);
     case DebugView::ProjectedDepth:
-        return projected(*light, shadow, camera);
+        return projected(*light, camera);
     case DebugView::Comparison:
     case DebugView::ShadowTerm: {
         const bool comparison = view == DebugView::Comparison;
@@ -130,14 +130,7 @@ ViewFrame DebugViews::depthMap(const ViewedLight& light, const engine::FrameCame
     return out;
 }
 
-ViewFrame DebugViews::projected(const ViewedLight& light, const engine::ShadowView* shadow,
-                                const engine::FrameCamera& camera) {
-    if (light.type == engine::Light::Type::Directional) {
-        ViewFrame out = render(DebugView::Comparison, &light, shadow, camera);
-        out.notes.push_back("projected depth: a directional map's fitted extents are not reported; "
-                            "comparison view instead");
-        return out;
-    }
+ViewFrame DebugViews::projected(const ViewedLight& light, const engine::FrameCamera& camera) {
     engine::FrameRequest request;
     request.camera = camera;
     request.shadowMapSlots.push_back(light.slot);
@@ -145,19 +138,19 @@ ViewFrame DebugViews::projected(const ViewedLight& light, const engine::ShadowVi
     out.frame = renderFrame(request);
     const Image shaded{camera.width, camera.height, renderer_.readColor()};
     const auto found = out.frame.shadowMaps.find(light.slot);
-    // The L of this frame's map (the view of the frame just rendered).
-    ProjectedMap map;
-    if (found == out.frame.shadowMaps.end() ||
-        (light.type == engine::Light::Type::Spot &&
-         !mapLightToWorld(out.frame.shadowView(light.slot), map.lightToWorld))) {
+    // The matrices of this frame's map (the view of the frame just rendered).
+    const engine::ShadowView* view = out.frame.shadowView(light.slot);
+    if (found == out.frame.shadowMaps.end() || !view || view->layers.empty()) {
         out.image = shaded;
         out.notes.push_back(light.name + " has no shadow map this frame: shaded view");
         return out;
     }
     int width = 0, height = 0;
     const std::vector<std::uint8_t> gray = depthToGray(found->second, width, height);
-    map.kind = found->second.layers == 6 ? ProjectedMap::Kind::Cube : ProjectedMap::Kind::Spot;
-    map.halfAngle = scene_.lights[light.light].outerConeAngle;
+    ProjectedMap map;
+    map.kind = view->cube ? ProjectedMap::Kind::Cube : ProjectedMap::Kind::Map2D;
+    const engine::ShadowMapLayer& layer = view->layers.front();
+    map.viewProjection = layer.projection * glm::inverse(layer.lightToWorld);
     map.position = scene_.lightInstances[light.slot].position();
     map.faceSize = found->second.width;
     map.gray = &gray;

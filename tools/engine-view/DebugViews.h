@@ -53,7 +53,7 @@ private:
     engine::FrameResult renderFrame(engine::FrameRequest request);
     const truth::SurfaceBuffer& surfaces(const engine::FrameCamera& camera);
     ViewFrame depthMap(const ViewedLight& light, const engine::FrameCamera& camera);
-    ViewFrame projected(const ViewedLight& light, const engine::ShadowView* shadow, const engine::FrameCamera& camera);
+    ViewFrame projected(const ViewedLight& light, const engine::FrameCamera& camera);
     ViewFrame acneLeak(const ViewedLight& light, const engine::FrameCamera& camera);
 
     engine::Renderer& renderer_;

@@ -38,13 +38,14 @@ glm::dmat4 perspectiveOverBounds(const engine::Scene& scene, const glm::dmat4& e
     return glm::perspective(fovy, 1.0, std::max(box.min.z, far * 1e-4), far);
 }
 
-} // namespace
-
+// L (light -> world) of the light's 2D map; false when it has none this frame.
 bool mapLightToWorld(const engine::ShadowView* shadow, glm::dmat4& lightToWorld) {
     if (!shadow || !shadow->hasMap || shadow->cube || shadow->layers.empty()) return false;
     lightToWorld = shadow->layers.front().lightToWorld;
     return true;
 }
+
+} // namespace
 
 engine::FrameCamera lightCamera(const engine::Scene& scene, int slot, const engine::ShadowView* shadow, int size) {
     const engine::LightInstance& placed = scene.lightInstances.at(slot);
@@ -59,8 +60,11 @@ engine::FrameCamera lightCamera(const engine::Scene& scene, int slot, const engi
     switch (light.type) {
     case engine::Light::Type::Spot: {
         camera.eyeToWorld = hasReported ? reported : lookAlong(placed.position(), placed.direction());
-        const double half = std::min(light.outerConeAngle, 89.0 * kDegree);
-        camera.projection = perspectiveOverBounds(scene, camera.eyeToWorld, 2.0 * half);
+        // The map's own field of view when it has one (the plugin may have narrowed the
+        // cone); else the cone's, kept under the 180 degrees a perspective allows.
+        const double fovy = hasReported ? 2.0 * std::atan(1.0 / shadow->layers.front().projection[1][1])
+                                        : std::min(2.0 * light.outerConeAngle, 179.0 * kDegree);
+        camera.projection = perspectiveOverBounds(scene, camera.eyeToWorld, fovy);
         break;
     }
     case engine::Light::Type::Directional: {

@@ -2,8 +2,8 @@
 // The "light's view" debug view: a camera placed at a light, so the scene is seen as the
 // light sees it (the seeds' first picture: every surface it lights is visible, shadows are
 // hidden behind what casts them).
-//  - spot: the shadow map's own L (its shadow view's) and the cone's full angle
-//    (2 * outer cone, at most 178 degrees), aspect 1: the same picture as its depth map;
+//  - spot: the shadow map's own L and field of view (its shadow view's; without a map, the
+//    cone's), aspect 1: the same picture as its depth map;
 //  - directional: the plugin's L (the fitted box's face toward the light; a placement from
 //    the scene's bounds when the plugin reported none) and an orthographic box around the
 //    whole scene (the plugin fits x/y to what the camera sees, which it does not report);
@@ -15,6 +15,3 @@
 
 // `shadow`: the light's shadow view of the last frame, or null.
 engine::FrameCamera lightCamera(const engine::Scene& scene, int slot, const engine::ShadowView* shadow, int size);
-
-// L (light -> world) of the light's 2D map; false when it has none this frame.
-bool mapLightToWorld(const engine::ShadowView* shadow, glm::dmat4& lightToWorld);

@@ -5,15 +5,12 @@
 
 namespace {
 
-constexpr double kMaxHalfAngle = 1.5533430342749532;  // 89 degrees, as the plugin clamps
-
-// (s, t) in [0,1]^2 on the map (t = 0 at GL's first row); false when the
-// map has no texel for p.
-bool spotLookup(const ProjectedMap& map, const glm::dmat4& worldToLight, const glm::dvec3& p, glm::dvec2& st) {
-    const glm::dvec3 q = glm::dvec3(worldToLight * glm::dvec4(p, 1.0));
-    if (-q.z <= 0.0) return false;  // behind the light: never projected (no back-projection)
-    const double scale = 1.0 / (-q.z * std::tan(std::min(map.halfAngle, kMaxHalfAngle)));
-    st = glm::dvec2(q.x, q.y) * scale * 0.5 + 0.5;
+// (s, t) in [0,1]^2 on a 2D map (t = 0 at GL's first row); false when the map has no
+// texel for p.
+bool mapLookup(const ProjectedMap& map, const glm::dvec3& p, glm::dvec2& st) {
+    const glm::dvec4 clip = map.viewProjection * glm::dvec4(p, 1.0);
+    if (clip.w <= 0.0) return false;  // behind the light: never projected (no back-projection)
+    st = glm::dvec2(clip) / clip.w * 0.5 + 0.5;
     return st.x >= 0.0 && st.x < 1.0 && st.y >= 0.0 && st.y < 1.0;
 }
 
@@ -43,14 +40,13 @@ Image projectDepthMap(const Image& shaded, const truth::SurfaceBuffer& surfaces,
     Image out = shaded;
     const int size = map.faceSize;
     const int stripWidth = map.kind == ProjectedMap::Kind::Cube ? size * 6 : size;
-    const glm::dmat4 worldToLight = glm::inverse(map.lightToWorld);
     for (std::size_t i = 0; i < surfaces.pixelCount(); ++i) {
         if (!surfaces.covered[i]) continue;
         std::uint8_t* pixel = &out.rgba[4 * i];
         glm::dvec2 st;
         int face = 0;
-        const bool hit = map.kind == ProjectedMap::Kind::Spot
-                             ? spotLookup(map, worldToLight, surfaces.worldPosition[i], st)
+        const bool hit = map.kind == ProjectedMap::Kind::Map2D
+                             ? mapLookup(map, surfaces.worldPosition[i], st)
                              : cubeLookup(surfaces.worldPosition[i] - map.position, st, face);
         if (!hit || size <= 0) {
             for (int c = 0; c < 3; ++c) pixel[c] = static_cast<std::uint8_t>(pixel[c] * 0.3);
