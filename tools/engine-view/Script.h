@@ -20,7 +20,8 @@
 //   quit                   close the viewer (exit 0)
 // Load checks every line (unknown command, wrong argument count, bad number) and throws
 // InputError "FILE:LINE: reason"; so does a command that cannot be done when it runs (no
-// such light, camera, key or view). After the last command the viewer stays interactive.
+// such light, camera, key or view). After the last command the viewer quits (exit 0), or
+// stays interactive with --stay.
 #include "Controls.h"
 #include "OrbitCamera.h"
 #include "ViewerState.h"

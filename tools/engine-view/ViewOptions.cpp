@@ -10,7 +10,9 @@ const char* const kViewUsage =
     "usage: engine-view --config CONFIG.json --scene SCENE.gltf|.glb\n"
     "  [--camera NAME|NUMBER] [--width W --height H]   (initial window size, default 1280x720)\n"
     "  [--script FILE]          (one command per frame: key, select, set, view, camera, orbit,\n"
-    "                            pan, zoom, frames, screenshot, save, overlay, resize, quit)\n"
+    "                            pan, zoom, frames, screenshot, save, overlay, resize, quit;\n"
+    "                            see the README), then quit\n"
+    "  [--stay]                 (after the script, stay interactive instead of quitting)\n"
     "  [--screenshot OUT.png]   (the window after the first frame (after the script, if any), then quit)\n"
     "  [--save-settings OUT.gltf|.glb]  (where S writes the scene with the lights' settings)\n"
     "keys: Tab light, V variant, R resolution, F depth format, P filter, [ ] offset units,\n"
@@ -33,13 +35,14 @@ int parseSize(const std::string& flag, const std::string& text) {
 ViewOptions parseViewOptions(int argc, char** argv) {
     ViewOptions options;
     bool sawScene = false;
-    options.help = tools::parseFlags(argc, argv, [&](const std::string& flag, const std::string& value) {
+    options.help = tools::parseFlags(argc, argv, {"--stay"}, [&](const std::string& flag, const std::string& value) {
         if (flag == "--config") options.config = value;
         else if (flag == "--scene") { options.scene = value; sawScene = true; }
         else if (flag == "--camera") options.camera = value;
         else if (flag == "--width") options.width = parseSize(flag, value);
         else if (flag == "--height") options.height = parseSize(flag, value);
         else if (flag == "--script") options.script = value;
+        else if (flag == "--stay") options.stay = true;
         else if (flag == "--screenshot") options.screenshot = value;
         else if (flag == "--save-settings") options.saveSettings = value;
         else return false;

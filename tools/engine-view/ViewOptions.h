@@ -8,6 +8,7 @@ struct ViewOptions {
     std::string camera;          // empty: first glTF camera, else a framing one
     int width = 1280, height = 720;  // the window's initial size (the image follows resizes)
     std::string script;          // --script FILE: one command per frame (Script.h)
+    bool stay = false;           // --stay: after the script, stay interactive (else quit)
     std::string screenshot;      // --screenshot OUT.png: the first frame's window, then quit
     std::string saveSettings;    // --save-settings OUT.gltf|.glb: where S (and `save`) write
     bool help = false;

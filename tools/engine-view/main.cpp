@@ -137,6 +137,9 @@ int run(const ViewOptions& options, std::unique_ptr<engine::GlContext>& context,
             requests.redraw = true;
         }
         if (requests.quit) break;
+        // A finished script quits once its last frame is shown (and its screenshot taken):
+        // under Xvfb nobody would ever close the window. --stay keeps it open for a person.
+        if (script && script->finished() && !options.stay && options.screenshot.empty() && !requests.redraw) break;
 
         const bool scripted = script && !script->finished();
         if (scripted || requests.redraw || exitAfterScreenshot) context->pollEvents();

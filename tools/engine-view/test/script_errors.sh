@@ -29,3 +29,18 @@ expect_error $'frames 1\nselect moon' 'bad.txt:2: select: no light "moon" in the
 # The plugin refuses these when they are applied (the next frame): still the `set` line.
 expect_error $'set sun variant foo\nframes 1' 'engine-view: bad.txt:1: ' 'sun' '"foo"'
 expect_error $'set sun colour 3' 'engine-view: bad.txt:1: ' 'sun' 'colour'
+
+# A script without `quit` ends the viewer once its last command has run (exit 0, its
+# screenshot taken): headless under Xvfb nobody could close it. Before, it waited forever:
+# the timeout turns a hang into a failure.
+printf 'frames 2\nscreenshot last.png\n' > noquit.txt
+set +e
+timeout 120 xvfb-run -a -s "-screen 0 640x480x24 -noreset" "$view" --config "$config" --scene showcase.gltf \
+  --width 160 --height 120 --script noquit.txt > out.txt 2> err.txt
+status=$?
+set -e
+if [[ $status -ne 0 ]] || [[ ! -s last.png ]]; then
+  echo "FAIL: a script without quit gave exit $status (124: still running after 120 s), screenshot: $(ls -l last.png 2>&1)" >&2
+  exit 1
+fi
+echo "ok: a script without quit exits 0 after its last command"
