@@ -294,6 +294,7 @@ TEST_F(EngineRenderShadows, TruthReportsTimeAndErrorPerShadowedLight) {
     for (const auto& entry : all["lights"]) {
         EXPECT_GT(entry["evaluated_pixels"].get<int>(), 100) << entry;
         // The one frame rendered every map (--warmup 0, --frames 1), so each took time.
+        EXPECT_FALSE(entry["map_cached"].get<bool>()) << entry;
         EXPECT_GT(entry["map_ms"].get<double>(), 0.0) << entry;
         EXPECT_LT(entry["error"].get<double>(), kSmallImageErrorBound) << entry;
         EXPECT_NE(result.output.find(entry["light"].get<std::string>()), std::string::npos);
@@ -352,6 +353,21 @@ TEST_F(EngineRenderShadows, UnnamedLightsOnUnnamedNodesAreEachShadowed) {
         EXPECT_EQ(all["lights"][i]["light"], "light " + std::to_string(i + 1));
         EXPECT_GT(all["lights"][i]["evaluated_pixels"].get<int>(), 100) << all["lights"][i];
     }
+}
+
+// After a warm-up frame a still light's map is served from the cache in every timed frame:
+// reported as cached (null time), not as a map that took 0.00 ms.
+TEST_F(EngineRenderShadows, TruthReportsACachedMapAsCached) {
+    const CommandResult result = render("--truth --warmup 1");
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    const nlohmann::json all = stats();
+    ASSERT_EQ(all["lights"].size(), 3u) << all.dump();
+    for (const auto& entry : all["lights"]) {
+        EXPECT_TRUE(entry["map_cached"].get<bool>()) << entry;
+        EXPECT_TRUE(entry["map_ms"].is_null()) << entry;
+    }
+    EXPECT_NE(result.output.find("cached"), std::string::npos) << result.output;
+    EXPECT_EQ(result.output.find(" 0.00 "), std::string::npos) << result.output;
 }
 
 // Accuracy guards against ray-traced truth (errors, never timings): the showcase at 320x180
