@@ -28,7 +28,9 @@ namespace truth {
 class RayTracedVisibility {
 public:
     // Builds the acceleration structure of all casters of `scene` (world transforms must be
-    // up to date: Scene::updateWorldTransforms). Throws std::runtime_error if Embree fails.
+    // up to date: Scene::updateWorldTransforms). Alpha-tested casters read the scene's
+    // images while tracing: `scene` must outlive this object and keep its images. Throws
+    // std::runtime_error if Embree fails.
     explicit RayTracedVisibility(const engine::Scene& scene);
     ~RayTracedVisibility();
     RayTracedVisibility(RayTracedVisibility&&) noexcept;
