@@ -20,6 +20,13 @@ int wrapTexel(int i, int size, int mode) {
     return ((i % size) + size) % size;  // REPEAT
 }
 
+// floor(v) as an int; texel coordinates beyond +-2^30 (a UV of 1e30, say) are clamped
+// there first, where float UVs have long lost every texel anyway.
+int floorToInt(double v) {
+    constexpr double kLimit = 1073741824.0;
+    return static_cast<int>(std::floor(std::clamp(std::isfinite(v) ? v : 0.0, -kLimit, kLimit)));
+}
+
 double texelAlpha(const engine::Image& image, int x, int y) {
     return image.rgba8[(static_cast<std::size_t>(y) * image.width + x) * 4 + 3] / 255.0;
 }
@@ -30,12 +37,12 @@ double sampleAlpha(const engine::Image& image, const engine::Sampler& sampler, g
     if (image.width <= 0 || image.height <= 0) return 1.0;
     const double x = uv.x * image.width, y = uv.y * image.height;
     if (sampler.magFilter == kNearest)
-        return texelAlpha(image, wrapTexel(static_cast<int>(std::floor(x)), image.width, sampler.wrapS),
-                          wrapTexel(static_cast<int>(std::floor(y)), image.height, sampler.wrapT));
+        return texelAlpha(image, wrapTexel(floorToInt(x), image.width, sampler.wrapS),
+                          wrapTexel(floorToInt(y), image.height, sampler.wrapT));
     // Bilinear between the texel centres around (x, y).
     const double fx = x - 0.5, fy = y - 0.5;
-    const int x0 = static_cast<int>(std::floor(fx)), y0 = static_cast<int>(std::floor(fy));
-    const double ax = fx - x0, ay = fy - y0;
+    const int x0 = floorToInt(fx), y0 = floorToInt(fy);
+    const double ax = fx - std::floor(fx), ay = fy - std::floor(fy);  // in [0, 1) even where clamped
     const int xa = wrapTexel(x0, image.width, sampler.wrapS), xb = wrapTexel(x0 + 1, image.width, sampler.wrapS);
     const int ya = wrapTexel(y0, image.height, sampler.wrapT), yb = wrapTexel(y0 + 1, image.height, sampler.wrapT);
     const double top = (1.0 - ax) * texelAlpha(image, xa, ya) + ax * texelAlpha(image, xb, ya);
