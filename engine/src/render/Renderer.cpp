@@ -101,10 +101,10 @@ FrameResult Renderer::renderFrame(const FrameRequest& request) {
     glFinish();
 
     FrameResult result;
+    result.shadowViews = frame.shadowViews();
     for (const int slot : request.shadowMapSlots) {
-        const auto view = std::find_if(frame.shadowViews().begin(), frame.shadowViews().end(),
-                                       [slot](const ShadowView& v) { return v.slot == slot; });
-        if (view == frame.shadowViews().end() || !view->hasMap) continue;
+        const ShadowView* view = result.shadowView(slot);
+        if (!view || !view->hasMap) continue;
         const ResourceHandle resource = graph.find(view->mapResource);
         const std::uint32_t texture = graph.importedPhysical(resource);
         if (!texture || !isDepthFormat(graph.descOf(resource).format)) continue;
@@ -119,7 +119,6 @@ FrameResult Renderer::renderFrame(const FrameRequest& request) {
     result.graphviz = graph.graphviz();
     result.shadowTermProvided = frame.lightVisibility().has_value();
     result.litInstancesCulled = litPass_->culledInstances();
-    result.shadowViews = frame.shadowViews();
     result.shadeCache = shadeCacheStats(litPass_->shadePlan());
     for (RenderPlugin* plugin : plugins_) result.pluginStats[plugin->name()] = plugin->frameStats();
     result.frameMs =
