@@ -30,7 +30,8 @@ PluginConfig parsePlugin(const nlohmann::json& entry, const std::string& file,
 }
 
 RendererConfig parseRenderer(const nlohmann::json& node, const std::string& file) {
-    json::requireKnownKeys(node, {"ambient", "clear_color", "shade_cache"}, file, "renderer");
+    json::requireKnownKeys(node, {"ambient", "clear_color", "shade_cache", "check_gl_errors"}, file,
+                           "renderer");
     RendererConfig renderer;
     if (node.contains("ambient"))
         renderer.ambient = glm::vec3(json::readVec3(node["ambient"], file, "renderer.ambient"));
@@ -39,6 +40,8 @@ RendererConfig parseRenderer(const nlohmann::json& node, const std::string& file
             glm::vec3(json::readVec3(node["clear_color"], file, "renderer.clear_color"));
     if (node.contains("shade_cache"))
         renderer.shadeCache = json::readBool(node["shade_cache"], file, "renderer.shade_cache");
+    if (node.contains("check_gl_errors"))
+        renderer.checkGlErrors = json::readBool(node["check_gl_errors"], file, "renderer.check_gl_errors");
     return renderer;
 }
 

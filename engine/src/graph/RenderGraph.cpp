@@ -193,6 +193,7 @@ void RenderGraph::execute(ResourceAllocator& allocator, const ExecuteOptions& op
                     std::chrono::steady_clock::now() - start;
                 reports_[index].wallMs = elapsed.count();
             }
+            if (options.afterPass) options.afterPass(passes_[index].name);
             for (int r : releaseAt[position]) release(r);
         }
     } catch (...) {

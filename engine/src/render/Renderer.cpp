@@ -1,5 +1,6 @@
 #include "engine/render/Renderer.h"
 
+#include "engine/gl/GlError.h"
 #include "engine/render/TextureReadback.h"
 #include "engine/scene/Scene.h"
 #include "engine/util/Error.h"
@@ -68,13 +69,13 @@ FrameResult Renderer::renderFrame(const FrameRequest& request) {
         graph.importTexture("scene_color", {width, height, TextureFormat::SRGB8_A8}, color_.id());
     for (RenderPlugin* plugin : plugins_) {
         // A plugin's bad pass declaration (unknown resource, second writer...) is the
-        // plugin's error: say which plugin, not only which pass.
+        // plugin's fault, not the scene's: say which plugin, not only which pass.
         try {
             plugin->addPasses(frame);
         } catch (const InputError&) {
             throw;
         } catch (const std::exception& error) {
-            throw InputError("plugin \"" + plugin->name() + "\": " + error.what());
+            throw PluginError("plugin \"" + plugin->name() + "\": " + error.what());
         }
     }
     litPass_->addTo(frame, color);
@@ -97,8 +98,14 @@ FrameResult Renderer::renderFrame(const FrameRequest& request) {
     ExecuteOptions options;
     options.timing = request.timing;
     options.finish = [] { glFinish(); };
+    if (config_.checkGlErrors) {
+        gl::checkGlError("the start of the frame (a call made before renderFrame)");
+        options.afterPass = [](const std::string& pass) { gl::checkGlError(("pass \"" + pass + "\"").c_str()); };
+    }
     graph.execute(pool_, options);
-    glFinish();
+    // Untimed frames are not waited for: the readbacks below and the caller's swap or
+    // readPixels synchronise with the GPU when they need the results.
+    if (request.timing) glFinish();
 
     FrameResult result;
     result.shadowViews = frame.shadowViews();

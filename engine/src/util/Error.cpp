@@ -3,5 +3,6 @@
 namespace engine {
 
 InputError::~InputError() = default;
+PluginError::~PluginError() = default;
 
 } // namespace engine

@@ -99,6 +99,9 @@ struct ExecuteOptions {
     // Called after each pass when timing (glFinish in practice): GL work is asynchronous,
     // so without it a pass's wall time would measure command submission, not the work.
     std::function<void()> finish;
+    // Called after each pass has run (after finish, when timing), with its name: e.g. a GL
+    // error check that blames the pass that raised the flag. May throw; the frame stops.
+    std::function<void(const std::string& passName)> afterPass;
 };
 
 class RenderGraph {

@@ -38,7 +38,9 @@ struct DepthReadback {
 
 struct FrameResult {
     std::vector<PassReport> passes;
-    double frameMs = 0.0;     // wall time of the whole frame (graph build to glFinish)
+    // Wall time of the whole frame: graph build to glFinish when timing, else to the last
+    // command's submission (the GPU may still be working).
+    double frameMs = 0.0;
     nlohmann::json pluginStats = nlohmann::json::object();
     std::string graphviz;
     bool shadowTermProvided = false;  // a plugin installed the lit pass's visibility hook

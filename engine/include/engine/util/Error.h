@@ -17,6 +17,15 @@ public:
     ~InputError() override;
 };
 
+// An exception from plugin code that is not about the user's input (a bad pass declaration,
+// a failed allocation, a broken invariant): the message names the plugin, and the type says
+// the fault is the plugin's, so callers do not report it as a problem with the scene or config.
+class PluginError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+    ~PluginError() override;  // out of line, for the reason given for InputError
+};
+
 // "file: object: reason" — the one format every bad-input message follows.
 inline std::string describeError(const std::string& file, const std::string& object,
                                  const std::string& reason) {
