@@ -229,7 +229,9 @@ struct Runner {
                 shadow["variant"] = variant;
                 shadow["resolution"] = options.resolution;
                 built.scene.lights[0].extras["shadow"] = shadow;
-                renderer.setScene(built.scene);  // the plugin re-reads the light's settings
+                // Only the light's settings changed: the plugin re-reads them and re-renders
+                // the map if they changed it, without uploading the scene again.
+                renderer.reloadSettings();
 
                 const evaluation::ViewResult view = evaluator.evaluate(built.camera, 0);
                 engine::FrameRequest request;
