@@ -20,6 +20,8 @@
 #include "engine/util/OutputFile.h"
 #include "engine/util/ProcessSetup.h"
 
+#include "shadowmap/ShadowSettings.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -314,6 +316,8 @@ int run(const Options& options, std::unique_ptr<engine::GlContext>& context, eng
         }
     }
     std::vector<std::string> variants = options.variants.empty() ? stress::defaultVariants() : options.variants;
+    // A misspelt variant is refused here, by the plugin's own parser, before any rendering.
+    for (const std::string& variant : variants) shadowmap::parseVariant(variant, "--variants", "");
 
     const engine::EngineConfig config = makeConfig(options);
     context = engine::createEglContext();
