@@ -57,7 +57,7 @@ std::vector<OverlayLine> OverlayText::lines(const ViewerState& state, const engi
             line += format("\t%s\t%d%s\t%s\t%s\toffset %g/%g\tdim %.2f", view->variant.c_str(), used.value("resolution", 0),
                            view->cube ? " cube" : "", used.value("depth_format", "?").c_str(),
                            used.value("filter", "?").c_str(), offset.at(0).get<double>(), offset.at(1).get<double>(),
-                           settings.value("dimming", 0.4));
+                           settings.at("dimming").get<double>());
             bool ran = false;
             const double ms = frame.shadowPassMs(*view, ran);
             if (!view->hasMap) {

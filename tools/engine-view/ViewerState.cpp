@@ -3,20 +3,24 @@
 #include "engine/render/Frame.h"
 #include "engine/util/Error.h"
 
+#include "shadowmap/ShadowSettings.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <vector>
 
 namespace {
 
 constexpr std::array<const char*, kDebugViewCount> kViewNames = {
     "shaded", "light", "depth", "projected", "comparison", "shadow", "truth"};
 
-template <std::size_t N>
-std::string nextOf(const std::array<const char*, N>& cycle, const std::string& current) {
-    for (std::size_t i = 0; i < N; ++i)
-        if (current == cycle[i]) return cycle[(i + 1) % N];
-    return cycle[0];
+// The value after `current` among a key's allowed values (the first when `current` is
+// none of them), so the keys cycle through exactly what the plugin accepts.
+std::string nextChoice(const char* key, const std::string& current) {
+    const std::vector<std::string>& choices = shadowmap::settingKey(key).choices;
+    const auto found = std::find(choices.begin(), choices.end(), current);
+    return found == choices.end() || found + 1 == choices.end() ? choices.front() : *(found + 1);
 }
 
 } // namespace
@@ -77,8 +81,7 @@ const engine::ShadowView* ViewerState::frameView(int index) const {
 }
 
 nlohmann::json ViewerState::effective(int index) const {
-    nlohmann::json settings = {{"variant", "standard"}, {"resolution", 2048}, {"depth_format", "d24"},
-                               {"filter", "pcf"}, {"dimming", 0.4}};
+    nlohmann::json settings = shadowmap::printSettings(shadowmap::ShadowSettings{});
     settings.update(defaults_);
     const nlohmann::json& extras = scene_.lights[lights_[index].light].extras;
     if (extras.is_object() && extras.contains("shadow") && extras["shadow"].is_object())
@@ -109,27 +112,25 @@ void ViewerState::set(int index, const std::string& key, const nlohmann::json& v
 
 void ViewerState::cycleVariant() {
     if (selected_ < 0) return;
-    static constexpr std::array<const char*, 4> cycle = {"standard", "woo", "backface", "none"};
-    set(selected_, "variant", nextOf(cycle, effective(selected_)["variant"].get<std::string>()));
+    set(selected_, "variant", nextChoice("variant", effective(selected_)["variant"].get<std::string>()));
 }
 
 void ViewerState::cycleResolution() {
     if (selected_ < 0) return;
-    static constexpr std::array<int, 4> cycle = {512, 1024, 2048, 4096};
-    const int current = effective(selected_)["resolution"].get<int>();
-    const auto next = std::upper_bound(cycle.begin(), cycle.end(), current);
-    set(selected_, "resolution", next == cycle.end() ? cycle.front() : *next);
+    const std::vector<double>& steps = shadowmap::settingKey("resolution").steps;
+    const double current = effective(selected_)["resolution"].get<double>();
+    const auto next = std::upper_bound(steps.begin(), steps.end(), current);
+    set(selected_, "resolution", static_cast<int>(next == steps.end() ? steps.front() : *next));
 }
 
 void ViewerState::cycleDepthFormat() {
     if (selected_ < 0) return;
-    static constexpr std::array<const char*, 3> cycle = {"d16", "d24", "d32f"};
-    set(selected_, "depth_format", nextOf(cycle, effective(selected_)["depth_format"].get<std::string>()));
+    set(selected_, "depth_format", nextChoice("depth_format", effective(selected_)["depth_format"].get<std::string>()));
 }
 
 void ViewerState::toggleFilter() {
     if (selected_ < 0) return;
-    set(selected_, "filter", effective(selected_)["filter"] == "pcf" ? "nearest" : "pcf");
+    set(selected_, "filter", nextChoice("filter", effective(selected_)["filter"].get<std::string>()));
 }
 
 void ViewerState::addOffsetUnits(double delta) {
@@ -142,7 +143,9 @@ void ViewerState::addOffsetUnits(double delta) {
 
 void ViewerState::addDimming(double delta) {
     if (selected_ < 0) return;
-    const double dimming = std::clamp(effective(selected_)["dimming"].get<double>() + delta, 0.0, 1.0);
+    const shadowmap::SettingKey& range = shadowmap::settingKey("dimming");
+    const double dimming =
+        std::clamp(effective(selected_)["dimming"].get<double>() + delta, *range.minimum, *range.maximum);
     set(selected_, "dimming", std::round(dimming * 100.0) / 100.0);
 }
 

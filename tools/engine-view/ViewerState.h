@@ -41,9 +41,10 @@ public:
     void setView(DebugView view) { view_ = view; }
     void nextView() { view_ = static_cast<DebugView>((static_cast<int>(view_) + 1) % kDebugViewCount); }
 
-    // The keys' edits, on the selected light (nothing when there is none).
+    // The keys' edits, on the selected light (nothing when there is none). The cycles are
+    // the shadow plugin's allowed values (shadowmap::settingKeys()), in its order:
     void cycleVariant();     // standard -> woo -> backface -> none
-    void cycleResolution();  // 512 -> 1024 -> 2048 -> 4096
+    void cycleResolution();  // the resolution's steps: 512 -> 1024 -> 2048 -> 4096
     void cycleDepthFormat(); // d16 -> d24 -> d32f
     void toggleFilter();     // nearest <-> pcf
     void addOffsetUnits(double delta);  // polygon offset units, kept >= 0
@@ -59,8 +60,9 @@ public:
     void setFrameViews(std::vector<engine::ShadowView> views) { views_ = std::move(views); }
     const engine::ShadowView* frameView(int index) const;  // null when no plugin published one
 
-    // The light's effective settings: built-in defaults <- config <- extras.shadow, with the
-    // polygon offset the plugin reported when it is not explicit.
+    // The light's effective settings: the plugin's built-in defaults (printSettings of
+    // shadowmap::ShadowSettings{}) <- config <- extras.shadow, with the polygon offset the
+    // plugin reported when it is not explicit.
     nlohmann::json effective(int index) const;
     // What --save-settings writes as the light's extras.shadow: the keys it already had
     // (near_plane, reversed_z, ...), with variant, resolution, depth_format, filter and

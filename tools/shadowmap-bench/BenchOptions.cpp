@@ -2,6 +2,8 @@
 
 #include "CommandLine.h"
 
+#include "shadowmap/ShadowSettings.h"
+
 #include <cerrno>
 #include <cstdlib>
 #include <stdexcept>
@@ -16,9 +18,15 @@ constexpr const char* kEngineModel =
     "/usr/share/assimp/models/glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb";
 constexpr int kDefaultWidth = 1280, kDefaultHeight = 720, kDefaultFrames = 5;
 
-const std::vector<std::string> kKnownVariants = {"standard", "woo", "backface"};
-const std::vector<std::string> kKnownFormats = {"d16", "d24", "d32f"};
-const std::vector<std::string> kKnownFilters = {"nearest", "pcf"};
+// What the sweep may set, as the shadow plugin accepts it (shadowmap::settingKeys()): every
+// depth format and filter, every variant but "none" (no map: nothing to time or measure).
+std::vector<std::string> knownVariants() {
+    std::vector<std::string> variants = shadowmap::settingKey("variant").choices;
+    std::erase(variants, shadowmap::toString(shadowmap::Variant::None));
+    return variants;
+}
+std::vector<std::string> knownFormats() { return shadowmap::settingKey("depth_format").choices; }
+std::vector<std::string> knownFilters() { return shadowmap::settingKey("filter").choices; }
 
 std::string joined(const std::vector<std::string>& items) {
     std::string text;
@@ -65,8 +73,11 @@ std::vector<std::string> parseNames(const std::string& flag, const std::string& 
 
 std::vector<int> parseResolutions(const std::string& flag, const std::string& text) {
     std::vector<int> resolutions;
-    // The plugin checks the GL's own GL_MAX_TEXTURE_SIZE; this only bounds typos.
-    for (const std::string& item : splitList(flag, text)) resolutions.push_back(parseInteger(flag, item, 1, 65536));
+    // The plugin's own bounds; it checks the GL's GL_MAX_TEXTURE_SIZE when it renders.
+    const shadowmap::SettingKey& resolution = shadowmap::settingKey("resolution");
+    for (const std::string& item : splitList(flag, text))
+        resolutions.push_back(parseInteger(flag, item, static_cast<int>(*resolution.minimum),
+                                           static_cast<int>(*resolution.maximum)));
     return resolutions;
 }
 
@@ -80,34 +91,40 @@ std::optional<engine::Light::Type> parseKeyLight(const std::string& text) {
 
 } // namespace
 
-const char* const kBenchUsage =
-    "usage: shadowmap-bench --out DIR [--config CONFIG.json] [--scene SCENE.gltf|.glb]...\n"
-    "  [--camera NAME] [--width W --height H] [--frames N]\n"
-    "  [--variants standard,woo,backface] [--resolutions 512,1024,2048,4096]\n"
-    "  [--depth-formats d16,d24,d32f] [--filters nearest,pcf]\n"
-    "  [--key-light spot|point|directional|none]\n"
-    "\n"
-    "Renders every scene with every combination of the listed settings applied to all of its\n"
-    "lights, times each light's shadow passes (median wall time over N frames, each pass closed\n"
-    "by glFinish) and measures its error against ray-traced shadows (Embree). Writes\n"
-    "  DIR/results.csv      scene,light,variant,resolution,depth_format,filter,shadow_ms,\n"
-    "                       frame_ms,acne,leak,error,error_noedge   (errors in percent)\n"
-    "  DIR/summary.md       per light: the most accurate setting within 2, 5, 10, 20, 50 ms of\n"
-    "                       shadow time, and the Pareto front of time against error\n"
-    "  DIR/time_vs_error.gp and .png  (one panel per scene; the png needs gnuplot)\n"
-    "\n"
-    "Defaults (the default sweep: 324 rows, about 6 minutes on 2 cores):\n"
-    "  --config   <source>/content/engine.json\n"
-    "  --scene    <source>/content/scenes/showcase.gltf and, when assimp-testmodels is\n"
-    "             installed, /usr/share/assimp/models/glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb;\n"
-    "             and the alpha-masked scenes with their opaque twins, masked_fence, opaque_fence,\n"
-    "             masked_canopy, opaque_canopy (.gltf), over the variants and resolutions at\n"
-    "             d24 and pcf only (else the first depth format and filter listed)\n"
-    "  --camera   the scene's first camera, else one framing the scene\n"
-    "  --width 1280 --height 720 --frames 5\n"
-    "  --variants standard,woo,backface --resolutions 512,1024,2048\n"
-    "  --depth-formats d16,d24,d32f --filters nearest,pcf\n"
-    "  --key-light spot   (added to scenes that have no light; none: such a scene is an error)\n";
+const char* benchUsage() {
+    // The lists and the masked scenes' format and filter are the plugin's (settingKeys()).
+    const shadowmap::ShadowSettings defaults;
+    static const std::string usage =
+        "usage: shadowmap-bench --out DIR [--config CONFIG.json] [--scene SCENE.gltf|.glb]...\n"
+        "  [--camera NAME] [--width W --height H] [--frames N]\n"
+        "  [--variants " + joined(knownVariants()) + "] [--resolutions 512,1024,2048,4096]\n"
+        "  [--depth-formats " + joined(knownFormats()) + "] [--filters " + joined(knownFilters()) + "]\n"
+        "  [--key-light spot|point|directional|none]\n"
+        "\n"
+        "Renders every scene with every combination of the listed settings applied to all of its\n"
+        "lights, times each light's shadow passes (median wall time over N frames, each pass closed\n"
+        "by glFinish) and measures its error against ray-traced shadows (Embree). Writes\n"
+        "  DIR/results.csv      scene,light,variant,resolution,depth_format,filter,shadow_ms,\n"
+        "                       frame_ms,acne,leak,error,error_noedge   (errors in percent)\n"
+        "  DIR/summary.md       per light: the most accurate setting within 2, 5, 10, 20, 50 ms of\n"
+        "                       shadow time, and the Pareto front of time against error\n"
+        "  DIR/time_vs_error.gp and .png  (one panel per scene; the png needs gnuplot)\n"
+        "\n"
+        "Defaults (the default sweep: 324 rows, about 6 minutes on 2 cores):\n"
+        "  --config   <source>/content/engine.json\n"
+        "  --scene    <source>/content/scenes/showcase.gltf and, when assimp-testmodels is\n"
+        "             installed, /usr/share/assimp/models/glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb;\n"
+        "             and the alpha-masked scenes with their opaque twins, masked_fence, opaque_fence,\n"
+        "             masked_canopy, opaque_canopy (.gltf), over the variants and resolutions at\n"
+        "             " + shadowmap::toString(defaults.depthFormat) + " and " + shadowmap::toString(defaults.filter) +
+        " only (else the first depth format and filter listed)\n"
+        "  --camera   the scene's first camera, else one framing the scene\n"
+        "  --width 1280 --height 720 --frames 5\n"
+        "  --variants " + joined(knownVariants()) + " --resolutions 512,1024,2048\n"
+        "  --depth-formats " + joined(knownFormats()) + " --filters " + joined(knownFilters()) + "\n"
+        "  --key-light spot   (added to scenes that have no light; none: such a scene is an error)\n";
+    return usage.c_str();
+}
 
 BenchOptions parseBenchOptions(int argc, char** argv) {
     BenchOptions options;
@@ -115,10 +132,10 @@ BenchOptions parseBenchOptions(int argc, char** argv) {
     options.width = kDefaultWidth;
     options.height = kDefaultHeight;
     options.frames = kDefaultFrames;
-    options.variants = kKnownVariants;
+    options.variants = knownVariants();
     options.resolutions = {512, 1024, 2048};
-    options.depthFormats = kKnownFormats;
-    options.filters = kKnownFilters;
+    options.depthFormats = knownFormats();
+    options.filters = knownFilters();
 
     options.help = tools::parseFlags(argc, argv, [&](const std::string& flag, const std::string& value) {
         if (flag == "--config") options.config = value;
@@ -129,10 +146,10 @@ BenchOptions parseBenchOptions(int argc, char** argv) {
         else if (flag == "--width") options.width = parseInteger(flag, value, 1, 16384);
         else if (flag == "--height") options.height = parseInteger(flag, value, 1, 16384);
         else if (flag == "--frames") options.frames = parseInteger(flag, value, 1, 10000);
-        else if (flag == "--variants") options.variants = parseNames(flag, value, kKnownVariants);
+        else if (flag == "--variants") options.variants = parseNames(flag, value, knownVariants());
         else if (flag == "--resolutions") options.resolutions = parseResolutions(flag, value);
-        else if (flag == "--depth-formats") options.depthFormats = parseNames(flag, value, kKnownFormats);
-        else if (flag == "--filters") options.filters = parseNames(flag, value, kKnownFilters);
+        else if (flag == "--depth-formats") options.depthFormats = parseNames(flag, value, knownFormats());
+        else if (flag == "--filters") options.filters = parseNames(flag, value, knownFilters());
         else if (flag == "--key-light") options.keyLight = parseKeyLight(value);
         else if (flag == "--out") options.out = value;
         else return false;

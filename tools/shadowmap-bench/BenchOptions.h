@@ -30,7 +30,8 @@ struct BenchOptions {
     bool help = false;
 };
 
-extern const char* const kBenchUsage;
+// --help's text; the settings it lists come from the shadow plugin's settings API.
+const char* benchUsage();
 
 // Throws std::invalid_argument with one line naming the flag and the reason.
 BenchOptions parseBenchOptions(int argc, char** argv);

@@ -8,6 +8,8 @@
 #include "engine/scene/SceneEdit.h"
 #include "engine/util/Error.h"
 
+#include "shadowmap/ShadowSettings.h"
+
 #include <algorithm>
 #include <filesystem>
 #include <iostream>
@@ -99,11 +101,13 @@ std::vector<ShadowSetting> maskedSettings(const BenchOptions& options) {
     const auto preferred = [](const std::vector<std::string>& listed, const std::string& name) {
         return std::find(listed.begin(), listed.end(), name) != listed.end() ? name : listed.front();
     };
+    // The plugin's default format and filter, when listed: what a scene gets unless it asks.
+    const shadowmap::ShadowSettings defaults;
     std::vector<ShadowSetting> settings;
     for (const std::string& variant : options.variants)
         for (int resolution : options.resolutions)
-            settings.push_back({variant, resolution, preferred(options.depthFormats, "d24"),
-                                preferred(options.filters, "pcf")});
+            settings.push_back({variant, resolution, preferred(options.depthFormats, shadowmap::toString(defaults.depthFormat)),
+                                preferred(options.filters, shadowmap::toString(defaults.filter))});
     return settings;
 }
 
@@ -119,9 +123,14 @@ std::vector<BenchRow> runSweep(std::vector<BenchScene>& scenes, const engine::Re
     for (BenchScene& scene : scenes) {
         // The evaluator builds the scene's Embree BVH once; settings change no geometry.
         evaluation::ShadowEvaluator evaluator(renderer, scene.scene);
-        for (const ShadowSetting& setting : scene.settings) {
+        for (std::size_t index = 0; index < scene.settings.size(); ++index) {
+            const ShadowSetting& setting = scene.settings[index];
             applyToEveryLight(scene.scene, setting);
-            renderer.setScene(scene.scene);  // the plugin's prepareScene re-reads the settings
+            // The first setting comes with the scene's upload; after it only settings change:
+            // the plugin re-reads every light's extras.shadow and re-renders the maps whose
+            // settings changed, and the geometry stays on the GPU.
+            if (index == 0) renderer.setScene(scene.scene);
+            else renderer.reloadSettings();
             // Untimed: llvmpipe compiles shaders at their first draw, and new maps are allocated.
             warmup.camera = scene.camera;
             renderer.renderFrame(warmup);

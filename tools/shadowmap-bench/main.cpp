@@ -99,7 +99,7 @@ int run(const BenchOptions& options, std::unique_ptr<engine::GlContext>& context
 } // namespace
 
 int main(int argc, char** argv) {
-    return tools::toolMain("shadowmap-bench", kBenchUsage, argc, argv, parseBenchOptions,
+    return tools::toolMain("shadowmap-bench", benchUsage(), argc, argv, parseBenchOptions,
                            [](const auto& options, tools::ToolSession& session) {
                                return run(options, session.context, session.host);
                            });

@@ -1,5 +1,7 @@
 #include "Sweeps.h"
 
+#include "shadowmap/ShadowSettings.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -224,13 +226,21 @@ std::vector<Sweep> makeSweeps(bool quick) {
             specialSweep(false)};
 }
 
-std::vector<std::string> defaultVariants() { return {"standard", "woo", "backface"}; }
+std::vector<std::string> defaultVariants() {
+    // Every variant the plugin has but "none", which renders no map to stress.
+    std::vector<std::string> variants = shadowmap::settingKey("variant").choices;
+    std::erase(variants, shadowmap::toString(shadowmap::Variant::None));
+    return variants;
+}
 
 std::vector<FormatSetting> knownFormats() {
-    return {{"d16", {{"depth_format", "d16"}}},
-            {"d24", {{"depth_format", "d24"}}},
-            {"d32f", {{"depth_format", "d32f"}}},
-            {"d32f_rz", {{"depth_format", "d32f"}, {"reversed_z", true}}}};
+    std::vector<FormatSetting> formats;
+    for (const std::string& format : shadowmap::settingKey("depth_format").choices)
+        formats.push_back({format, {{"depth_format", format}}});
+    // Reversed Z needs float depth (checkLimits): the one format it combines with.
+    const std::string reversible = shadowmap::toString(shadowmap::DepthFormat::D32F);
+    formats.push_back({reversible + "_rz", {{"depth_format", reversible}, {"reversed_z", true}}});
+    return formats;
 }
 
 std::vector<FormatSetting> defaultFormats(bool quick) {

@@ -20,6 +20,8 @@
 #include "engine/util/OutputFile.h"
 #include "engine/util/ProcessSetup.h"
 
+#include "shadowmap/ShadowSettings.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -229,7 +231,9 @@ struct Runner {
                 shadow["variant"] = variant;
                 shadow["resolution"] = options.resolution;
                 built.scene.lights[0].extras["shadow"] = shadow;
-                renderer.setScene(built.scene);  // the plugin re-reads the light's settings
+                // Only the light's settings changed: the plugin re-reads them and re-renders
+                // the map if they changed it, without uploading the scene again.
+                renderer.reloadSettings();
 
                 const evaluation::ViewResult view = evaluator.evaluate(built.camera, 0);
                 engine::FrameRequest request;
@@ -312,6 +316,8 @@ int run(const Options& options, std::unique_ptr<engine::GlContext>& context, eng
         }
     }
     std::vector<std::string> variants = options.variants.empty() ? stress::defaultVariants() : options.variants;
+    // A misspelt variant is refused here, by the plugin's own parser, before any rendering.
+    for (const std::string& variant : variants) shadowmap::parseVariant(variant, "--variants", "");
 
     const engine::EngineConfig config = makeConfig(options);
     context = engine::createEglContext();

@@ -7,16 +7,18 @@ namespace engine::json {
 
 void requireKnownKeys(const nlohmann::json& object, std::initializer_list<const char*> allowed,
                       const std::string& file, const std::string& where) {
+    requireKnownKeys(object, std::vector<std::string>(allowed.begin(), allowed.end()), file, where);
+}
+
+void requireKnownKeys(const nlohmann::json& object, const std::vector<std::string>& allowed,
+                      const std::string& file, const std::string& where) {
     if (!object.is_object()) throwInputError(file, where, "must be a JSON object");
     for (const auto& item : object.items()) {
-        const bool known = std::any_of(allowed.begin(), allowed.end(),
-                                       [&](const char* key) { return item.key() == key; });
-        if (!known) {
-            std::string list;
-            for (const char* key : allowed) list += (list.empty() ? "" : ", ") + std::string(key);
-            throwInputError(file, where.empty() ? item.key() : where + "." + item.key(),
-                            "unknown key (known: " + list + ")");
-        }
+        if (std::find(allowed.begin(), allowed.end(), item.key()) != allowed.end()) continue;
+        std::string list;
+        for (const std::string& key : allowed) list += (list.empty() ? "" : ", ") + key;
+        throwInputError(file, where.empty() ? item.key() : where + "." + item.key(),
+                        "unknown key (known: " + list + ")");
     }
 }
 

@@ -1,9 +1,9 @@
 #include "plugin/LightShadow.h"
 
+#include "plugin/DepthFormatGl.h"
+
 #include <epoxy/gl.h>
 
-#include <charconv>
-#include <cstdlib>
 #include <string>
 
 namespace shadowmap {
@@ -28,18 +28,6 @@ void LightShadow::ensureMap() {
     map.setParameter(GL_TEXTURE_MAG_FILTER, filter);
 }
 
-namespace {
-
-// A float setting as the decimal it was written as: float 0.4 widened to double would read
-// 0.4000000059604645; its shortest float decimal reads 0.4.
-double asWritten(float value) {
-    char text[32];
-    const auto end = std::to_chars(text, text + sizeof text, value).ptr;
-    return std::strtod(std::string(text, end).c_str(), nullptr);
-}
-
-} // namespace
-
 std::string LightShadow::mapResource() const { return "shadow_map_" + std::to_string(slot); }
 std::string LightShadow::depthPass() const { return "shadow_" + std::to_string(slot) + "_" + name; }
 std::string LightShadow::firstLayerPass() const { return depthPass() + "_first_layer"; }
@@ -49,8 +37,8 @@ nlohmann::json LightShadow::settingsJson() const {
             {"resolution", settings.resolution},
             {"depth_format", toString(settings.depthFormat)},
             {"filter", toString(settings.filter)},
-            {"polygon_offset", {asWritten(settings.effectivePolygonOffset().x), asWritten(settings.effectivePolygonOffset().y)}},
-            {"dimming", asWritten(settings.dimming)}};
+            {"polygon_offset", {jsonNumber(settings.effectivePolygonOffset().x), jsonNumber(settings.effectivePolygonOffset().y)}},
+            {"dimming", jsonNumber(settings.dimming)}};
 }
 
 nlohmann::json LightShadow::stats() const {

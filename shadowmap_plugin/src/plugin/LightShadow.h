@@ -3,7 +3,7 @@
 // texture for spot and directional lights, a cube for point lights, owned here so it can
 // outlive a frame), and what the last frame did with it.
 #include "math/LightFrustum.h"
-#include "plugin/ShadowSettings.h"
+#include "shadowmap/ShadowSettings.h"
 
 #include "engine/gl/Texture.h"
 #include "engine/render/ShadowView.h"

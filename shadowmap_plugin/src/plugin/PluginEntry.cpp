@@ -8,7 +8,7 @@
 
 namespace {
 
-// Plugin-wide keys besides the per-light defaults of ShadowSettings.h:
+// Plugin-wide keys besides the per-light defaults of shadowmap/ShadowSettings.h:
 //   "cache_maps": true (default) keeps a light's map across frames while nothing it
 //   depends on changed, and lets the lit pass reuse its shade; false re-renders every map
 //   and recomputes every shade every frame (for timing the passes).

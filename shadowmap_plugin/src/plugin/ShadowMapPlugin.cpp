@@ -1,5 +1,6 @@
 #include "plugin/ShadowMapPlugin.h"
 
+#include "plugin/DepthFormatGl.h"
 #include "plugin/MapCacheKey.h"
 
 #include "engine/scene/FrustumCull.h"
@@ -176,7 +177,7 @@ bool ShadowMapPlugin::planLight(LightShadow& light, const engine::Frame& frame,
         plan.skipReason = "the light emits nothing";
         return false;
     }
-    // Forced near/far and reversed Z (ShadowSettings.h). A directional light's depth is
+    // Forced near/far and reversed Z (shadowmap/ShadowSettings.h). A directional light's depth is
     // linear and fitted to what it must hold: forced planes are ignored there (said once).
     FrustumFitOptions fitOptions;
     fitOptions.reversedZ = light.settings.reversedZ;
@@ -379,7 +380,7 @@ engine::LightVisibilityHook ShadowMapPlugin::makeHook(const engine::Frame& frame
         // y: reference bias subtracted from r: d32f without reversed Z computes r near 1 with
         //    an absolute float error, which float polygon-offset units (relative) do not
         //    cover below depth 0.5; units * 2^-24 restores the d24 meaning of units there
-        //    (ShadowSettings.h).
+        //    (shadowmap/ShadowSettings.h).
         const bool floatForward = light.settings.depthFormat == DepthFormat::D32F && !light.settings.reversedZ;
         const float referenceBias =
             floatForward ? static_cast<float>(std::abs(light.settings.effectivePolygonOffset().y) * std::ldexp(1.0, -24))

@@ -3,7 +3,7 @@
 // visibility hook (texgen eye planes, hardware comparison, ambient-retaining modulate).
 #include "plugin/DepthRenderer.h"
 #include "plugin/LightShadow.h"
-#include "plugin/ShadowSettings.h"
+#include "shadowmap/ShadowSettings.h"
 
 #include "engine/gl/Sampler.h"
 #include "engine/plugin/RenderPlugin.h"

@@ -187,3 +187,51 @@ TEST_F(SkipWork, CachedMapsGiveTheSameMasksAsFreshOnes) {
                 << "frame " << frame << ", light slot " << slot;
     }
 }
+
+TEST_F(SkipWork, ReloadedSettingsRerenderOnlyTheChangedLightAndMatchAFreshScene) {
+    // The sweeps (shadowmap-bench, shadowmap-stress) and engine-view change settings through
+    // Renderer::reloadSettings, not setScene: the plugin must re-read extras.shadow, re-render
+    // the maps whose settings changed, keep the others, and give exactly the images of a
+    // plugin that prepared the edited scene from scratch.
+    SceneBuilder builder = boxOverFloor();
+    builder.addLight("spot", Light::Type::Spot, {-3, 8, -2}, {0, 0, 0});  // scene.lights[0]
+    builder.addLight("bulb", Light::Type::Point, {1, 4, 2}, {1, 0, 2});   // scene.lights[1]
+    engine::Scene scene = builder.build();
+
+    engine::PluginHost freshHost;
+    freshHost.load({"shadowmap_plugin", {{"resolution", 256}}}, {ENGINE_PLUGIN_DIR});
+    engine::Renderer reloaded({}, plugins()), fresh({}, freshHost.renderPlugins());
+    reloaded.setScene(scene);
+    engine::FrameRequest request;
+    request.camera = engine::test::cameraLooking({0, 12, 10}, {0, 0, 0}, 96, 72);
+    request.shadowMaskSlots = {0, 1};
+    reloaded.renderFrame(request);
+
+    struct Edit {
+        const char* what;
+        nlohmann::json shadow;  // the spot's new extras.shadow
+        const char* spotCache;  // "miss": the edit changes the map; "hit": only how it is read
+    };
+    const Edit edits[] = {
+        {"resolution", {{"resolution", 128}}, "miss"},
+        {"depth format and offset", {{"resolution", 128}, {"depth_format", "d32f"}, {"polygon_offset", {1.0, 4.0}}}, "miss"},
+        {"filter and dimming", {{"resolution", 128}, {"depth_format", "d32f"}, {"polygon_offset", {1.0, 4.0}},
+                                {"filter", "nearest"}, {"dimming", 0.1}}, "hit"},
+    };
+    for (const Edit& edit : edits) {
+        SCOPED_TRACE(edit.what);
+        scene.lights[0].extras = {{"shadow", edit.shadow}};
+        reloaded.reloadSettings();
+        const engine::FrameResult frame = reloaded.renderFrame(request);
+        const nlohmann::json& lights = frame.pluginStats["shadowmap"]["lights"];
+        EXPECT_EQ(lights[0]["cache"], edit.spotCache);
+        EXPECT_EQ(lights[1]["cache"], "hit") << "the bulb's settings did not change";
+        EXPECT_EQ(lights[0]["resolution"], 128);
+        EXPECT_EQ(lights[0]["filter"], edit.shadow.value("filter", "pcf"));
+
+        fresh.setScene(scene);
+        fresh.renderFrame(request);
+        for (int slot : {0, 1}) EXPECT_EQ(reloaded.readShadowMask(slot), fresh.readShadowMask(slot)) << "slot " << slot;
+        EXPECT_EQ(reloaded.readColor(), fresh.readColor()) << "dimming reaches the shaded image";
+    }
+}

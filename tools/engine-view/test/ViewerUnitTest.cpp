@@ -8,8 +8,11 @@
 
 #include "engine/util/Error.h"
 
+#include "shadowmap/ShadowSettings.h"
+
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -208,6 +211,36 @@ TEST(ViewerState, KeysCycleTheSelectedLightsSettings) {
     EXPECT_TRUE(state.select("key"));
     EXPECT_FALSE(state.select("moon"));
     EXPECT_EQ(state.selected(), 0);
+}
+
+TEST(ViewerState, KeysCycleThroughWhatThePluginAccepts) {
+    // Starting from the plugin's defaults (no config, no extras), each key visits every
+    // allowed value of the settings API once, in its order, and comes back.
+    engine::Scene scene = twoLights();
+    ViewerState state(scene, nlohmann::json::object());
+    const auto visit = [&](const char* key, auto cycle) {
+        std::vector<nlohmann::json> seen = {state.effective(0)[key]};
+        for (std::size_t i = 0; i < 8 && (seen.size() == 1 || seen.back() != seen.front()); ++i) {
+            (state.*cycle)();
+            seen.push_back(scene.lights[0].extras["shadow"][key]);
+        }
+        seen.pop_back();  // back at the start
+        return seen;
+    };
+    const auto rotatedFrom = [](std::vector<std::string> values, const std::string& first) {
+        std::rotate(values.begin(), std::find(values.begin(), values.end(), first), values.end());
+        return std::vector<nlohmann::json>(values.begin(), values.end());
+    };
+    const shadowmap::ShadowSettings defaults;
+    EXPECT_EQ(visit("variant", &ViewerState::cycleVariant),
+              rotatedFrom(shadowmap::settingKey("variant").choices, shadowmap::toString(defaults.variant)));
+    EXPECT_EQ(visit("depth_format", &ViewerState::cycleDepthFormat),
+              rotatedFrom(shadowmap::settingKey("depth_format").choices, shadowmap::toString(defaults.depthFormat)));
+    EXPECT_EQ(visit("filter", &ViewerState::toggleFilter),
+              rotatedFrom(shadowmap::settingKey("filter").choices, shadowmap::toString(defaults.filter)));
+    EXPECT_EQ(visit("resolution", &ViewerState::cycleResolution),
+              (std::vector<nlohmann::json>{2048, 4096, 512, 1024}));
+    EXPECT_EQ(state.effective(0)["dimming"], 0.4);
 }
 
 TEST(ViewerState, ViewsHaveNames) {

@@ -1,4 +1,11 @@
 #pragma once
+// The shadow plugin's per-light settings, public: one home for what a setting is, its
+// default, the values it accepts, how it is read from JSON and written back. The plugin
+// module resolves every light through it; the tools (engine-view, shadowmap-bench,
+// shadowmap-stress) ask it for defaults and allowed values instead of repeating them, and
+// the README's settings table is checked against settingKeys() by a test.
+// No GL here: the GL side of a depth format lives with the plugin (plugin/DepthFormatGl.h).
+//
 // Per-light shadow settings and where they come from, most specific last:
 //   built-in defaults  <-  plugin settings in the engine config  <-  the light's glTF
 //   extras.shadow  <-  engine-render --light NAME=VARIANT.
@@ -28,7 +35,7 @@
 //    with factor 1 it showed acne on 14-18% of the showcase's lit pixels (spot and sun).
 // An explicit polygon_offset is used as is.
 //   dimming         d in [0,1]: shadowed diffuse keeps d       0.4
-// Numerical range and precision (issue 8, measured by tools/shadowmap-stress):
+// Numerical range and precision (measured by tools/shadowmap-stress):
 //   near_plane      > 0, world units: the light frustum's near  fitted (nearest caster or
 //                   distance instead of the fitted one (spot,  receiver in the frustum, at
 //                   point; directional lights ignore it with   least far * 1e-4)
@@ -69,14 +76,13 @@
 // while float polygon-offset units shrink with the depth; the lookup then subtracts
 // units * 2^-24 from the reference (the d24 meaning of units) so depths below 0.5 keep
 // their bias.
-#include "engine/graph/TextureDesc.h"
-
 #include <glm/glm.hpp>
 #include <nlohmann/json.hpp>
 
 #include <optional>
-
 #include <string>
+#include <string_view>
+#include <vector>
 
 namespace shadowmap {
 
@@ -84,10 +90,17 @@ enum class Variant { Standard, Woo, Backface, None };
 enum class DepthFormat { D16, D24, D32F };
 enum class Filter { Nearest, Pcf };
 
+// The names the JSON uses ("standard", "d24", "pcf").
 const char* toString(Variant);
 const char* toString(DepthFormat);
 const char* toString(Filter);
 
+// The polygon offset [factor, units] a depth pass uses when none is explicit (see the
+// table above): standard: units 8 (128 with reversed Z), factor 1 for one tap and 2 for
+// PCF; woo, backface and none: no offset.
+glm::vec2 defaultPolygonOffset(Variant variant, Filter filter, bool reversedZ);
+
+// Default-constructed: the built-in defaults (the table above).
 struct ShadowSettings {
     Variant variant = Variant::Standard;
     int resolution = 2048;
@@ -95,16 +108,14 @@ struct ShadowSettings {
     Filter filter = Filter::Pcf;
     std::optional<glm::vec2> polygonOffset;  // unset: the variant's default
 
-    // The offset a two-sided depth draw needs: the explicit one, else the filter's default
-    // (units 128 with reversed Z: see the table above).
+    // The offset a two-sided depth draw needs: the explicit one, else the standard
+    // variant's default for this filter and depth direction.
     glm::vec2 standardPolygonOffset() const {
-        return polygonOffset ? *polygonOffset
-                             : glm::vec2(filter == Filter::Pcf ? 2.0f : 1.0f, reversedZ ? 128.0f : 8.0f);
+        return polygonOffset ? *polygonOffset : defaultPolygonOffset(Variant::Standard, filter, reversedZ);
     }
     // The offset of this light's depth pass.
     glm::vec2 effectivePolygonOffset() const {
-        if (variant == Variant::Standard) return standardPolygonOffset();
-        return polygonOffset ? *polygonOffset : glm::vec2(0.0f);
+        return polygonOffset ? *polygonOffset : defaultPolygonOffset(variant, filter, reversedZ);
     }
     float dimming = 0.4f;
     // See the table above. 0 = fitted / unclamped; farPlane may be +infinity.
@@ -116,10 +127,16 @@ struct ShadowSettings {
     bool operator==(const ShadowSettings&) const = default;
 };
 
+// ---- Reading -----------------------------------------------------------------------------
+// Every bad value throws engine::InputError "source: object.key: reason", e.g.
+// "scene.gltf: light \"sun\": extras.shadow.dimming: must be in [0, 1], got 1.5".
+
 // Applies the keys of `json` (an object) over `settings`. `source` and `object` name where
 // the JSON came from for messages, e.g. ("scene.gltf", "light \"sun\": extras.shadow").
 void applySettings(ShadowSettings& settings, const nlohmann::json& json, const std::string& source,
                    const std::string& object);
+// applySettings over the built-in defaults: parseSettings(printSettings(s), ...) == s.
+ShadowSettings parseSettings(const nlohmann::json& json, const std::string& source, const std::string& object);
 
 Variant parseVariant(const std::string& text, const std::string& source, const std::string& object);
 
@@ -128,9 +145,48 @@ Variant parseVariant(const std::string& text, const std::string& source, const s
 void checkLimits(const ShadowSettings& settings, int maxTextureSize, const std::string& source,
                  const std::string& object);
 
-unsigned glInternalFormat(DepthFormat format);
-// The depth step of a format near 1 (fixed point: 1/(2^bits - 1); d32f: 2^-24).
-double depthStep(DepthFormat format);
-engine::TextureFormat graphFormat(DepthFormat format);
+// ---- Writing -----------------------------------------------------------------------------
+
+// The settings as an extras.shadow object that parseSettings() reads back to equal
+// settings: every key that holds a value (variant, resolution, depth_format, filter,
+// dimming, reversed_z, polygon_offset_clamp always; polygon_offset when explicit;
+// near_plane and far_plane when forced, far_plane "infinite" for an infinite one). A key
+// left out means "the default", which for those three is not a number: the variant's
+// offset, the fitted plane.
+nlohmann::json printSettings(const ShadowSettings& settings);
+
+// A float setting as the decimal it was written as: float 0.4 widened to double would read
+// 0.4000000059604645; its shortest float decimal reads 0.4 and parses back to the same float.
+double jsonNumber(float value);
+
+// ---- Allowed values per key --------------------------------------------------------------
+
+enum class SettingKind {
+    Choice,      // a string among `choices`
+    Integer,     // a whole number in [minimum, maximum]
+    Number,      // a finite number; `minimum`/`maximum` bound it where set; `choices` lists
+                 // words accepted instead of a number ("infinite")
+    NumberPair,  // [a, b] of finite numbers
+    Boolean,     // true or false
+};
+
+// One key of extras.shadow (and of the plugin's config settings), for tools and docs.
+struct SettingKey {
+    std::string name;                   // as in JSON: "depth_format"
+    SettingKind kind = SettingKind::Choice;
+    std::vector<std::string> choices;   // every accepted string, in declaration order
+    std::optional<double> minimum;      // inclusive bounds (exclusive ones are in `values`)
+    std::optional<double> maximum;
+    std::vector<double> steps;          // Integer: the values worth stepping through
+    std::string values;                 // what it accepts, as people read it
+    nlohmann::json defaultValue;        // printSettings(ShadowSettings{})[name]; null: none
+    std::string defaultNote;            // the default in words when it is no single value
+    std::string description;            // one line
+};
+
+// Every key applySettings() accepts, in the order the error messages list them.
+const std::vector<SettingKey>& settingKeys();
+// The key of that name; std::logic_error for a name that is no key (a caller's bug).
+const SettingKey& settingKey(std::string_view name);
 
 } // namespace shadowmap

@@ -1,10 +1,12 @@
-#include "plugin/ShadowSettings.h"
+// Reading and checking shadow settings (shadowmap/ShadowSettings.h): every bad value is an
+// InputError naming the source, the light and the key, with the reason.
+#include "shadowmap/ShadowSettings.h"
+
+#include "settings/EnumNames.h"
 
 #include "engine/util/Error.h"
 #include "engine/util/FormatNumber.h"
 #include "engine/util/JsonRead.h"
-
-#include <epoxy/gl.h>
 
 #include <cmath>
 #include <limits>
@@ -25,28 +27,32 @@ Enum parseEnum(const std::string& text, const char* const (&names)[N], const cha
                             "unknown " + std::string(what) + " \"" + text + "\" (known: " + known + ")");
 }
 
-constexpr const char* kVariantNames[] = {"standard", "woo", "backface", "none"};
-constexpr const char* kFormatNames[] = {"d16", "d24", "d32f"};
-constexpr const char* kFilterNames[] = {"nearest", "pcf"};
+std::vector<std::string> keyNames() {
+    std::vector<std::string> names;
+    for (const SettingKey& key : settingKeys()) names.push_back(key.name);
+    return names;
+}
 
 } // namespace
 
-const char* toString(Variant variant) { return kVariantNames[static_cast<int>(variant)]; }
-const char* toString(DepthFormat format) { return kFormatNames[static_cast<int>(format)]; }
-const char* toString(Filter filter) { return kFilterNames[static_cast<int>(filter)]; }
+const char* toString(Variant variant) { return names::kVariants[static_cast<int>(variant)]; }
+const char* toString(DepthFormat format) { return names::kDepthFormats[static_cast<int>(format)]; }
+const char* toString(Filter filter) { return names::kFilters[static_cast<int>(filter)]; }
+
+glm::vec2 defaultPolygonOffset(Variant variant, Filter filter, bool reversedZ) {
+    if (variant != Variant::Standard) return glm::vec2(0.0f);
+    return glm::vec2(filter == Filter::Pcf ? 2.0f : 1.0f, reversedZ ? 128.0f : 8.0f);
+}
 
 Variant parseVariant(const std::string& text, const std::string& source, const std::string& object) {
-    return parseEnum<Variant>(text, kVariantNames, "variant", source, object);
+    return parseEnum<Variant>(text, names::kVariants, "variant", source, object);
 }
 
 void applySettings(ShadowSettings& settings, const nlohmann::json& json, const std::string& source,
                    const std::string& object) {
     namespace json_read = engine::json;
-    json_read::requireKnownKeys(json,
-                                {"variant", "resolution", "depth_format", "filter",
-                                 "polygon_offset", "dimming", "near_plane", "far_plane",
-                                 "reversed_z", "polygon_offset_clamp"},
-                                source, object);
+    static const std::vector<std::string> known = keyNames();
+    json_read::requireKnownKeys(json, known, source, object);
     const auto key = [&](const char* name) { return object + "." + name; };
     if (json.contains("variant"))
         settings.variant = parseVariant(json_read::readString(json["variant"], source, key("variant")),
@@ -58,19 +64,20 @@ void applySettings(ShadowSettings& settings, const nlohmann::json& json, const s
                                     "must be a whole number of texels >= 1, got " +
                                         json["resolution"].dump());
         // Beyond any GL's texture size; checkLimits() compares with this GL's own limit.
-        if (resolution > 1 << 20)
+        static const double bound = *settingKey("resolution").maximum;
+        if (resolution > bound)
             engine::throwInputError(source, key("resolution"),
                                     json["resolution"].dump() + " texels is beyond any GL_MAX_TEXTURE_SIZE");
         settings.resolution = static_cast<int>(resolution);
     }
     if (json.contains("depth_format"))
         settings.depthFormat = parseEnum<DepthFormat>(
-            json_read::readString(json["depth_format"], source, key("depth_format")), kFormatNames,
+            json_read::readString(json["depth_format"], source, key("depth_format")), names::kDepthFormats,
             "depth format", source, key("depth_format"));
     if (json.contains("filter"))
         settings.filter =
             parseEnum<Filter>(json_read::readString(json["filter"], source, key("filter")),
-                              kFilterNames, "filter", source, key("filter"));
+                              names::kFilters, "filter", source, key("filter"));
     if (json.contains("polygon_offset")) {
         const auto& offset = json["polygon_offset"];
         if (!offset.is_array() || offset.size() != 2)
@@ -81,11 +88,14 @@ void applySettings(ShadowSettings& settings, const nlohmann::json& json, const s
     }
     if (json.contains("dimming")) {
         const double dimming = json_read::readNumber(json["dimming"], source, key("dimming"));
-        if (dimming < 0.0 || dimming > 1.0)
-            engine::throwInputError(source, key("dimming"), "must be in [0, 1], got " + json["dimming"].dump());
+        static const SettingKey& range = settingKey("dimming");
+        if (dimming < *range.minimum || dimming > *range.maximum)
+            engine::throwInputError(source, key("dimming"),
+                                    "must be in [" + engine::formatNumber(*range.minimum) + ", " +
+                                        engine::formatNumber(*range.maximum) + "], got " + json["dimming"].dump());
         settings.dimming = static_cast<float>(dimming);
     }
-    // Frustum overrides and precision (issue 8): world distances along the light's axis.
+    // Frustum overrides and precision: world distances along the light's axis.
     if (json.contains("near_plane")) {
         const double nearPlane = json_read::readNumber(json["near_plane"], source, key("near_plane"));
         if (!(nearPlane > 0.0))
@@ -118,6 +128,12 @@ void applySettings(ShadowSettings& settings, const nlohmann::json& json, const s
     }
 }
 
+ShadowSettings parseSettings(const nlohmann::json& json, const std::string& source, const std::string& object) {
+    ShadowSettings settings;
+    applySettings(settings, json, source, object);
+    return settings;
+}
+
 void checkLimits(const ShadowSettings& settings, int maxTextureSize, const std::string& source,
                  const std::string& object) {
     if (settings.variant != Variant::None && settings.resolution > maxTextureSize)
@@ -134,33 +150,6 @@ void checkLimits(const ShadowSettings& settings, int maxTextureSize, const std::
         engine::throwInputError(source, object + ".far_plane",
                                 "must be beyond near_plane (" + engine::formatNumber(settings.nearPlane) +
                                     "), got " + engine::formatNumber(settings.farPlane));
-}
-
-unsigned glInternalFormat(DepthFormat format) {
-    switch (format) {
-    case DepthFormat::D16: return GL_DEPTH_COMPONENT16;
-    case DepthFormat::D24: return GL_DEPTH_COMPONENT24;
-    case DepthFormat::D32F: return GL_DEPTH_COMPONENT32F;
-    }
-    return GL_DEPTH_COMPONENT24;
-}
-
-double depthStep(DepthFormat format) {
-    switch (format) {
-    case DepthFormat::D16: return 1.0 / 65535.0;
-    case DepthFormat::D24: return 1.0 / 16777215.0;
-    case DepthFormat::D32F: return std::ldexp(1.0, -24);
-    }
-    return 1.0 / 16777215.0;
-}
-
-engine::TextureFormat graphFormat(DepthFormat format) {
-    switch (format) {
-    case DepthFormat::D16: return engine::TextureFormat::Depth16;
-    case DepthFormat::D24: return engine::TextureFormat::Depth24;
-    case DepthFormat::D32F: return engine::TextureFormat::Depth32F;
-    }
-    return engine::TextureFormat::Depth24;
 }
 
 } // namespace shadowmap

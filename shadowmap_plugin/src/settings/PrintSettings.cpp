@@ -1,0 +1,36 @@
+// Settings back to JSON (shadowmap/ShadowSettings.h), in the form applySettings() reads.
+#include "shadowmap/ShadowSettings.h"
+
+#include <charconv>
+#include <cmath>
+#include <cstdlib>
+#include <string>
+
+namespace shadowmap {
+
+double jsonNumber(float value) {
+    char text[32];
+    const auto end = std::to_chars(text, text + sizeof text, value).ptr;
+    return std::strtod(std::string(text, end).c_str(), nullptr);
+}
+
+nlohmann::json printSettings(const ShadowSettings& settings) {
+    nlohmann::json out = {{"variant", toString(settings.variant)},
+                          {"resolution", settings.resolution},
+                          {"depth_format", toString(settings.depthFormat)},
+                          {"filter", toString(settings.filter)},
+                          {"dimming", jsonNumber(settings.dimming)},
+                          {"reversed_z", settings.reversedZ},
+                          {"polygon_offset_clamp", jsonNumber(settings.polygonOffsetClamp)}};
+    if (settings.polygonOffset)
+        out["polygon_offset"] = {jsonNumber(settings.polygonOffset->x), jsonNumber(settings.polygonOffset->y)};
+    // 0 stands for "fitted", which applySettings() does not accept as a distance.
+    if (settings.nearPlane > 0.0) out["near_plane"] = settings.nearPlane;
+    if (settings.farPlane > 0.0) {
+        if (std::isinf(settings.farPlane)) out["far_plane"] = "infinite";  // JSON has no infinity
+        else out["far_plane"] = settings.farPlane;
+    }
+    return out;
+}
+
+} // namespace shadowmap

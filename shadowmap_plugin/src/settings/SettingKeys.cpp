@@ -1,0 +1,142 @@
+// The allowed-values table (shadowmap/ShadowSettings.h): what each key accepts, its
+// default and what it means. Choices come from the enums' JSON names and defaults from
+// printSettings(ShadowSettings{}), so the table cannot disagree with parsing or defaults.
+#include "shadowmap/ShadowSettings.h"
+
+#include "settings/EnumNames.h"
+
+#include "engine/util/FormatNumber.h"
+
+#include <stdexcept>
+
+namespace shadowmap {
+
+namespace {
+
+template <std::size_t N>
+std::vector<std::string> choicesOf(const char* const (&names)[N]) {
+    return std::vector<std::string>(std::begin(names), std::end(names));
+}
+
+std::string pair(glm::vec2 value) {
+    std::string text = "[";
+    text += engine::formatNumber(value.x) + ", " + engine::formatNumber(value.y) + "]";
+    return text;
+}
+
+// The standard variant's default offsets in words, from defaultPolygonOffset() itself.
+std::string defaultOffsetNote() {
+    const glm::vec2 nearest = defaultPolygonOffset(Variant::Standard, Filter::Nearest, false);
+    const glm::vec2 pcf = defaultPolygonOffset(Variant::Standard, Filter::Pcf, false);
+    const glm::vec2 reversed = defaultPolygonOffset(Variant::Standard, Filter::Pcf, true);
+    std::string note = "standard: ";
+    note += pair(nearest) + " " + toString(Filter::Nearest) + ", " + pair(pcf) + " " + toString(Filter::Pcf);
+    note += ", units " + engine::formatNumber(reversed.y) + " with reversed_z; ";
+    note += std::string(toString(Variant::Woo)) + ", " + toString(Variant::Backface) + ": none";
+    return note;
+}
+
+SettingKey makeKey(const char* name, SettingKind kind) {
+    SettingKey key;
+    key.name = name;
+    key.kind = kind;
+    return key;
+}
+
+std::vector<SettingKey> makeKeys() {
+    std::vector<SettingKey> keys;
+
+    SettingKey variant = makeKey("variant", SettingKind::Choice);
+    variant.choices = choicesOf(names::kVariants);
+    variant.description = "how the light's map is made: `standard` one depth pass with polygon offset, "
+                          "`woo` the midpoint of the first two layers, `backface` back faces only "
+                          "(closed meshes), `none` no shadow and no pass";
+    keys.push_back(variant);
+
+    SettingKey resolution = makeKey("resolution", SettingKind::Integer);
+    resolution.minimum = 1;
+    resolution.maximum = 1 << 20;  // beyond any GL; the GL's own GL_MAX_TEXTURE_SIZE is checked too
+    resolution.steps = {512, 1024, 2048, 4096};
+    resolution.values = "1 … GL_MAX_TEXTURE_SIZE";
+    resolution.description = "texels per side of the map (of each cube face for a point light)";
+    keys.push_back(resolution);
+
+    SettingKey format = makeKey("depth_format", SettingKind::Choice);
+    format.choices = choicesOf(names::kDepthFormats);
+    format.description = "the map's depth: 16- or 24-bit fixed point, or 32-bit float";
+    keys.push_back(format);
+
+    SettingKey filter = makeKey("filter", SettingKind::Choice);
+    filter.choices = choicesOf(names::kFilters);
+    filter.description = "`nearest` one tap, `pcf` 2×2 bilinear percentage-closer filtering";
+    keys.push_back(filter);
+
+    SettingKey offset = makeKey("polygon_offset", SettingKind::NumberPair);
+    offset.values = "`[factor, units]`";
+    offset.defaultNote = defaultOffsetNote();
+    offset.description = "glPolygonOffset of the depth pass (woo: of both its passes), in texels of "
+                         "slope and steps of the depth format";
+    keys.push_back(offset);
+
+    SettingKey dimming = makeKey("dimming", SettingKind::Number);
+    dimming.minimum = 0;
+    dimming.maximum = 1;
+    dimming.values = "0 … 1";
+    dimming.description = "the share of its diffuse light a shadowed surface keeps";
+    keys.push_back(dimming);
+
+    SettingKey nearPlane = makeKey("near_plane", SettingKind::Number);
+    nearPlane.values = "> 0, world units";
+    nearPlane.defaultNote = "fitted";
+    nearPlane.description = "the near distance of a spot or point light's frustum instead of the fitted "
+                            "one (directional lights ignore it)";
+    keys.push_back(nearPlane);
+
+    SettingKey farPlane = makeKey("far_plane", SettingKind::Number);
+    farPlane.choices = {"infinite"};
+    farPlane.values = "> near_plane, world units, or `infinite`";
+    farPlane.defaultNote = "fitted; with reversed_z: infinite";
+    farPlane.description = "the far distance instead of the fitted one (spot and point lights)";
+    keys.push_back(farPlane);
+
+    SettingKey reversedZ = makeKey("reversed_z", SettingKind::Boolean);
+    reversedZ.values = "`true`, `false`";
+    reversedZ.description = "depth 1 at near and 0 at far (glClipControl), float precision at any range; "
+                            "needs depth_format `d32f`";
+    keys.push_back(reversedZ);
+
+    SettingKey clamp = makeKey("polygon_offset_clamp", SettingKind::Number);
+    clamp.minimum = 0;
+    clamp.values = "≥ 0, a slope";
+    clamp.description = "the slope at which the offset's slope-scaled part stops growing "
+                        "(glPolygonOffsetClamp); 0: unclamped";
+    keys.push_back(clamp);
+
+    const nlohmann::json defaults = printSettings(ShadowSettings{});
+    for (SettingKey& key : keys) {
+        if (defaults.contains(key.name)) key.defaultValue = defaults[key.name];
+        if (key.kind == SettingKind::Choice) {
+            key.values.clear();
+            for (const std::string& choice : key.choices) {
+                key.values += key.values.empty() ? "`" : ", `";
+                key.values += choice + "`";
+            }
+        }
+    }
+    return keys;
+}
+
+} // namespace
+
+const std::vector<SettingKey>& settingKeys() {
+    static const std::vector<SettingKey> keys = makeKeys();
+    return keys;
+}
+
+const SettingKey& settingKey(std::string_view name) {
+    for (const SettingKey& key : settingKeys())
+        if (key.name == name) return key;
+    throw std::logic_error("no shadow setting \"" + std::string(name) + "\"");
+}
+
+} // namespace shadowmap

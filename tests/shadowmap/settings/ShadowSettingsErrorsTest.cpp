@@ -1,0 +1,126 @@
+// Every bad value is an InputError whose one line names the source file, the light, the key
+// and the reason, e.g. scene.gltf: light "sun": extras.shadow.dimming: must be in [0, 1], got 1.5
+#include "shadowmap/ShadowSettings.h"
+
+#include "engine/util/Error.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <string>
+
+namespace {
+
+constexpr const char* kSource = "scene.gltf";
+constexpr const char* kObject = "light \"sun\": extras.shadow";
+
+struct BadValue {
+    const char* what;      // for failure messages
+    nlohmann::json json;   // the light's extras.shadow
+    std::string key;       // the key path the message must name
+    std::string reason;    // the reason it must give
+};
+
+// The message of the InputError that applySettings (and then checkLimits, with a GL limit
+// of 4096 texels) throws for `json`; "no error" when neither throws.
+std::string errorOf(const nlohmann::json& json) {
+    try {
+        const shadowmap::ShadowSettings settings = shadowmap::parseSettings(json, kSource, kObject);
+        shadowmap::checkLimits(settings, 4096, kSource, kObject);
+    } catch (const engine::InputError& error) {
+        return error.what();
+    }
+    return "no error";
+}
+
+void expectNamed(const BadValue& bad) {
+    const std::string message = errorOf(bad.json);
+    SCOPED_TRACE(std::string(bad.what) + ": " + bad.json.dump() + " -> " + message);
+    EXPECT_EQ(message.rfind(kSource, 0), 0u) << "the source comes first";
+    EXPECT_NE(message.find("light \"sun\""), std::string::npos);
+    EXPECT_NE(message.find(std::string(kObject) + "." + bad.key + ": "), std::string::npos) << bad.key;
+    EXPECT_NE(message.find(bad.reason), std::string::npos) << bad.reason;
+}
+
+const double kNaN = std::numeric_limits<double>::quiet_NaN();
+const double kInfinity = std::numeric_limits<double>::infinity();
+
+} // namespace
+
+TEST(ShadowSettingsErrors, UnknownKeyListsTheKnownOnes) {
+    std::string known;
+    for (const shadowmap::SettingKey& key : shadowmap::settingKeys()) known += (known.empty() ? "" : ", ") + key.name;
+    EXPECT_EQ(known, "variant, resolution, depth_format, filter, polygon_offset, dimming, near_plane, far_plane, "
+                     "reversed_z, polygon_offset_clamp");
+    expectNamed({"unknown key", {{"colour", "red"}}, "colour", "unknown key (known: " + known + ")"});
+}
+
+TEST(ShadowSettingsErrors, BadChoicesNameTheKnownValues) {
+    expectNamed({"variant", {{"variant", "soft"}}, "variant",
+                 "unknown variant \"soft\" (known: standard, woo, backface, none)"});
+    expectNamed({"variant type", {{"variant", 3}}, "variant", "must be a string"});
+    expectNamed({"depth format", {{"depth_format", "d32"}}, "depth_format",
+                 "unknown depth format \"d32\" (known: d16, d24, d32f)"});
+    expectNamed({"filter", {{"filter", "linear"}}, "filter", "unknown filter \"linear\" (known: nearest, pcf)"});
+    expectNamed({"reversed_z type", {{"reversed_z", "yes"}}, "reversed_z", "must be true or false"});
+}
+
+TEST(ShadowSettingsErrors, BadNumbersSayWhatIsAccepted) {
+    expectNamed({"resolution 0", {{"resolution", 0}}, "resolution", "must be a whole number of texels >= 1, got 0"});
+    expectNamed({"resolution 1.5", {{"resolution", 1.5}}, "resolution",
+                 "must be a whole number of texels >= 1, got 1.5"});
+    expectNamed({"resolution 2^21", {{"resolution", 1 << 21}}, "resolution",
+                 "2097152 texels is beyond any GL_MAX_TEXTURE_SIZE"});
+    expectNamed({"resolution NaN", {{"resolution", kNaN}}, "resolution", "must be finite"});
+    expectNamed({"resolution text", {{"resolution", "big"}}, "resolution", "must be a number"});
+    expectNamed({"dimming 1.5", {{"dimming", 1.5}}, "dimming", "must be in [0, 1], got 1.5"});
+    expectNamed({"dimming -0.1", {{"dimming", -0.1}}, "dimming", "must be in [0, 1], got -0.1"});
+    expectNamed({"dimming NaN", {{"dimming", kNaN}}, "dimming", "must be finite"});
+    expectNamed({"near_plane 0", {{"near_plane", 0}}, "near_plane", "must be a distance > 0, got 0"});
+    expectNamed({"near_plane infinite", {{"near_plane", kInfinity}}, "near_plane", "must be finite"});
+    expectNamed({"far_plane word", {{"far_plane", "far"}}, "far_plane",
+                 "must be a distance > 0 or \"infinite\", got \"far\""});
+    expectNamed({"far_plane -2", {{"far_plane", -2}}, "far_plane", "must be a distance > 0 or \"infinite\", got -2"});
+    expectNamed({"clamp -1", {{"polygon_offset_clamp", -1}}, "polygon_offset_clamp",
+                 "must be a slope >= 0 (0: unclamped), got -1"});
+}
+
+TEST(ShadowSettingsErrors, PolygonOffsetIsTwoFiniteNumbers) {
+    expectNamed({"one number", {{"polygon_offset", nlohmann::json::array({1.0})}}, "polygon_offset", "must be [factor, units]"});
+    expectNamed({"not an array", {{"polygon_offset", 4}}, "polygon_offset", "must be [factor, units]"});
+    expectNamed({"units text", {{"polygon_offset", {1.0, "x"}}}, "polygon_offset[1]", "must be a number"});
+    expectNamed({"factor NaN", {{"polygon_offset", {kNaN, 4.0}}}, "polygon_offset[0]", "must be finite"});
+}
+
+TEST(ShadowSettingsErrors, CombinedKeysAreCheckedTogether) {
+    expectNamed({"reversed_z with d24", {{"reversed_z", true}, {"depth_format", "d24"}}, "reversed_z",
+                 "needs depth_format \"d32f\", not \"d24\""});
+    expectNamed({"reversed_z by default format", {{"reversed_z", true}}, "reversed_z",
+                 "needs depth_format \"d32f\", not \"d24\""});
+    expectNamed({"near beyond far", {{"near_plane", 10}, {"far_plane", 5}}, "far_plane",
+                 "must be beyond near_plane (10), got 5"});
+    expectNamed({"near equal far", {{"near_plane", 2.5}, {"far_plane", 2.5}}, "far_plane",
+                 "must be beyond near_plane (2.5), got 2.5"});
+    expectNamed({"above the GL's limit", {{"resolution", 8192}}, "resolution",
+                 "8192 is above this GL's GL_MAX_TEXTURE_SIZE 4096"});
+    // A light without a shadow has no map to be too large.
+    EXPECT_EQ(errorOf({{"resolution", 8192}, {"variant", "none"}}), "no error");
+    EXPECT_EQ(errorOf({{"reversed_z", true}, {"depth_format", "d32f"}, {"near_plane", 0.5}, {"far_plane", "infinite"}}),
+              "no error");
+}
+
+TEST(ShadowSettingsErrors, TheSettingsMustBeAnObject) {
+    const std::string message = errorOf(nlohmann::json::array({1, 2}));
+    EXPECT_EQ(message, std::string(kSource) + ": " + kObject + ": must be a JSON object");
+}
+
+TEST(ShadowSettingsErrors, ACommandLineVariantNamesItsFlag) {
+    try {
+        shadowmap::parseVariant("soft", "--light sun=soft", "variant");
+        FAIL() << "no error";
+    } catch (const engine::InputError& error) {
+        EXPECT_STREQ(error.what(), "--light sun=soft: variant: unknown variant \"soft\" (known: standard, woo, "
+                                   "backface, none)");
+    }
+}
