@@ -136,6 +136,8 @@ ResourceHandle PassBuilder::write(ResourceHandle handle) {
 
 void PassBuilder::sideEffect() { graph_.passes_[pass_].sideEffect = true; }
 
+void PassBuilder::setState(const PassState& state) { graph_.passes_[pass_].state = state; }
+
 // ---- execution --------------------------------------------------------------------------
 
 const RenderGraph::Resource& RenderGraph::declaredBy(ResourceHandle handle, int pass) const {
@@ -162,6 +164,16 @@ void PassContext::countDraw(std::uint64_t triangles) {
 
 const std::string& PassContext::passName() const { return graph_.passes_[pass_].name; }
 
+PassState RenderGraph::resolvedState(const Pass& pass) const {
+    PassState state = pass.state;
+    if (state.viewportWidth == 0 && state.viewportHeight == 0 && !pass.writes.empty()) {
+        const TextureDesc& target = resources_[pass.writes.front()].desc;
+        state.viewportWidth = target.width;
+        state.viewportHeight = target.height;
+    }
+    return state;
+}
+
 void RenderGraph::execute(ResourceAllocator& allocator, const ExecuteOptions& options) {
     if (!compiled_) compile();
     std::vector<std::vector<int>> acquireAt(order_.size()), releaseAt(order_.size());
@@ -186,6 +198,7 @@ void RenderGraph::execute(ResourceAllocator& allocator, const ExecuteOptions& op
             const int index = order_[position];
             PassContext context(*this, index, reports_[index]);
             const auto start = std::chrono::steady_clock::now();
+            if (options.applyState) options.applyState(resolvedState(passes_[index]));
             if (passes_[index].execute) passes_[index].execute(context);
             if (options.timing) {
                 if (options.finish) options.finish();

@@ -194,8 +194,6 @@ void LitPass::drawScene(const Frame& frame, const Variants& programs, PassContex
             context.countDraw(frame.gpu().draw(primitive));
         }
     }
-    glFrontFace(GL_CCW);
-    glEnable(GL_CULL_FACE);
 }
 
 void LitPass::addPass(Frame& frame, const std::string& name, ResourceHandle target, Output output,
@@ -239,27 +237,22 @@ void LitPass::addPass(Frame& frame, const std::string& name, ResourceHandle targ
                 name + "_depth",
                 {frame.camera().width, frame.camera().height, TextureFormat::Depth32F});
             handles->target = builder.write(target);
+            PassState state;  // depth test, back faces culled, viewport: the target's size
+            state.srgbWrites = output == Output::Color;
+            builder.setState(state);
         },
         [this, &frame, programs, handles, output, maskSlot, shading, dimming](PassContext& context) {
             const bool color = output == Output::Color;
             if (color) uploadLights(frame.scene(), frame.camera());
-            gl::Framebuffer framebuffer = gl::Framebuffer::create();
-            glNamedFramebufferTexture(framebuffer.id(), GL_COLOR_ATTACHMENT0,
-                                      context.texture(handles->target), 0);
-            glNamedFramebufferTexture(framebuffer.id(), GL_DEPTH_ATTACHMENT,
-                                      context.texture(handles->depth), 0);
             const ShadeCache::Plan* shadePlan = color && shadePlan_.layers > 0 ? &shadePlan_ : nullptr;
-            if (shadePlan) attachShadeCache(framebuffer, *shadePlan);
-            framebuffer.requireComplete("lit pass framebuffer");
+            const gl::Framebuffer& framebuffer =
+                framebufferFor(context.texture(handles->target), context.texture(handles->depth), shadePlan);
+            if (shadePlan && shadePlan->readArray) glBindTextureUnit(ShadeCache::kTextureUnit, shadePlan->readArray);
             glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.id());
-            glViewport(0, 0, frame.camera().width, frame.camera().height);
-            if (color) glEnable(GL_FRAMEBUFFER_SRGB);
             const glm::vec4 clear = color ? glm::vec4(config_.clearColor, 1.0f) : glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
             glClearNamedFramebufferfv(framebuffer.id(), GL_COLOR, 0, &clear[0]);
             const float farDepth = 1.0f;
             glClearNamedFramebufferfv(framebuffer.id(), GL_DEPTH, 0, &farDepth);
-            glEnable(GL_DEPTH_TEST);
-            glDepthFunc(GL_LESS);
             for (const gl::Program* program : programs) {
                 if (!program) continue;
                 program->set("uMaskLight", maskSlot);
@@ -267,7 +260,6 @@ void LitPass::addPass(Frame& frame, const std::string& name, ResourceHandle targ
                 if (shading && shading->bind) shading->bind(*program, context);
             }
             drawScene(frame, programs, context);
-            glDisable(GL_FRAMEBUFFER_SRGB);
             glBindFramebuffer(GL_FRAMEBUFFER, 0);
             if (shadePlan) {
                 glBindTextureUnit(ShadeCache::kTextureUnit, 0);
@@ -276,16 +268,14 @@ void LitPass::addPass(Frame& frame, const std::string& name, ResourceHandle targ
         });
 }
 
-void LitPass::attachShadeCache(const gl::Framebuffer& framebuffer, const ShadeCache::Plan& plan) {
-    if (plan.readArray) glBindTextureUnit(ShadeCache::kTextureUnit, plan.readArray);
-    if (!plan.writeArray) return;
-    std::vector<GLenum> drawBuffers{GL_COLOR_ATTACHMENT0};
-    for (int layer = 0; layer < plan.layers; ++layer) {
-        const GLenum attachment = GL_COLOR_ATTACHMENT1 + layer;
-        glNamedFramebufferTextureLayer(framebuffer.id(), attachment, plan.writeArray, 0, layer);
-        drawBuffers.push_back(attachment);
-    }
-    glNamedFramebufferDrawBuffers(framebuffer.id(), static_cast<GLsizei>(drawBuffers.size()), drawBuffers.data());
+const gl::Framebuffer& LitPass::framebufferFor(std::uint32_t target, std::uint32_t depth,
+                                               const ShadeCache::Plan* shadePlan) {
+    std::vector<gl::TargetAttachment> attachments{{GL_COLOR_ATTACHMENT0, target},
+                                                  {GL_DEPTH_ATTACHMENT, depth}};
+    if (shadePlan && shadePlan->writeArray)
+        for (int layer = 0; layer < shadePlan->layers; ++layer)
+            attachments.push_back({static_cast<GLenum>(GL_COLOR_ATTACHMENT1 + layer), shadePlan->writeArray, layer});
+    return framebuffers_.get(attachments, "lit pass framebuffer");
 }
 
 void LitPass::sceneChanged() {

@@ -1,6 +1,7 @@
 #include "engine/render/Renderer.h"
 
 #include "engine/gl/GlError.h"
+#include "engine/render/GlPassState.h"
 #include "engine/render/TextureReadback.h"
 #include "engine/scene/Scene.h"
 #include "engine/util/Error.h"
@@ -98,11 +99,16 @@ FrameResult Renderer::renderFrame(const FrameRequest& request) {
     ExecuteOptions options;
     options.timing = request.timing;
     options.finish = [] { glFinish(); };
+    options.applyState = applyPassState;
     if (config_.checkGlErrors) {
         gl::checkGlError("the start of the frame (a call made before renderFrame)");
         options.afterPass = [](const std::string& pass) { gl::checkGlError(("pass \"" + pass + "\"").c_str()); };
     }
     graph.execute(pool_, options);
+    PassState afterFrame;  // tools drawing after the frame start from the defaults too
+    afterFrame.viewportWidth = width;
+    afterFrame.viewportHeight = height;
+    applyPassState(afterFrame);
     // Untimed frames are not waited for: the readbacks below and the caller's swap or
     // readPixels synchronise with the GPU when they need the results.
     if (request.timing) glFinish();

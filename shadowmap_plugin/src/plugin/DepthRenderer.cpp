@@ -2,7 +2,6 @@
 
 #include "engine/scene/FrustumCull.h"
 
-#include "engine/gl/Framebuffer.h"
 #include "engine/render/MaterialShading.h"
 #include "engine/render/SceneGpu.h"
 #include "engine/scene/Scene.h"
@@ -33,20 +32,38 @@ engine::gl::Program compileDepthProgram(const std::string& name, const std::stri
 // Reversed Z stores near as 1 and far as 0: "away from the light" is then a negative
 // offset, and glPolygonOffsetClamp's clamp must carry the same sign (a negative clamp is a
 // lower bound).
+glm::vec3 signedOffset(const glm::vec2& offset, const DepthPassStyle& style) {
+    const float sign = style.reversedZ ? -1.0f : 1.0f;
+    return sign * glm::vec3(offset, style.offsetClamp);
+}
+
+// The offset of one caster's draws when it differs from the pass's (backface's open casters).
 void setPolygonOffset(const glm::vec2& offset, const DepthPassStyle& style) {
     if (offset == glm::vec2(0.0f)) {
         glDisable(GL_POLYGON_OFFSET_FILL);
         return;
     }
     glEnable(GL_POLYGON_OFFSET_FILL);
-    const float sign = style.reversedZ ? -1.0f : 1.0f;
-    if (style.offsetClamp > 0.0f)
-        glPolygonOffsetClamp(sign * offset.x, sign * offset.y, sign * style.offsetClamp);
-    else
-        glPolygonOffset(sign * offset.x, sign * offset.y);
+    const glm::vec3 value = signedOffset(offset, style);
+    glPolygonOffsetClamp(value.x, value.y, value.z);  // a clamp of 0 clamps nothing
 }
 
 } // namespace
+
+engine::PassState depthPassState(const DepthPassStyle& style) {
+    engine::PassState state;
+    state.depthTest = style.reversedZ ? engine::PassState::DepthTest::Greater : engine::PassState::DepthTest::Less;
+    state.clipDepth = style.reversedZ ? engine::PassState::ClipDepth::ZeroToOne
+                                      : engine::PassState::ClipDepth::NegativeOneToOne;
+    state.cull = style.backFacesOnly ? engine::PassState::Cull::Front : engine::PassState::Cull::None;
+    if (style.polygonOffset != glm::vec2(0.0f)) {
+        const glm::vec3 offset = signedOffset(style.polygonOffset, style);
+        state.offsetFactor = offset.x;
+        state.offsetUnits = offset.y;
+        state.offsetClamp = offset.z;
+    }
+    return state;
+}
 
 DepthRenderer::DepthRenderer() : empty_(engine::gl::VertexArray::create()) {
     // The opaque casters' programs, which every scene with shadows uses, before the first frame.
@@ -64,18 +81,12 @@ const engine::gl::Program& DepthRenderer::program(Peel peel, unsigned materialFe
 }
 
 DepthDrawCounts DepthRenderer::render(const engine::Frame& frame, engine::PassContext& context,
-                                      unsigned target, int layer, int resolution,
-                                      const glm::dmat4& viewProjection, const DepthPassStyle& style,
+                                      unsigned target, int layer, const glm::dmat4& viewProjection, const DepthPassStyle& style,
                                       bool drawCasters) {
-    engine::gl::Framebuffer framebuffer = engine::gl::Framebuffer::create();
-    if (layer < 0) glNamedFramebufferTexture(framebuffer.id(), GL_DEPTH_ATTACHMENT, target, 0);
-    else glNamedFramebufferTextureLayer(framebuffer.id(), GL_DEPTH_ATTACHMENT, target, 0, layer);
-    glNamedFramebufferDrawBuffer(framebuffer.id(), GL_NONE);  // depth only: no color writes
-    glNamedFramebufferReadBuffer(framebuffer.id(), GL_NONE);
-    framebuffer.requireComplete("shadow map framebuffer");
+    const engine::gl::Framebuffer& framebuffer =
+        framebuffers_.get({{GL_DEPTH_ATTACHMENT, target, layer}}, "shadow map framebuffer");
 
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.id());
-    glViewport(0, 0, resolution, resolution);
     const float farDepth = style.reversedZ ? 0.0f : 1.0f;
     glClearNamedFramebufferfv(framebuffer.id(), GL_DEPTH, 0, &farDepth);
     DepthDrawCounts counts;
@@ -83,11 +94,8 @@ DepthDrawCounts DepthRenderer::render(const engine::Frame& frame, engine::PassCo
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
         return counts;
     }
-    if (style.reversedZ) glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);  // restored below
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(style.reversedZ ? GL_GREATER : GL_LESS);
-    glDepthMask(GL_TRUE);
-    glCullFace(GL_FRONT);  // used only for closed casters under backFacesOnly
+    // Per face, not per pass: the far layer at the end of a previous face switched it off.
+    setPolygonOffset(style.polygonOffset, style);
 
     const Peel peel = !style.firstLayer ? Peel::None : style.firstLayerIsArray ? Peel::LayerArray : Peel::Layer2D;
     if (style.firstLayer) glBindTextureUnit(kFirstLayerUnit, style.firstLayer);
@@ -116,11 +124,12 @@ DepthDrawCounts DepthRenderer::render(const engine::Frame& frame, engine::PassCo
             ++counts.castersCulled;
             continue;
         }
-        const bool backOnly = style.backFacesOnly && style.closedMeshes &&
-                              (*style.closedMeshes)[instance.mesh];
-        if (backOnly) glEnable(GL_CULL_FACE);
-        else glDisable(GL_CULL_FACE);
-        setPolygonOffset(style.backFacesOnly && !backOnly ? style.openCasterOffset : style.polygonOffset, style);
+        if (style.backFacesOnly) {
+            const bool closed = style.closedMeshes && (*style.closedMeshes)[instance.mesh];
+            if (closed) glEnable(GL_CULL_FACE);  // the pass culls front faces
+            else glDisable(GL_CULL_FACE);
+            setPolygonOffset(closed ? style.polygonOffset : style.openCasterOffset, style);
+        }
         // A mirroring transform turns counter-clockwise triangles clockwise.
         glFrontFace(glm::determinant(glm::dmat3(instance.world)) < 0.0 ? GL_CW : GL_CCW);
         // P_light * L^-1 * M in double: only the light-relative product is rounded.
@@ -147,7 +156,7 @@ DepthDrawCounts DepthRenderer::render(const engine::Frame& frame, engine::PassCo
         // (2x2 PCF reads the neighbouring "nothing behind" texels: 0.06% of the pixels
         // that must be dark, tools/shadowmap-stress special/light_inside_box). Texels
         // with no surface at all fail the peel test and stay far.
-        glDisable(GL_CULL_FACE);
+        // Woo is never backface, so nothing is culled; the next face clamps nothing.
         glEnable(GL_DEPTH_CLAMP);
         use(0).set("uFarLayer", 1);
         empty_.bind();
@@ -155,11 +164,6 @@ DepthDrawCounts DepthRenderer::render(const engine::Frame& frame, engine::PassCo
         glBindVertexArray(0);
         glDisable(GL_DEPTH_CLAMP);
     }
-    if (style.reversedZ) glClipControl(GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE);
-    glDepthFunc(GL_LESS);
-    glCullFace(GL_BACK);
-    glFrontFace(GL_CCW);
-    glEnable(GL_CULL_FACE);
     if (style.firstLayer) glBindTextureUnit(kFirstLayerUnit, 0);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     return counts;

@@ -2,6 +2,7 @@
 // Renders depth from one light view into one layer of a shadow map: the depth pass every
 // variant and light type shares (spot and directional: the 2D map; point: one cube face).
 // What differs between variants is a DepthPassStyle, not another renderer.
+#include "engine/gl/FramebufferCache.h"
 #include "engine/gl/Program.h"
 #include "engine/gl/VertexArray.h"
 #include "engine/render/Frame.h"
@@ -28,13 +29,18 @@ struct DepthPassStyle {
     float peelEpsilon = 0.0f;  // depth within which a fragment counts as the first layer
                                // (reversedZ: relative to the first layer's depth)
     // Reversed Z (ShadowSettings reversed_z, d32f): glClipControl(GL_LOWER_LEFT,
-    // GL_ZERO_TO_ONE) for the pass (restored after it), clear depth 0, GL_GREATER depth
-    // test, polygon offsets negated (away from the light is toward 0).
+    // GL_ZERO_TO_ONE) for the pass, clear depth 0, GL_GREATER depth test, polygon offsets
+    // negated (away from the light is toward 0).
     bool reversedZ = false;
     // > 0: glPolygonOffsetClamp's clamp, in window depth (ShadowSettings
     // polygon_offset_clamp converted per light); 0: plain glPolygonOffset.
     float offsetClamp = 0.0f;
 };
+
+// The state a depth pass of this style declares (engine/graph/PassState.h): depth test and
+// clip range for the depth direction, the offset, and front-face culling for backface
+// (switched per caster: closed casters only).
+engine::PassState depthPassState(const DepthPassStyle& style);
 
 struct DepthDrawCounts {
     std::uint64_t draws = 0, triangles = 0, castersCulled = 0;
@@ -44,12 +50,12 @@ class DepthRenderer {
 public:
     DepthRenderer();
 
-    // Clears `layer` of `target` (-1: a 2D texture) to the far depth and, when drawCasters,
+    // Within a pass in depthPassState(style): clears `layer` of `target` (-1: a 2D texture)
+    // to the far depth and, when drawCasters,
     // draws every shadow caster of the frame's scene whose bounds meet viewProjection =
     // P_light * L^-1. Counts draws in `context` (the graph's per-pass report).
     DepthDrawCounts render(const engine::Frame& frame, engine::PassContext& context,
-                           unsigned target, int layer, int resolution,
-                           const glm::dmat4& viewProjection, const DepthPassStyle& style,
+                           unsigned target, int layer, const glm::dmat4& viewProjection, const DepthPassStyle& style,
                            bool drawCasters = true);
 
 private:
@@ -61,6 +67,7 @@ private:
 
     std::map<std::pair<Peel, unsigned>, engine::gl::Program> programs_;
     engine::gl::VertexArray empty_;  // for the Woo far-layer triangle (gl_VertexID only)
+    engine::gl::FramebufferCache framebuffers_;  // one per map and face or layer
 };
 
 } // namespace shadowmap

@@ -234,18 +234,15 @@ void ShadowMapPlugin::renderMap(LightShadow& light, const engine::Frame& frame,
         plan.triangles += counts.triangles;
         plan.castersCulled += counts.castersCulled;
     };
-    const int size = light.settings.resolution;
     if (plan.kind == MapKind::Map2D) {
-        add(depth_->render(frame, context, target, targetIsArray ? 0 : -1, size,
-                           plan.view.viewProjection(), style));
+        add(depth_->render(frame, context, target, targetIsArray ? 0 : -1, plan.view.viewProjection(), style));
         return;
     }
     for (int face = 0; face < 6; ++face) {
         const LightView& view = plan.pointViews.faces[face];
         // A face that sees no receiver is cleared (lookups there must read "far") but
         // draws nothing.
-        add(depth_->render(frame, context, target, face, size, view.viewProjection(), style,
-                           !view.empty));
+        add(depth_->render(frame, context, target, face, view.viewProjection(), style, !view.empty));
     }
 }
 
@@ -270,7 +267,11 @@ void ShadowMapPlugin::addDepthPasses(LightShadow& light, engine::Frame& frame,
     }
     if (settings.variant != Variant::Woo) {
         frame.graph().addPass(
-            light.depthPass(), [map](engine::PassBuilder& builder) { (void)builder.write(map); },
+            light.depthPass(),
+            [map, style](engine::PassBuilder& builder) {
+                (void)builder.write(map);
+                builder.setState(depthPassState(style));
+            },
             [this, &light, &frame, map, style, key](engine::PassContext& context) {
                 renderMap(light, frame, context, context.texture(map), false, style);
                 light.renderedKey = key;  // only now does the map hold what the key says
@@ -286,6 +287,7 @@ void ShadowMapPlugin::addDepthPasses(LightShadow& light, engine::Frame& frame,
         light.firstLayerPass(),
         [&](engine::PassBuilder& builder) {
             *firstLayer = builder.create("shadow_first_layer_" + std::to_string(light.slot), firstLayerDesc);
+            builder.setState(depthPassState(style));
         },
         // The same style (offset included) as the peel: the peel discards what lies within
         // a depth step or two of z1, so both passes must rasterize the nearest surface to
@@ -296,9 +298,10 @@ void ShadowMapPlugin::addDepthPasses(LightShadow& light, engine::Frame& frame,
         });
     frame.graph().addPass(
         light.depthPass(),
-        [map, firstLayer](engine::PassBuilder& builder) {
+        [map, firstLayer, style](engine::PassBuilder& builder) {
             builder.read(*firstLayer);
             (void)builder.write(map);
+            builder.setState(depthPassState(style));
         },
         [this, &light, &frame, map, firstLayer, cube, style, key](engine::PassContext& context) {
             DepthPassStyle peel = style;

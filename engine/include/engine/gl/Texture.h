@@ -5,10 +5,17 @@
 
 namespace engine::gl {
 
+// Drops every cached framebuffer that attaches `texture` (FramebufferCache.h).
+void forgetTextureInFramebufferCaches(GLuint texture) noexcept;
+
 namespace detail {
 struct TextureTraits {
     static constexpr GLenum labelNamespace = GL_TEXTURE;
-    static void destroy(GLuint name) noexcept { glDeleteTextures(1, &name); }
+    // A cached framebuffer must not outlive its textures (FramebufferCache.h).
+    static void destroy(GLuint name) noexcept {
+        forgetTextureInFramebufferCaches(name);
+        glDeleteTextures(1, &name);
+    }
 };
 struct TextureInfo {
     GLenum target = GL_NONE;

@@ -23,6 +23,7 @@
 //   their last user, so the allocator can reuse a texture within the frame. compile() also
 //   plans that reuse statically (physicalSlot / physicalSlotCount): transients of equal desc
 //   with disjoint lifetimes share one slot. To keep contents past the frame, import instead.
+#include "engine/graph/PassState.h"
 #include "engine/graph/ResourceAllocator.h"
 #include "engine/graph/TextureDesc.h"
 
@@ -59,6 +60,8 @@ public:
     // Declares this pass the writer of an import (or returns its own transient unchanged).
     [[nodiscard]] ResourceHandle write(ResourceHandle resource);
     void sideEffect();  // never culled (e.g. a readback)
+    // The state the pass's draws start from (PassState.h); PassState{} when not declared.
+    void setState(const PassState& state);
 
 private:
     friend class RenderGraph;
@@ -99,6 +102,9 @@ struct ExecuteOptions {
     // Called after each pass when timing (glFinish in practice): GL work is asynchronous,
     // so without it a pass's wall time would measure command submission, not the work.
     std::function<void()> finish;
+    // Called before each pass runs, with its declared state (the viewport filled in from the
+    // first texture it writes when left 0).
+    std::function<void(const PassState&)> applyState;
     // Called after each pass has run (after finish, when timing), with its name: e.g. a GL
     // error check that blames the pass that raised the flag. May throw; the frame stops.
     std::function<void(const std::string& passName)> afterPass;
@@ -139,6 +145,7 @@ private:
         std::function<void(PassContext&)> execute;
         std::vector<int> reads{}, writes{};  // resource indices; writes include creates
         bool sideEffect = false;
+        PassState state{};
     };
     struct Resource {
         std::string name;
@@ -154,6 +161,7 @@ private:
     const Resource& resourceAt(ResourceHandle handle, int pass) const;
     const Resource& declaredBy(ResourceHandle handle, int pass) const;  // PassContext's check
     std::vector<int> topologicalOrder() const;                          // throws on cycles
+    PassState resolvedState(const Pass& pass) const;                    // viewport filled in
     std::vector<bool> cull();
     void planLifetimes();
 
