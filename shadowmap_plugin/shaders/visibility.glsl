@@ -54,7 +54,7 @@ float cubeReferenceDepth(int slot, float major) {
     return reversed ? n / (f - n) * (f / major - 1.0) : f / (f - n) * (1.0 - n / major);
 }
 
-// The seeds' comparison view, for engine-render --shadow-compare: green where the
+// The comparison view of Kilgard's GDC 2000 slides, for engine-render --shadow-compare: green where the
 // reference depth r and the map's depth agree (the surface is the one the light sees
 // first: lit), red where the map holds something nearer (shadowed), blue where it holds
 // something farther (r in front of the map: polygon offset or peeling at work), grey where

@@ -1,6 +1,6 @@
 // loadGltf on bad input: every case is one valid file broken in one place, and must throw
-// an InputError naming the file, the object and the reason (notes/tinygltf-2.7.0.md lists
-// the hazards several of these cases would trigger inside tinygltf 2.7.0).
+// an InputError naming the file, the object and the reason (several of these
+// cases would crash or read out of bounds inside tinygltf 2.7.0 without the loader's guards).
 //
 // Most cases are rows of two tables below: an edit of the quad scene (kQuadEdits) or of its
 // GLB bytes (kGlbByteEdits), and the parts the message must contain: the file, the object,

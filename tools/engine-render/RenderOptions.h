@@ -1,5 +1,5 @@
 #pragma once
-// engine-render's command line (the contract in DESIGN.md).
+// engine-render's command line (the contract the README's "Rendering a scene" documents).
 #include <string>
 #include <utility>
 #include <vector>

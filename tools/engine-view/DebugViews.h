@@ -1,5 +1,5 @@
 #pragma once
-// Renders one frame of the viewer in the chosen debug view (the seeds' pictures), with the
+// Renders one frame of the viewer in the chosen debug view (the pictures of Kilgard's GDC 2000 slides), with the
 // same Renderer engine-render uses, and returns it as a picture for the Presenter:
 //   shaded      the lit image (Renderer::readColor), what engine-render writes;
 //   light       the scene rendered from the selected light (LightCamera.h);

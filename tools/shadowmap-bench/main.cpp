@@ -1,5 +1,5 @@
 // shadowmap-bench: run time against error of the shadow plugin's settings, per light,
-// over one or more scenes (issue 5). Writes results.csv, summary.md and a time/error plot.
+// over one or more scenes. Writes results.csv, summary.md and a time/error plot.
 #include "ToolMain.h"
 #include "BenchOptions.h"
 #include "GnuplotRunner.h"

@@ -4,7 +4,7 @@
 //   oracle    - fixed-function vertex stage: planes Epo = S*P_light*L^-1 given to glTexGen
 //               while the modelview is V^-1, then the modelview V^-1*M for the draw;
 //   emulation - our shader: (s,t,r,q) = Ee * x_e with Ee from the CPU Texgen type.
-// Tolerance: Mesa transforms the eye planes and the vertices in float (DESIGN.md), so the
+// Tolerance: Mesa transforms the eye planes and the vertices in float, so the
 // coordinates here are moderate (|x| < 20) and the bound is relative: |diff| <= 1e-5 * (1 + |v|)
 // (measured: 4.7e-7 to 1.1e-6 over four random setups).
 #include "../../gl/GlTestContext.h"

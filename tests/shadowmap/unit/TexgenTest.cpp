@@ -1,5 +1,5 @@
-// Texgen algebra (seed 001, Equations 1-5 and Appendix A) checked in double, and the
-// precision claim of DESIGN.md: composed camera-relative in double, a scene 10^6 or 10^7
+// Texgen algebra (Everitt et al., NVIDIA "Hardware Shadow Mapping", Equations 1-5 and Appendix A) checked in double, and the
+// precision claim of Texgen.h: composed camera-relative in double, a scene 10^6 or 10^7
 // units from the origin shadows as accurately as one at the origin.
 #include "math/Texgen.h"
 
