@@ -32,6 +32,8 @@ class RayTracedVisibility;
 struct SurfaceBuffer;
 }
 
+namespace engine_view {
+
 struct ViewFrame {
     Image image;
     engine::FrameResult frame;       // the frame that was rendered (timings, plugin stats)
@@ -63,3 +65,5 @@ private:
     struct Cache;  // surfaces and truth of the last camera (DebugViews.cpp)
     std::unique_ptr<Cache> cache_;
 };
+
+} // namespace engine_view

@@ -13,5 +13,9 @@
 #include "engine/render/Frame.h"
 #include "engine/scene/Scene.h"
 
+namespace engine_view {
+
 // `shadow`: the light's shadow view of the last frame, or null.
 engine::FrameCamera lightCamera(const engine::Scene& scene, int slot, const engine::ShadowView* shadow, int size);
+
+} // namespace engine_view

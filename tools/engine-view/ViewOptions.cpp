@@ -5,6 +5,8 @@
 
 #include <stdexcept>
 
+namespace engine_view {
+
 const char* const kViewUsage =
     "usage: engine-view --config CONFIG.json --scene SCENE.gltf|.glb\n"
     "  [--camera NAME|NUMBER] [--width W --height H]   (initial window size, default 1280x720)\n"
@@ -41,3 +43,5 @@ ViewOptions parseViewOptions(int argc, char** argv) {
     if (!sawScene) throw std::invalid_argument("--scene is required");
     return options;
 }
+
+} // namespace engine_view
