@@ -1,7 +1,7 @@
 // engine-view: a window on the same engine, config and plugin as engine-render, to choose
-// each light's shadow settings by looking (live variant switching, the seeds' debug views,
-// an on-screen line per light), scriptable (--script) and saving the choice back into the
-// glTF (--save-settings).
+// each light's shadow settings by looking (live variant switching, the debug views of
+// Kilgard's GDC 2000 slides, an on-screen line per light), scriptable (--script) and saving
+// the choice back into the glTF (--save-settings).
 #include "ToolMain.h"
 #include "Controls.h"
 #include "DebugViews.h"
