@@ -1,6 +1,7 @@
 #pragma once
 // CPU mirror of OpenGL's EYE_LINEAR texture-coordinate generation, and the matrices that
-// set it up for shadow mapping (seed 001, Equations 1-5 and Appendix A).
+// set it up for shadow mapping (Everitt et al., NVIDIA "Hardware Shadow Mapping", Equations 1-5
+// and Appendix A).
 //
 // Notation (the engine's, used in code, tests and the README):
 //   M        object -> world (model)
