@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
-# What skipping work buys (issue: cached maps, culling, shade cache). For the showcase and
+# What skipping work buys (cached maps, culling, shade cache). For the showcase and
 # Debian's 2CylinderEngine.glb (one spot key light), at 1280x720 with 2048 maps, in one
 # run: the median frame time with no shadows, with a static light (its map cached; with a
 # still camera the lit pass also reuses every light's shade), with an orbiting light (its
 # map and shade redone every frame), and the same with the camera orbiting (maps cached,
-# shade recomputed every frame); the ratios between them, and the targets of the issue:
+# shade recomputed every frame); the ratios between them, and the targets they must meet:
 # static <= 1.05 x unshadowed, orbiting <= unshadowed + one depth pass (the orbiting
 # light's median depth-pass time, printed as "depth").
 # Usage: tools/bench-skip-work.sh [FRAMES]   (build first: tools/build.sh)

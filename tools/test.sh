@@ -19,7 +19,7 @@ export ASAN_OPTIONS="detect_leaks=1:abort_on_error=0:intercept_tls_get_addr=0"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 (cd build-asan && ctest --output-on-failure -j"$(nproc)")
 
-# Fuzz the glTF loader (issue 6): clang + libFuzzer in build-fuzz/; replays
+# Fuzz the glTF loader: clang + libFuzzer in build-fuzz/; replays
 # tests/data/fuzz-regressions/ first, then fuzzes 60 s on the seed corpus. About 2 minutes.
 bash tools/fuzz/run.sh 60
 echo "all tests passed (Release, ASan/UBSan, and the glTF fuzzer)"

@@ -1,7 +1,7 @@
 // Lit pass, fragment stage: ambient + per-light Lambert diffuse and normalized Blinn-Phong
 // specular from the glTF metallic/roughness factors, spot cone falloff and range
-// attenuation as KHR_lights_punctual recommends, and the ambient-retaining modulate of
-// DESIGN.md with the plugin's per-light visibility term:
+// attenuation as KHR_lights_punctual recommends, and the ambient-retaining modulate with
+// the plugin's per-light visibility term (shadowed regions keep ambient and dimmed diffuse):
 //   diffuseShade = d + (1 - d) * shade
 //   color = emissive + ambient * albedo + sum(diffuseShade * diffuse + shade * specular)
 // The engine prepends "#version 450 core", MAX_LIGHTS, LIGHT_COUNT (the scene's lights)
@@ -45,9 +45,9 @@ uniform bool uReceiveShadows;
 
 // Without a view define: the shaded color. LIGHT_MASK_VIEW: the visibility hook's shade
 // of light uMaskLight as gray; LIGHT_DEBUG_VIEW: the hook's debug picture of that light
-// (the seeds' comparison view). Each is its own program variant on purpose: llvmpipe runs
-// the texture fetches of untaken branches, so a view selected by a uniform made every
-// shaded frame pay for the mask's lookups too (measured: 68 -> 38 ms at 1280x720, three
+// (green/red/blue depth agreement, as Kilgard's GDC 2000 slides show it). Each is its own
+// program variant on purpose: llvmpipe runs the texture fetches of untaken branches, so a
+// view selected by a uniform made every shaded frame pay for the mask's lookups too (measured: 68 -> 38 ms at 1280x720, three
 // shadowed lights).
 uniform int uMaskLight;
 

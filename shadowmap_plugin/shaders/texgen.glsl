@@ -2,7 +2,7 @@
 // eye-linear texgen per vertex, where fixed-function GL evaluated it.
 //   2D maps: (s,t,r,q) = Ee * x_e with the eye planes Ee = S * P_light * L^-1 * V composed
 //     in double on the CPU (EYE_LINEAR texgen with world-space planes specified under
-//     modelview V^-1, DESIGN.md);
+//     modelview V^-1, see math/Texgen.h);
 //   cube maps: x_world - light = R_V * (x_e - light_e), R_V the rotation of V.
 // Both are linear in the eye-space position, so the rasterizer's perspective-correct
 // interpolation gives each fragment the value at its own eye position (up to float

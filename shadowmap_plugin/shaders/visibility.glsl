@@ -27,8 +27,12 @@ uniform vec4 uShadowParams[MAX_LIGHTS];
 uniform vec4 uShadowPointLight[MAX_LIGHTS];  // eye-space light position, near (cube maps)
 uniform float uShadowPointFar[MAX_LIGHTS];   // far (cube maps); 0 = infinite
 
-// Branch-free on purpose: llvmpipe runs a fragment shader on SIMD lanes, and early returns
-// cost it more than always sampling (measured: 34.6 -> 28 ms for one light at 1280x720).
+// shadowMap2D is branch-free on purpose (selects, no early return): llvmpipe runs a fragment
+// shader on SIMD lanes, and early returns cost it more than always sampling (measured:
+// 34.6 -> 28 ms for one light at 1280x720). The cube-map functions further down are not:
+// cubeReferenceDepth branches on a uniform (same way on every lane) and shadowMapCube
+// returns early for points nearer than the near plane; neither was measured against a
+// branch-free form.
 // Reversed Z flips the depth range: nearer than near is r > 1, beyond far is r < 0, and
 // "behind everything the map holds" is r = 0.
 // coord: (s,t,r,q) from the vertex part (texgen.glsl).
@@ -43,10 +47,18 @@ float shadowMap2D(int slot, vec4 coord, sampler2DShadow map) {
     return coord.w <= 0.0 ? 0.0 : shade;
 }
 
+// The distance from the light along the major axis of toPoint = x_world - light: the cube
+// face that holds the texel is the one of the largest |component| (OpenGL 4.5 table 8.19),
+// and its perspective depth is this distance.
+float cubeMajorAxisDistance(vec3 toPoint) {
+    return max(max(abs(toPoint.x), abs(toPoint.y)), abs(toPoint.z));
+}
+
 // The window depth a cube face wrote at distance `major` along its axis, in forms that keep
 // float's relative precision: f/(f-n) * (1 - n/major), or reversed n/(f-n) * (f/major - 1)
 // (the same numbers as 0.5 * ((f+n)/(f-n) - 2fn/((f-n) major)) + 0.5, fewer roundings);
-// with an infinite far (f = 0 here): 1 - n/major, reversed n/major.
+// with an infinite far (f = 0 here): 1 - n/major, reversed n/major. Its CPU twin is
+// cubeShadowReferenceDepth (math/LightFrustum.h); CubeReferenceDepthTest compares the two.
 float cubeReferenceDepth(int slot, float major) {
     float n = uShadowPointLight[slot].w, f = uShadowPointFar[slot];
     bool reversed = uShadowParams[slot].x > 0.5;
@@ -54,7 +66,7 @@ float cubeReferenceDepth(int slot, float major) {
     return reversed ? n / (f - n) * (f / major - 1.0) : f / (f - n) * (1.0 - n / major);
 }
 
-// The seeds' comparison view, for engine-render --shadow-compare: green where the
+// The comparison view of Kilgard's GDC 2000 slides, for engine-render --shadow-compare: green where the
 // reference depth r and the map's depth agree (the surface is the one the light sees
 // first: lit), red where the map holds something nearer (shadowed), blue where it holds
 // something farther (r in front of the map: polygon offset or peeling at work), grey where
@@ -79,7 +91,7 @@ vec4 comparison2D(int slot, vec4 coord, sampler2D depth) {
 }
 
 vec4 comparisonCube(int slot, vec3 toPoint, samplerCube depth) {
-    float major = max(max(abs(toPoint.x), abs(toPoint.y)), abs(toPoint.z));
+    float major = cubeMajorAxisDistance(toPoint);
     float reference = cubeReferenceDepth(slot, major);
     bool reversed = uShadowParams[slot].x > 0.5;
     if (major < uShadowPointLight[slot].w || (reversed ? reference < 0.0 : reference > 1.0))
@@ -90,7 +102,7 @@ vec4 comparisonCube(int slot, vec3 toPoint, samplerCube depth) {
 
 // toPoint: light -> point along world axes, from the vertex part (texgen.glsl).
 float shadowMapCube(int slot, vec3 toPoint, samplerCubeShadow map) {
-    float major = max(max(abs(toPoint.x), abs(toPoint.y)), abs(toPoint.z));
+    float major = cubeMajorAxisDistance(toPoint);
     if (major < uShadowPointLight[slot].w) return 1.0;
     float depth = cubeReferenceDepth(slot, major) - uShadowParams[slot].y;
     bool reversed = uShadowParams[slot].x > 0.5;

@@ -35,7 +35,7 @@ TEST_F(ContextTest, DebugOutputPrintsErrorsToStderr) {
     EXPECT_NE(printed.find("error"), std::string::npos) << printed;
 }
 
-// The texgen oracle (DESIGN.md) needs fixed-function glTexGen: a compatibility context.
+// The texgen oracle (TexgenOracleTest) needs fixed-function glTexGen: a compatibility context.
 // It lives beside the shared core context; GlTest makes the shared one current again.
 TEST_F(ContextTest, CompatibilityContextHasFixedFunctionTexgen) {
     ContextOptions options;

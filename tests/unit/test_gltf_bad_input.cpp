@@ -1,6 +1,6 @@
 // loadGltf on bad input: every case is one valid file broken in one place, and must throw
-// an InputError naming the file, the object and the reason (notes/tinygltf-2.7.0.md lists
-// the hazards several of these cases would trigger inside tinygltf 2.7.0).
+// an InputError naming the file, the object and the reason (several of these
+// cases would crash or read out of bounds inside tinygltf 2.7.0 without the loader's guards).
 //
 // Most cases are rows of two tables below: an edit of the quad scene (kQuadEdits) or of its
 // GLB bytes (kGlbByteEdits), and the parts the message must contain: the file, the object,
@@ -9,6 +9,7 @@
 #include "engine/util/Error.h"
 
 #include "gltf_test_support.h"
+#include "../support/AssimpTestModels.h"
 
 #include <gtest/gtest.h>
 
@@ -479,8 +480,8 @@ TEST(GltfBadInput, DeepJsonNestingIsRefusedBeforeParsing) {
 // must see it in its own parse. tools/install-deps.sh installs the package: a missing file
 // is a failure here, not a skip.
 TEST(GltfBadInput, AssimpBadExtensionTextureTransformIsRefused) {
-    const fs::path file = "/usr/share/assimp/models/glTF2/wrongTypes/badExtension.gltf";
-    ASSERT_TRUE(fs::is_regular_file(file)) << file << " is missing: run tools/install-deps.sh (assimp-testmodels)";
+    ASSERT_TRUE(engine::test::assimpTestModelsInstalled());
+    const fs::path file = engine::test::kAssimpGltf2Models / "wrongTypes/badExtension.gltf";
     expectLoadError(file, {"badExtension.gltf", "materials[0] 'Texture'",
                            "pbrMetallicRoughness.baseColorTexture.extensions.KHR_texture_transform is not an object"});
 }

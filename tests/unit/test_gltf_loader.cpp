@@ -5,6 +5,7 @@
 #include "engine/util/Error.h"
 
 #include "gltf_test_support.h"
+#include "../support/AssimpTestModels.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
@@ -396,8 +397,8 @@ TEST(GltfLoader, FileWithoutScenesShowsEveryRootNode) {
 // InputError: none may crash, hang or throw anything else. The outcome of each is printed
 // for the record.
 TEST(GltfLoader, AssimpTestModelsLoadOrThrowInputError) {
-    const fs::path root = "/usr/share/assimp/models/glTF2";
-    if (!fs::is_directory(root)) GTEST_SKIP() << "assimp-testmodels is not installed";
+    ASSERT_TRUE(engine::test::assimpTestModelsInstalled());
+    const fs::path root = engine::test::kAssimpGltf2Models;
     std::vector<fs::path> files;
     for (const auto& entry : fs::recursive_directory_iterator(root))
         if (entry.path().extension() == ".gltf" || entry.path().extension() == ".glb") files.push_back(entry.path());

@@ -1,10 +1,9 @@
 #include "RenderOptions.h"
 
 #include "CommandLine.h"
+#include "OptionValues.h"
 
 #include <cctype>
-#include <cerrno>
-#include <cstdlib>
 #include <stdexcept>
 
 const char* const kRenderUsage =
@@ -21,23 +20,8 @@ const char* const kRenderUsage =
 
 namespace {
 
-int parsePositive(const std::string& flag, const std::string& text, int maximum) {
-    char* end = nullptr;
-    errno = 0;
-    const long value = std::strtol(text.c_str(), &end, 10);
-    if (text.empty() || *end != '\0' || errno != 0 || value < 1 || value > maximum)
-        throw std::invalid_argument(flag + ": \"" + text + "\" is not an integer in [1, " +
-                                    std::to_string(maximum) + "]");
-    return static_cast<int>(value);
-}
-
-std::pair<std::string, std::string> parseAssignment(const std::string& flag,
-                                                    const std::string& text) {
-    const auto equals = text.find('=');
-    if (equals == std::string::npos || equals == 0 || equals + 1 == text.size())
-        throw std::invalid_argument(flag + ": \"" + text + "\" must be NAME=VALUE");
-    return {text.substr(0, equals), text.substr(equals + 1)};
-}
+// Bounds of typos, not of the GL: the renderer checks what it can allocate.
+constexpr int kMaxSize = 16384, kMaxFrames = 100000, kMaxWarmup = 1000;
 
 // Every image engine-render writes is PNG (lossless: masks and maps are measured): a file
 // named otherwise would hold PNG bytes under a name that says something else.
@@ -51,7 +35,7 @@ std::string pngPath(const std::string& flag, const std::string& path) {
 }
 
 std::pair<std::string, std::string> parsePngAssignment(const std::string& flag, const std::string& text) {
-    auto assignment = parseAssignment(flag, text);
+    auto assignment = tools::parseAssignment(flag, text);
     pngPath(flag, assignment.second);
     return assignment;
 }
@@ -69,23 +53,20 @@ RenderOptions parseRenderOptions(int argc, char** argv) {
         else if (flag == "--config") options.config = value;
         else if (flag == "--scene") { options.scene = value; sawScene = true; }
         else if (flag == "--out") { options.out = pngPath(flag, value); sawOut = true; }
-        else if (flag == "--width") options.width = parsePositive(flag, value, 16384);
-        else if (flag == "--height") options.height = parsePositive(flag, value, 16384);
+        else if (flag == "--width") options.width = tools::parseInteger(flag, value, 1, kMaxSize);
+        else if (flag == "--height") options.height = tools::parseInteger(flag, value, 1, kMaxSize);
         else if (flag == "--camera") options.camera = value;
-        else if (flag == "--light") options.lightVariants.push_back(parseAssignment(flag, value));
+        else if (flag == "--light") options.lightVariants.push_back(tools::parseAssignment(flag, value));
         else if (flag == "--shadow-mask") options.shadowMasks.push_back(parsePngAssignment(flag, value));
         else if (flag == "--shadow-map") options.shadowMaps.push_back(parsePngAssignment(flag, value));
         else if (flag == "--shadow-compare") options.comparisons.push_back(parsePngAssignment(flag, value));
-        else if (flag == "--frames") options.frames = parsePositive(flag, value, 100000);
-        else if (flag == "--warmup") options.warmup = value == "0" ? 0 : parsePositive(flag, value, 1000);
-        else if (flag == "--set") options.pluginSettings.push_back(parseAssignment(flag, value));
+        else if (flag == "--frames") options.frames = tools::parseInteger(flag, value, 1, kMaxFrames);
+        else if (flag == "--warmup") options.warmup = tools::parseInteger(flag, value, 0, kMaxWarmup);
+        else if (flag == "--set") options.pluginSettings.push_back(tools::parseSettingOverride(flag, value));
         else if (flag == "--stats") options.stats = value;
         else if (flag == "--graph-dot") options.graphDot = value;
-        else if (flag == "--key-light") {
-            if (value != "spot" && value != "point" && value != "directional")
-                throw std::invalid_argument("--key-light: \"" + value + "\" is not spot, point or directional");
-            options.keyLight = value;
-        } else if (flag == "--orbit-light") options.orbitLight = value;
+        else if (flag == "--key-light") options.keyLight = tools::parseLightType(flag, value);
+        else if (flag == "--orbit-light") options.orbitLight = value;
         else return false;
         return true;
     });

@@ -1,5 +1,10 @@
 #pragma once
-// engine-render's command line (the contract in DESIGN.md).
+// engine-render's command line (the contract the README's "Rendering a scene" documents).
+#include "SettingOverrides.h"
+
+#include "engine/scene/Scene.h"
+
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -16,9 +21,9 @@ struct RenderOptions {
     std::vector<std::pair<std::string, std::string>> comparisons;    // --shadow-compare NAME=FILE
     int frames = 1;
     int warmup = 1;  // untimed frames first: llvmpipe compiles shaders at their first draw
-    // --set PLUGIN.KEY=JSON: overrides one of a plugin's config settings
-    std::vector<std::pair<std::string, std::string>> pluginSettings;
-    std::string keyLight;     // --key-light spot|point|directional: add a light from the bounds
+    std::vector<tools::SettingOverride> pluginSettings;  // --set PLUGIN.KEY=JSON
+    // --key-light spot|point|directional: add a light from the bounds
+    std::optional<engine::Light::Type> keyLight;
     std::string orbitLight;   // --orbit-light NAME: turn that light 2 degrees per frame
     bool orbitCamera = false; // --orbit-camera: turn the camera 2 degrees per frame
     bool truth = false;       // --truth: per-light error against ray-traced shadows

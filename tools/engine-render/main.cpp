@@ -1,5 +1,6 @@
 // engine-render: renders one glTF scene headless (EGL surfaceless) and writes a PNG,
 // optionally per-light shadow masks, per-pass statistics and the compiled frame graph.
+#include "Median.h"
 #include "ToolMain.h"
 #include "DepthImage.h"
 #include "RenderOptions.h"
@@ -24,13 +25,6 @@
 #include <map>
 
 namespace {
-
-double median(std::vector<double> values) {
-    if (values.empty()) return 0.0;
-    std::sort(values.begin(), values.end());
-    const std::size_t mid = values.size() / 2;
-    return values.size() % 2 ? values[mid] : 0.5 * (values[mid - 1] + values[mid]);
-}
 
 // The light a command-line word names (a name, else its number in --list).
 // The light instance a command-line word means. A name that several instances share (one
@@ -75,7 +69,7 @@ nlohmann::json statsJson(const RenderOptions& options, const std::vector<double>
     stats["height"] = options.height;
     stats["frames"] = options.frames;
     stats["frame_ms"] = frameMs;
-    stats["frame_ms_median"] = median(frameMs);
+    stats["frame_ms_median"] = tools::median(frameMs);
     nlohmann::json list = nlohmann::json::array();
     for (const std::string& name : order) {
         const PassSummary& pass = passes.at(name);
@@ -84,7 +78,7 @@ nlohmann::json statsJson(const RenderOptions& options, const std::vector<double>
                         {"cull_reason", pass.last.cullReason},
                         {"order", pass.last.order},
                         {"frames_run", pass.framesRun},
-                        {"wall_ms_median", median(pass.wallMs)},
+                        {"wall_ms_median", tools::median(pass.wallMs)},
                         {"draws", pass.last.draws},
                         {"triangles", pass.last.triangles}});
     }
@@ -112,7 +106,7 @@ nlohmann::json printLightErrors(engine::Renderer& renderer, const engine::Scene&
         for (const std::string& pass : light.view.passes) {
             const auto found = passes.find(pass);
             if (found == passes.end() || found->second.wallMs.empty()) continue;
-            mapMs += median(found->second.wallMs);
+            mapMs += tools::median(found->second.wallMs);
             rendered = true;
         }
         const truth::ShadowErrors& e = light.errors;
@@ -130,28 +124,6 @@ nlohmann::json printLightErrors(engine::Renderer& renderer, const engine::Scene&
                           {"evaluated_pixels", e.evaluated}});
     }
     return lights;
-}
-
-// --set PLUGIN.KEY=JSON: the plugin named by its library in the config; the value is JSON
-// (a bare word counts as a string), checked by the plugin like any config setting.
-void applySettingOverrides(engine::EngineConfig& config, const RenderOptions& options) {
-    for (const auto& [target, value] : options.pluginSettings) {
-        const auto dot = target.find('.');
-        if (dot == std::string::npos || dot == 0 || dot + 1 == target.size())
-            throw engine::InputError("--set " + target + "=" + value + ": expected PLUGIN.KEY=VALUE");
-        const std::string library = target.substr(0, dot), key = target.substr(dot + 1);
-        nlohmann::json parsed = nlohmann::json::parse(value, nullptr, false);
-        if (parsed.is_discarded()) parsed = value;
-        bool found = false;
-        for (engine::PluginConfig& plugin : config.plugins)
-            if (plugin.library == library) {
-                plugin.settings[key] = parsed;
-                found = true;
-            }
-        if (!found)
-            throw engine::InputError("--set " + target + ": the config " + options.config +
-                                     " loads no plugin \"" + library + "\"");
-    }
 }
 
 // --list: the scene's cameras and lights with the numbers and names the options accept.
@@ -175,10 +147,7 @@ int run(const RenderOptions& options, std::unique_ptr<engine::GlContext>& contex
     std::vector<std::string> warnings;
     engine::Scene scene = engine::loadGltf(options.scene, &warnings);
     for (const std::string& warning : warnings) std::cerr << "warning: " << warning << "\n";
-    if (!options.keyLight.empty())
-        engine::addKeyLight(scene, options.keyLight == "spot"    ? engine::Light::Type::Spot
-                                   : options.keyLight == "point" ? engine::Light::Type::Point
-                                                                 : engine::Light::Type::Directional);
+    if (options.keyLight) engine::addKeyLight(scene, *options.keyLight);
     if (options.list) {
         printCamerasAndLights(scene, options.scene);
         return 0;
@@ -190,7 +159,7 @@ int run(const RenderOptions& options, std::unique_ptr<engine::GlContext>& contex
                      "adds one)\n";
 
     engine::EngineConfig config = engine::loadEngineConfig(options.config);
-    applySettingOverrides(config, options);
+    tools::applySettingOverrides(config, options.pluginSettings);
     context = engine::createEglContext();
     context->makeCurrent();
 
@@ -276,7 +245,7 @@ int run(const RenderOptions& options, std::unique_ptr<engine::GlContext>& contex
     }
 
     std::printf("%s: %dx%d, %d frame(s), median frame %.2f ms (%s)\n", options.scene.c_str(),
-                options.width, options.height, options.frames, median(frameMs),
+                options.width, options.height, options.frames, tools::median(frameMs),
                 context->rendererString().c_str());
     std::printf("  %-28s %10s %8s %12s  %s\n", "pass", "ms", "draws", "triangles", "state");
     for (const std::string& name : order) {
@@ -284,7 +253,7 @@ int run(const RenderOptions& options, std::unique_ptr<engine::GlContext>& contex
         const std::string state = pass.last.culled ? "culled: " + pass.last.cullReason
                                   : "ran in " + std::to_string(pass.framesRun) + " of " +
                                         std::to_string(options.frames) + " frames";
-        std::printf("  %-28s %10.2f %8llu %12llu  %s\n", name.c_str(), median(pass.wallMs),
+        std::printf("  %-28s %10.2f %8llu %12llu  %s\n", name.c_str(), tools::median(pass.wallMs),
                     static_cast<unsigned long long>(pass.last.draws),
                     static_cast<unsigned long long>(pass.last.triangles), state.c_str());
     }

@@ -6,6 +6,8 @@
 #include <cctype>
 #include <exception>
 
+namespace engine_view {
+
 namespace {
 
 Controls& controlsOf(GLFWwindow* window) { return *static_cast<Controls*>(glfwGetWindowUserPointer(window)); }
@@ -92,3 +94,5 @@ void Controls::attach(GLFWwindow* window) {
     glfwSetFramebufferSizeCallback(window, [](GLFWwindow* w, int, int) { controlsOf(w).requests_.redraw = true; });
     glfwSetWindowRefreshCallback(window, [](GLFWwindow* w) { controlsOf(w).requests_.redraw = true; });
 }
+
+} // namespace engine_view

@@ -9,6 +9,8 @@
 
 struct GLFWwindow;
 
+namespace engine_view {
+
 // What the frame loop does next; set by Controls and Script, cleared by the loop.
 struct LoopRequests {
     bool redraw = true;      // something changed: render a frame
@@ -55,3 +57,5 @@ private:
     int dragButton_ = -1;  // GLFW_MOUSE_BUTTON_* held, -1 none
     double lastX_ = 0.0, lastY_ = 0.0;
 };
+
+} // namespace engine_view

@@ -11,6 +11,8 @@
 #include <algorithm>
 #include <cstdio>
 
+namespace engine_view {
+
 namespace {
 
 bool sameCamera(const engine::FrameCamera& a, const engine::FrameCamera& b) {
@@ -192,3 +194,5 @@ ViewFrame DebugViews::acneLeak(const ViewedLight& light, const engine::FrameCame
                         std::to_string(errors.evaluated) + " evaluated pixels");
     return out;
 }
+
+} // namespace engine_view

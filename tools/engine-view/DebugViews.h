@@ -1,5 +1,5 @@
 #pragma once
-// Renders one frame of the viewer in the chosen debug view (the seeds' pictures), with the
+// Renders one frame of the viewer in the chosen debug view (the pictures of Kilgard's GDC 2000 slides), with the
 // same Renderer engine-render uses, and returns it as a picture for the Presenter:
 //   shaded      the lit image (Renderer::readColor), what engine-render writes;
 //   light       the scene rendered from the selected light (LightCamera.h);
@@ -32,6 +32,8 @@ class RayTracedVisibility;
 struct SurfaceBuffer;
 }
 
+namespace engine_view {
+
 struct ViewFrame {
     Image image;
     engine::FrameResult frame;       // the frame that was rendered (timings, plugin stats)
@@ -63,3 +65,5 @@ private:
     struct Cache;  // surfaces and truth of the last camera (DebugViews.cpp)
     std::unique_ptr<Cache> cache_;
 };
+
+} // namespace engine_view

@@ -3,6 +3,8 @@
 #include <cstdint>
 #include <vector>
 
+namespace engine_view {
+
 struct Image {
     int width = 0, height = 0;
     std::vector<std::uint8_t> rgba;  // width * height * 4
@@ -17,3 +19,5 @@ struct Image {
         return image;
     }
 };
+
+} // namespace engine_view

@@ -5,6 +5,8 @@
 #include <cstring>
 #include <stdexcept>
 
+namespace engine_view {
+
 namespace {
 
 class Scanner {
@@ -103,3 +105,5 @@ const JsonSpan* JsonSpan::member(const std::string& key) const {
 }
 
 JsonSpan scanJson(std::string_view text) { return Scanner(text).document(); }
+
+} // namespace engine_view

@@ -10,6 +10,8 @@
 #include <utility>
 #include <vector>
 
+namespace engine_view {
+
 struct JsonSpan {
     std::size_t begin = 0, end = 0;  // the value's text is [begin, end)
     char kind = 0;                   // '{', '[', '"', or 'v' (number, true, false, null)
@@ -22,3 +24,5 @@ struct JsonSpan {
 // Throws std::invalid_argument naming the byte offset on malformed text (callers parse with
 // nlohmann first, so that is a bug).
 JsonSpan scanJson(std::string_view text);
+
+} // namespace engine_view

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <limits>
 
+namespace engine_view {
+
 namespace {
 
 constexpr double kDegree = 0.017453292519943295;
@@ -92,3 +94,5 @@ engine::FrameCamera lightCamera(const engine::Scene& scene, int slot, const engi
     }
     return camera;
 }
+
+} // namespace engine_view

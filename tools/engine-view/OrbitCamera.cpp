@@ -9,6 +9,8 @@
 #include <algorithm>
 #include <cmath>
 
+namespace engine_view {
+
 namespace {
 
 constexpr double kRadiansPerPixel = 0.005;
@@ -130,3 +132,5 @@ engine::FrameCamera OrbitCamera::frameCamera(int width, int height) const {
     }
     return camera;
 }
+
+} // namespace engine_view

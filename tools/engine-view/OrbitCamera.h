@@ -7,6 +7,8 @@
 
 #include <string>
 
+namespace engine_view {
+
 class OrbitCamera {
 public:
     // `name`: a glTF camera by name (empty: the first glTF camera, else the framing one).
@@ -42,3 +44,5 @@ private:
     bool orthographic_ = false;
     double ymag_ = 1.0;          // orthographic half height
 };
+
+} // namespace engine_view

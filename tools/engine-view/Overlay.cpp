@@ -4,6 +4,8 @@
 
 #include <algorithm>
 
+namespace engine_view {
+
 namespace {
 
 const char* const kVertexShader = R"(#version 450 core
@@ -124,3 +126,5 @@ void Overlay::draw(const std::vector<OverlayLine>& lines, int width, int height)
     glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(vertices.size()));
     glDisable(GL_BLEND);
 }
+
+} // namespace engine_view

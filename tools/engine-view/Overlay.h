@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+namespace engine_view {
+
 struct OverlayLine {
     std::string text;
     glm::u8vec4 color{235, 235, 235, 255};
@@ -27,3 +29,5 @@ private:
     engine::gl::VertexArray vertexArray_;
     engine::gl::Buffer vertices_;
 };
+
+} // namespace engine_view

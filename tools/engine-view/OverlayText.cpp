@@ -2,6 +2,8 @@
 
 #include <cstdio>
 
+namespace engine_view {
+
 namespace {
 
 const glm::u8vec4 kPlain{235, 235, 235, 255}, kSelected{255, 220, 90, 255}, kNote{140, 220, 255, 255},
@@ -80,3 +82,5 @@ std::vector<OverlayLine> OverlayText::lines(const ViewerState& state, const engi
                    kHelp});
     return out;
 }
+
+} // namespace engine_view

@@ -12,6 +12,8 @@
 #include <string>
 #include <vector>
 
+namespace engine_view {
+
 class OverlayText {
 public:
     // Remembers each light's pass time of the frames that rendered its map, so a cached
@@ -30,3 +32,5 @@ public:
 private:
     std::map<int, double> lastMs_;  // by light slot
 };
+
+} // namespace engine_view

@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cmath>
 
+namespace engine_view {
+
 void Presenter::present(const Image& image, int width, int height) {
     if (!texture_.id() || texture_.width() != image.width || texture_.height() != image.height) {
         texture_ = engine::gl::Texture::create2D(GL_RGBA8, image.width, image.height);
@@ -52,3 +54,5 @@ void Presenter::screenshot(const std::filesystem::path& path, int width, int hei
         for (int c = 0; c < 3; ++c) rgb[3 * i + c] = image.rgba[4 * i + c];
     engine::writePngAtomically(path, width, height, 3, rgb);
 }
+
+} // namespace engine_view

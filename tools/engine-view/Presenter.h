@@ -11,6 +11,8 @@
 
 #include <filesystem>
 
+namespace engine_view {
+
 class Presenter {
 public:
     // Draws `image` into the back buffer of a window whose framebuffer is `width` x `height`.
@@ -24,3 +26,5 @@ private:
     engine::gl::Texture texture_;
     engine::gl::Framebuffer framebuffer_;
 };
+
+} // namespace engine_view

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+namespace engine_view {
+
 namespace {
 
 // (s, t) in [0,1]^2 on a 2D map (t = 0 at GL's first row); false when the map has no
@@ -60,3 +62,5 @@ Image projectDepthMap(const Image& shaded, const truth::SurfaceBuffer& surfaces,
     }
     return out;
 }
+
+} // namespace engine_view

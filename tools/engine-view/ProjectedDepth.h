@@ -18,6 +18,8 @@
 #include <cstdint>
 #include <vector>
 
+namespace engine_view {
+
 struct ProjectedMap {
     enum class Kind { Map2D, Cube } kind = Kind::Map2D;
     glm::dmat4 viewProjection{1.0};  // 2D map: P_light * L^-1
@@ -30,3 +32,5 @@ struct ProjectedMap {
 
 // `shaded` and `surfaces` are the same camera's image and capture.
 Image projectDepthMap(const Image& shaded, const truth::SurfaceBuffer& surfaces, const ProjectedMap& map);
+
+} // namespace engine_view

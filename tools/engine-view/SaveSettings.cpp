@@ -12,6 +12,8 @@
 #include <sstream>
 #include <stdexcept>
 
+namespace engine_view {
+
 namespace {
 
 struct Edit {
@@ -145,3 +147,5 @@ void saveSceneSettings(const std::filesystem::path& scene, const std::filesystem
     writeU32(result, 8, static_cast<std::uint32_t>(result.size()));
     engine::writeFileAtomically(out, result);
 }
+
+} // namespace engine_view

@@ -19,6 +19,8 @@
 #include <map>
 #include <string>
 
+namespace engine_view {
+
 // `shadows`: glTF light index (KHR_lights_punctual.lights[i]) -> its new extras.shadow.
 void saveSceneSettings(const std::filesystem::path& scene, const std::filesystem::path& out,
                        const std::map<int, nlohmann::json>& shadows);
@@ -28,3 +30,5 @@ void saveSceneSettings(const std::filesystem::path& scene, const std::filesystem
 // not parse to the original document with the edits (our bug).
 std::string replaceLightShadows(const std::string& json, const std::map<int, nlohmann::json>& shadows,
                                 const std::string& fileName);
+
+} // namespace engine_view

@@ -8,6 +8,8 @@
 #include <map>
 #include <sstream>
 
+namespace engine_view {
+
 namespace {
 
 struct Arity {
@@ -164,3 +166,5 @@ void Script::step(Controls& controls, ViewerState& state, OrbitCamera& camera, L
         requests.quit = true;
     }
 }
+
+} // namespace engine_view

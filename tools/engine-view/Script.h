@@ -30,6 +30,8 @@
 #include <string>
 #include <vector>
 
+namespace engine_view {
+
 class Script {
 public:
     static Script load(const std::filesystem::path& path);
@@ -59,3 +61,5 @@ private:
     int wait_ = 0;      // frames still to render for the last `frames N`
     int lastLine_ = 0;
 };
+
+} // namespace engine_view

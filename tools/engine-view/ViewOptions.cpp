@@ -1,10 +1,11 @@
 #include "ViewOptions.h"
 
 #include "CommandLine.h"
+#include "OptionValues.h"
 
-#include <cerrno>
-#include <cstdlib>
 #include <stdexcept>
+
+namespace engine_view {
 
 const char* const kViewUsage =
     "usage: engine-view --config CONFIG.json --scene SCENE.gltf|.glb\n"
@@ -19,18 +20,8 @@ const char* const kViewUsage =
     "      , . dimming, 1-9 glTF cameras, 0 framing camera, D debug view, O overlay,\n"
     "      S save settings, Esc quit; mouse: left orbit, right/middle pan, wheel zoom\n";
 
-namespace {
-
-int parseSize(const std::string& flag, const std::string& text) {
-    char* end = nullptr;
-    errno = 0;
-    const long value = std::strtol(text.c_str(), &end, 10);
-    if (text.empty() || *end != '\0' || errno != 0 || value < 1 || value > 16384)
-        throw std::invalid_argument(flag + ": \"" + text + "\" is not an integer in [1, 16384]");
-    return static_cast<int>(value);
-}
-
-} // namespace
+// The largest window or image side the viewer accepts: a typo bound, not a GL limit.
+constexpr int kMaxSize = 16384;
 
 ViewOptions parseViewOptions(int argc, char** argv) {
     ViewOptions options;
@@ -39,8 +30,8 @@ ViewOptions parseViewOptions(int argc, char** argv) {
         if (flag == "--config") options.config = value;
         else if (flag == "--scene") { options.scene = value; sawScene = true; }
         else if (flag == "--camera") options.camera = value;
-        else if (flag == "--width") options.width = parseSize(flag, value);
-        else if (flag == "--height") options.height = parseSize(flag, value);
+        else if (flag == "--width") options.width = tools::parseInteger(flag, value, 1, kMaxSize);
+        else if (flag == "--height") options.height = tools::parseInteger(flag, value, 1, kMaxSize);
         else if (flag == "--script") options.script = value;
         else if (flag == "--stay") options.stay = true;
         else if (flag == "--screenshot") options.screenshot = value;
@@ -52,3 +43,5 @@ ViewOptions parseViewOptions(int argc, char** argv) {
     if (!sawScene) throw std::invalid_argument("--scene is required");
     return options;
 }
+
+} // namespace engine_view

@@ -2,6 +2,8 @@
 // engine-view's command line.
 #include <string>
 
+namespace engine_view {
+
 struct ViewOptions {
     std::string config = "content/engine.json";
     std::string scene;
@@ -18,3 +20,5 @@ extern const char* const kViewUsage;
 
 // Throws std::invalid_argument with one line naming the flag and the reason.
 ViewOptions parseViewOptions(int argc, char** argv);
+
+} // namespace engine_view

@@ -1,7 +1,7 @@
 // engine-view: a window on the same engine, config and plugin as engine-render, to choose
-// each light's shadow settings by looking (live variant switching, the seeds' debug views,
-// an on-screen line per light), scriptable (--script) and saving the choice back into the
-// glTF (--save-settings).
+// each light's shadow settings by looking (live variant switching, the debug views of
+// Kilgard's GDC 2000 slides, an on-screen line per light), scriptable (--script) and saving
+// the choice back into the glTF (--save-settings).
 #include "ToolMain.h"
 #include "Controls.h"
 #include "DebugViews.h"
@@ -29,6 +29,7 @@
 #include <iostream>
 #include <optional>
 
+namespace engine_view {
 namespace {
 
 constexpr const char* kShadowPlugin = "shadowmap_plugin";
@@ -155,11 +156,12 @@ int run(const ViewOptions& options, std::unique_ptr<engine::GlContext>& context,
 }
 
 } // namespace
+} // namespace engine_view
 
 int main(int argc, char** argv) {
     std::setvbuf(stdout, nullptr, _IOLBF, 0);  // progress lines show up at once, even piped
-    return tools::toolMain("engine-view", kViewUsage, argc, argv, parseViewOptions,
+    return tools::toolMain("engine-view", engine_view::kViewUsage, argc, argv, engine_view::parseViewOptions,
                            [](const auto& options, tools::ToolSession& session) {
-                               return run(options, session.context, session.host);
+                               return engine_view::run(options, session.context, session.host);
                            });
 }

@@ -1,5 +1,7 @@
 #include "ShadowEvaluation.h"
 
+#include "Median.h"
+
 #include "engine/scene/Scene.h"
 
 #include <algorithm>
@@ -7,13 +9,6 @@
 #include <map>
 
 namespace evaluation {
-
-double median(std::vector<double> values) {
-    if (values.empty()) return 0.0;
-    std::sort(values.begin(), values.end());
-    const std::size_t mid = values.size() / 2;
-    return values.size() % 2 ? values[mid] : 0.5 * (values[mid - 1] + values[mid]);
-}
 
 ShadowEvaluator::ShadowEvaluator(engine::Renderer& renderer, const engine::Scene& scene)
     : renderer_(renderer), scene_(scene), visibility_(scene) {}
@@ -35,7 +30,7 @@ ViewResult ShadowEvaluator::evaluate(const engine::FrameCamera& camera, int fram
             if (ran) lightMs[view.slot].push_back(ms);
         }
     }
-    result.frameMs = median(frameMs);
+    result.frameMs = tools::median(frameMs);
     if (frames > 0) result.image = renderer_.readColor();
 
     // One more frame, untimed, with every shadowed light's mask.
@@ -53,7 +48,7 @@ ViewResult ShadowEvaluator::evaluate(const engine::FrameCamera& camera, int fram
         out.light = view.name;
         out.slot = view.slot;
         out.view = view;
-        out.shadowMs = median(lightMs[view.slot]);
+        out.shadowMs = tools::median(lightMs[view.slot]);
         out.framesRendered = static_cast<int>(lightMs[view.slot].size());
         const std::vector<float> shade = truth::shadeFromMask8(renderer_.readShadowMask(out.slot));
         for (float value : shade) out.nonFinitePixels += !std::isfinite(value);

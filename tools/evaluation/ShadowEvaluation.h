@@ -49,6 +49,4 @@ private:
     truth::RayTracedVisibility visibility_;
 };
 
-double median(std::vector<double> values);
-
 } // namespace evaluation

@@ -1,4 +1,4 @@
-// libFuzzer target for engine::loadGltf (issue 6). Each input is written into a private
+// libFuzzer target for engine::loadGltf. Each input is written into a private
 // scene folder as scene.gltf and as scene.glb and loaded from both (the loader picks the
 // container by GLB magic or by the .glb extension, so both names matter).
 //

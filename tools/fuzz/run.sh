@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Bounded libFuzzer run of the glTF loader (issue 6):  tools/fuzz/run.sh [SECONDS]  (default 60)
+# Bounded libFuzzer run of the glTF loader:  tools/fuzz/run.sh [SECONDS]  (default 60)
 #   1. builds tools/fuzz/ with Debian's clang into build-fuzz/ (apart from the GCC builds),
 #   2. replays every file in tests/data/fuzz-regressions/: each must load or end in
 #      engine::InputError, so crashes found once stay fixed,

@@ -5,7 +5,9 @@
 #include <spawn.h>
 #include <sys/wait.h>
 
-extern char** environ;
+extern char** environ;  // POSIX: the process environment, handed to gnuplot
+
+namespace shadowmap_bench {
 
 std::string runGnuplot(const std::filesystem::path& script, const std::string& outputName) {
     // posix_spawnp with an argument vector: no shell, so no quoting of paths.
@@ -28,3 +30,5 @@ std::string runGnuplot(const std::filesystem::path& script, const std::string& o
         return "gnuplot failed on " + script.string() + " (status " + std::to_string(status) + ")";
     return "";
 }
+
+} // namespace shadowmap_bench

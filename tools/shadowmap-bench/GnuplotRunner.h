@@ -4,6 +4,10 @@
 #include <filesystem>
 #include <string>
 
+namespace shadowmap_bench {
+
 // Returns an empty string on success, else one line saying why (gnuplot missing, or its
 // exit status); gnuplot's own messages go to stderr.
 std::string runGnuplot(const std::filesystem::path& script, const std::string& outputName);
+
+} // namespace shadowmap_bench

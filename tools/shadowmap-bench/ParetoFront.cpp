@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+namespace shadowmap_bench {
+
 std::vector<LightRows> groupByLight(const std::vector<BenchRow>& rows) {
     std::vector<LightRows> groups;
     for (const BenchRow& row : rows) {
@@ -36,3 +38,5 @@ std::optional<BenchRow> mostAccurateWithin(const std::vector<BenchRow>& rows, do
     }
     return best;
 }
+
+} // namespace shadowmap_bench

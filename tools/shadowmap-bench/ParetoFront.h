@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+namespace shadowmap_bench {
+
 // The rows of one light of one scene, in the order the sweep measured them.
 struct LightRows {
     std::string scene, light;
@@ -21,3 +23,5 @@ std::vector<BenchRow> paretoFront(const std::vector<BenchRow>& rows);
 // The lowest error among rows with shadowMs <= budgetMs (ties: the faster one); nullopt
 // when no row fits.
 std::optional<BenchRow> mostAccurateWithin(const std::vector<BenchRow>& rows, double budgetMs);
+
+} // namespace shadowmap_bench

@@ -2,6 +2,8 @@
 
 #include <cstdio>
 
+namespace shadowmap_bench {
+
 namespace {
 
 // RFC 4180: a field with a comma, quote or line break is quoted, quotes doubled. Scene and
@@ -33,3 +35,5 @@ std::string resultsCsv(const std::vector<BenchRow>& rows) {
     }
     return csv;
 }
+
+} // namespace shadowmap_bench

@@ -7,4 +7,8 @@
 #include <string>
 #include <vector>
 
+namespace shadowmap_bench {
+
 std::string resultsCsv(const std::vector<BenchRow>& rows);
+
+} // namespace shadowmap_bench

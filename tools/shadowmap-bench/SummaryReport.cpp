@@ -7,6 +7,8 @@
 #include <limits>
 #include <string_view>
 
+namespace shadowmap_bench {
+
 namespace {
 
 std::string format(const char* pattern, double value) {
@@ -90,3 +92,5 @@ std::string summaryMarkdown(const std::vector<BenchRow>& rows, const SweepDescri
     for (const LightRows& light : lights) text += lightSection(light);
     return text;
 }
+
+} // namespace shadowmap_bench

@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+namespace shadowmap_bench {
+
 // Where and how the numbers were measured, printed at the top of the summary.
 struct SweepDescription {
     int width = 0, height = 0, frames = 0;
@@ -20,3 +22,5 @@ struct SweepDescription {
 inline const std::vector<double> kTimeBudgetsMs = {2.0, 5.0, 10.0, 20.0, 50.0};
 
 std::string summaryMarkdown(const std::vector<BenchRow>& rows, const SweepDescription& sweep);
+
+} // namespace shadowmap_bench

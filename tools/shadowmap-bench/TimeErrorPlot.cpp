@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cstdio>
 
+namespace shadowmap_bench {
+
 namespace {
 
 // gnuplot strings in single quotes: only a quote needs escaping (doubled).
@@ -101,3 +103,5 @@ std::string timeErrorPlotScript(const std::vector<BenchRow>& rows) {
     }
     return script + "unset multiplot\n";
 }
+
+} // namespace shadowmap_bench

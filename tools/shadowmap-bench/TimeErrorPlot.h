@@ -9,4 +9,8 @@
 #include <string>
 #include <vector>
 
+namespace shadowmap_bench {
+
 std::string timeErrorPlotScript(const std::vector<BenchRow>& rows);
+
+} // namespace shadowmap_bench

@@ -1,5 +1,5 @@
 // shadowmap-bench: run time against error of the shadow plugin's settings, per light,
-// over one or more scenes (issue 5). Writes results.csv, summary.md and a time/error plot.
+// over one or more scenes. Writes results.csv, summary.md and a time/error plot.
 #include "ToolMain.h"
 #include "BenchOptions.h"
 #include "GnuplotRunner.h"
@@ -22,6 +22,7 @@
 #include <memory>
 #include <thread>
 
+namespace shadowmap_bench {
 namespace {
 
 constexpr const char* kShadowPlugin = "shadowmap_plugin";
@@ -97,10 +98,11 @@ int run(const BenchOptions& options, std::unique_ptr<engine::GlContext>& context
 }
 
 } // namespace
+} // namespace shadowmap_bench
 
 int main(int argc, char** argv) {
     return tools::toolMain("shadowmap-bench", benchUsage(), argc, argv, parseBenchOptions,
                            [](const auto& options, tools::ToolSession& session) {
-                               return run(options, session.context, session.host);
+                               return shadowmap_bench::run(options, session.context, session.host);
                            });
 }

@@ -7,7 +7,7 @@
 // translated by `offset`, through the nodes' transforms, as a glTF scene far from the
 // origin is: mesh positions stay small floats, the placement is a double matrix.
 //
-// Layouts (the special cases of issue 8):
+// Layouts (the special cases that break a naive shadow map):
 //   Standard           light above the floor centre at `elevationDeg` over the floor
 //                      (spot 14 units away, point 8, directional from that direction)
 //   LightInsideBox     a closed hollow shell (2 units, hovering 0.4 over the floor) with the

@@ -1,5 +1,5 @@
 #pragma once
-// What shadowmap-stress sweeps and the bounds its results must hold (issue 8).
+// What shadowmap-stress sweeps and the bounds its results must hold.
 //
 // Sweeps (each point is rendered for every light kind listed, variant and depth format):
 //   distance   everything translated 0, 1e3, 1e5, 1e6, 1e7 units from the origin (node

@@ -5,6 +5,9 @@
 // plot per sweep and a summary with a pass/fail table (Report.h).
 //
 // Exit status: 0 every bound holds, 2 some bound failed, 1 bad input or an error.
+#include "CommandLine.h"
+#include "OptionValues.h"
+#include "SettingOverrides.h"
 #include "ToolMain.h"
 #include "Report.h"
 #include "StressScenes.h"
@@ -30,7 +33,6 @@
 #include <filesystem>
 #include <memory>
 #include <set>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -63,30 +65,15 @@ struct Options {
     std::vector<std::string> formats;
     int width = 0, height = 0, resolution = 0;  // 0: the mode's default
     std::string config;
-    std::vector<std::pair<std::string, std::string>> pluginSettings;
+    std::vector<tools::SettingOverride> pluginSettings;
     bool plots = true;
     bool images = false;
     bool help = false;
     std::string commandLine;
 };
 
-std::vector<std::string> splitList(const std::string& text) {
-    std::vector<std::string> out;
-    std::stringstream stream(text);
-    for (std::string item; std::getline(stream, item, ',');)
-        if (!item.empty()) out.push_back(item);
-    return out;
-}
-
-int parsePositive(const std::string& flag, const std::string& text) {
-    try {
-        std::size_t used = 0;
-        const int value = std::stoi(text, &used);
-        if (used == text.size() && value > 0) return value;
-    } catch (const std::exception&) {
-    }
-    throw std::invalid_argument(flag + " " + text + ": expected a whole number > 0");
-}
+// Bounds of typos, not of the GL: the plugin checks the GL's own texture size limit.
+constexpr int kMaxSize = 16384, kMaxResolution = 65536;
 
 Options parseOptions(int argc, char** argv) {
     Options options;
@@ -94,32 +81,23 @@ Options parseOptions(int argc, char** argv) {
         if (i) options.commandLine += ' ';
         options.commandLine += argv[i];
     }
-    for (int i = 1; i < argc; ++i) {
-        const std::string flag = argv[i];
-        const auto value = [&]() -> std::string {
-            if (i + 1 >= argc) throw std::invalid_argument(flag + ": missing value");
-            return argv[++i];
-        };
-        if (flag == "--help" || flag == "-h") options.help = true;
-        else if (flag == "--out") options.out = value();
+    options.help = tools::parseFlags(argc, argv, {"--quick", "--no-plots", "--images"},
+                                     [&](const std::string& flag, const std::string& value) {
+        if (flag == "--out") options.out = value;
         else if (flag == "--quick") options.quick = true;
-        else if (flag == "--sweep") options.sweeps.push_back(value());
-        else if (flag == "--variants") options.variants = splitList(value());
-        else if (flag == "--formats") options.formats = splitList(value());
-        else if (flag == "--width") options.width = parsePositive(flag, value());
-        else if (flag == "--height") options.height = parsePositive(flag, value());
-        else if (flag == "--resolution") options.resolution = parsePositive(flag, value());
-        else if (flag == "--config") options.config = value();
+        else if (flag == "--sweep") options.sweeps.push_back(value);
+        else if (flag == "--variants") options.variants = tools::parseList(flag, value);
+        else if (flag == "--formats") options.formats = tools::parseList(flag, value);
+        else if (flag == "--width") options.width = tools::parseInteger(flag, value, 1, kMaxSize);
+        else if (flag == "--height") options.height = tools::parseInteger(flag, value, 1, kMaxSize);
+        else if (flag == "--resolution") options.resolution = tools::parseInteger(flag, value, 1, kMaxResolution);
+        else if (flag == "--config") options.config = value;
         else if (flag == "--no-plots") options.plots = false;
         else if (flag == "--images") options.images = true;
-        else if (flag == "--set") {
-            const std::string assignment = value();
-            const auto equals = assignment.find('=');
-            if (equals == std::string::npos)
-                throw std::invalid_argument("--set " + assignment + ": expected PLUGIN.KEY=JSON");
-            options.pluginSettings.emplace_back(assignment.substr(0, equals), assignment.substr(equals + 1));
-        } else throw std::invalid_argument("unknown option " + flag);
-    }
+        else if (flag == "--set") options.pluginSettings.push_back(tools::parseSettingOverride(flag, value));
+        else return false;
+        return true;
+    });
     if (options.help) return options;
     if (options.out.empty()) throw std::invalid_argument("--out DIR is required");
     if (!options.width) options.width = options.quick ? 96 : 320;
@@ -136,21 +114,7 @@ engine::EngineConfig makeConfig(const Options& options) {
         config.sourcePath = "shadowmap-stress built-in config";
         config.plugins.push_back({"shadowmap_plugin", nlohmann::json::object()});
     }
-    for (const auto& [target, value] : options.pluginSettings) {
-        const auto dot = target.find('.');
-        if (dot == std::string::npos || dot == 0 || dot + 1 == target.size())
-            throw engine::InputError("--set " + target + "=" + value + ": expected PLUGIN.KEY=VALUE");
-        nlohmann::json parsed = nlohmann::json::parse(value, nullptr, false);
-        if (parsed.is_discarded()) parsed = value;  // a bare word is a string
-        bool found = false;
-        for (engine::PluginConfig& plugin : config.plugins)
-            if (plugin.library == target.substr(0, dot)) {
-                plugin.settings[target.substr(dot + 1)] = parsed;
-                found = true;
-            }
-        if (!found) throw engine::InputError("--set " + target + ": the config loads no plugin \"" +
-                                             target.substr(0, dot) + "\"");
-    }
+    tools::applySettingOverrides(config, options.pluginSettings);
     return config;
 }
 

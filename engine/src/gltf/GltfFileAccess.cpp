@@ -1,5 +1,5 @@
-// Sandboxed file access for glTF loading (see GltfFileAccess.h and
-// ../shared/notes/tinygltf-2.7.0.md for the hazards it closes).
+// Sandboxed file access for glTF loading (see GltfFileAccess.h for the tinygltf 2.7.0
+// hazards it closes: URIs reaching outside the scene's folder, directories, huge files).
 #include "GltfFileAccess.h"
 
 #include <cctype>

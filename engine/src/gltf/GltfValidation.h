@@ -1,5 +1,5 @@
 #pragma once
-// Structural validation tinygltf 2.7.0 leaves to us (notes/tinygltf-2.7.0.md, last row).
+// Structural validation tinygltf 2.7.0 leaves to us (it parses but never checks views, accessors, strides, counts, indices or cycles).
 // Once validateModel() returns, the converters may follow every index and read every
 // accessor's bytes without further range checks; what they still check are values
 // (finite numbers, index values, types fitting their use).

@@ -1,5 +1,5 @@
 // Scene graph traversal: composes world transforms in double and gathers the instances
-// every pass works from (DESIGN.md "Transforms").
+// every pass works from (M: object -> world, see Scene.h).
 #include "engine/scene/Scene.h"
 
 #include <cassert>

@@ -1,9 +1,9 @@
 #pragma once
 // Light view (L) and projection (P_light) for each light type, fitted in double to the
 // world bounds of shadow casters and receivers so depth precision is spent where geometry
-// is (DESIGN.md "Shadow variants"). No GL: the plugin turns these into passes and texgen.
+// is. No GL: the plugin turns these into passes and texgen.
 //
-// Conventions (DESIGN.md "Transforms"): L = light -> world, rigid (rotation + position,
+// Conventions (as Texgen.h): L = light -> world, rigid (rotation + position,
 // any node scale dropped), the light looks down its -Z; P_light uses the OpenGL clip
 // convention (z_ndc in [-1,1]), so S * P_light * L^-1 (see Texgen.h) maps what the light
 // sees to [0,1]^3. nearPlane/farPlane are distances along the light's -Z.
@@ -46,7 +46,8 @@ struct ShadowBounds {
 
 struct FrustumFitOptions {
     double minNearFraction = 1e-4;  // near >= far * minNearFraction
-    // Spot and point (issue 8, ShadowSettings near_plane / far_plane): > 0 replaces the
+    // Spot and point (ShadowSettings near_plane / far_plane, for scenes whose range breaks the
+    // fit, see tools/shadowmap-stress): > 0 replaces the
     // fitted near / far; farPlane may be +infinity (an infinite perspective). With
     // reversedZ and no farPlane, the far plane is infinite (see finishPerspectiveDepth).
     double nearPlane = 0.0;

@@ -1,8 +1,9 @@
 #pragma once
 // CPU mirror of OpenGL's EYE_LINEAR texture-coordinate generation, and the matrices that
-// set it up for shadow mapping (seed 001, Equations 1-5 and Appendix A).
+// set it up for shadow mapping (Everitt et al., NVIDIA "Hardware Shadow Mapping", Equations 1-5
+// and Appendix A).
 //
-// Notation (DESIGN.md "Transforms"):
+// Notation (the engine's, used in code, tests and the README):
 //   M        object -> world (model)
 //   V        eye    -> world, so the view matrix is V^-1
 //   L        light  -> world, so the light's view matrix is L^-1

@@ -422,7 +422,7 @@ engine::LightVisibilityHook ShadowMapPlugin::makeHook(const engine::Frame& frame
                              ", uShadowDepth" + slot + ");\n";
         }
         if (plan.kind == MapKind::Map2D) {
-            // Ee = Epo * V with Epo = S * P_light * L^-1, composed in double (DESIGN.md).
+            // Ee = Epo * V with Epo = S * P_light * L^-1, composed in double (Texgen.h).
             eyePlanes[light.slot] = uploaded;
             declarations += "layout(binding = " + unit + ") uniform sampler2DShadow uShadowMap" + slot + ";\n";
             dispatch += "    if (lightSlot == " + slot + ") return shadowMap2D(" + slot + ", " + coordinate +

@@ -3,6 +3,7 @@
 // light of each type and the shadow plugin, without an exception or a GL error.
 #include "../../gl/GlTestContext.h"
 #include "AnalyticShadows.h"
+#include "../../support/AssimpTestModels.h"
 
 #include "engine/gltf/GltfLoader.h"
 #include "engine/render/CameraSetup.h"
@@ -12,8 +13,6 @@
 
 namespace {
 
-const std::filesystem::path kModels = "/usr/share/assimp/models/glTF2";
-
 class AssimpModels : public engine::test::ShadowPluginTest {
 protected:
     static void SetUpTestSuite() { loadPlugin({{"resolution", 256}}); }
@@ -22,10 +21,9 @@ protected:
 } // namespace
 
 TEST_F(AssimpModels, EveryLoadableModelRendersWithShadows) {
-    if (!std::filesystem::is_directory(kModels))
-        GTEST_SKIP() << kModels << " missing: tools/install-deps.sh installs assimp-testmodels";
+    ASSERT_TRUE(engine::test::assimpTestModelsInstalled());
     int loaded = 0, rendered = 0, refused = 0;
-    for (const auto& entry : std::filesystem::recursive_directory_iterator(kModels)) {
+    for (const auto& entry : std::filesystem::recursive_directory_iterator(engine::test::kAssimpGltf2Models)) {
         const std::string extension = entry.path().extension().string();
         if (!entry.is_regular_file() || (extension != ".gltf" && extension != ".glb")) continue;
         engine::Scene scene;

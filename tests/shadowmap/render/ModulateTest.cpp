@@ -1,4 +1,4 @@
-// The ambient-retaining modulate of DESIGN.md, end to end through the plugin and the lit
+// The ambient-retaining modulate (lit.frag), end to end through the plugin and the lit
 // pass: per light, color = base + (d + (1 - d) * shade) * diffuse + shade * specular. So in
 // linear color, where a light is fully shadowed (shade 0) the image moves linearly with
 // the dimming d, and where it is lit (shade 1) d changes nothing. Checked for the frame

@@ -2,6 +2,12 @@
 // Acne = truth-lit floor pixels the mask calls shadowed, over truth-lit pixels; leak =
 // truth-shadowed pixels it calls lit, over truth-shadowed ones; 2 px around analytic edges
 // are left out (see ShadowMaskTest.cpp for why).
+//
+// Measured on llvmpipe (Mesa 22.3), 1024 maps, 240x180: woo and backface have 0 acne and
+// 0 leak pixels in every scene here (of 23000-24000 truth-lit and 355-1578 truth-shadowed
+// pixels); standard without polygon offset 49.7 % acne. Bounds: kStrayPixels wrong pixels of
+// each kind, for a rasterizer that rounds an edge texel differently; a real fault (an acne
+// band, light under a contact) is hundreds of pixels.
 #include "../../gl/GlTestContext.h"
 #include "AnalyticShadows.h"
 
@@ -16,6 +22,8 @@ const engine::Aabb kFloor{{-10, -0.2, -10}, {10, 0, 10}};
 engine::FrameCamera camera() {
     return engine::test::cameraLooking({0, 14, 8}, {0, 0, 0.5}, kWidth, kHeight);
 }
+
+constexpr int kStrayPixels = 3;
 
 const auto kEverywhere = [](const glm::dvec3&) { return true; };
 
@@ -62,9 +70,11 @@ TEST_F(ShadowVariants, WithoutPolygonOffsetOnlyStandardShowsAcne) {
                 100 * standardResult.acneFraction(), 100 * wooResult.acneFraction(),
                 100 * backfaceResult.acneFraction());
     EXPECT_GT(standardResult.truthLit, 2000);
-    EXPECT_GT(standardResult.acneFraction(), 0.10);  // self-shadowing on the lit floor
-    EXPECT_LE(wooResult.acneFraction(), 0.005);
-    EXPECT_LE(backfaceResult.acneFraction(), 0.005);
+    // Self-shadowing on the lit floor: measured 49.7 %; bound 40 %, the acne must be the
+    // band over the lit floor, not a few stray texels.
+    EXPECT_GT(standardResult.acneFraction(), 0.40);
+    EXPECT_LE(wooResult.acne, kStrayPixels);
+    EXPECT_LE(backfaceResult.acne, kStrayPixels);
 }
 
 TEST_F(ShadowVariants, ThinPlankCastsWithoutLeakOrAcne) {
@@ -76,8 +86,8 @@ TEST_F(ShadowVariants, ThinPlankCastsWithoutLeakOrAcne) {
         std::printf("%s thin plank: leak %.3f%%, acne %.3f%%\n", variant,
                     100 * result.leakFraction(), 100 * result.acneFraction());
         EXPECT_GT(result.truthShadowed, 200) << variant;
-        EXPECT_LE(result.leakFraction(), 0.01) << variant;
-        EXPECT_LE(result.acneFraction(), 0.005) << variant;
+        EXPECT_LE(result.leak, kStrayPixels) << variant;
+        EXPECT_LE(result.acne, kStrayPixels) << variant;
     }
 }
 
@@ -89,8 +99,8 @@ TEST_F(ShadowVariants, BoxRestingOnTheFloorKeepsItsContactShadow) {
         std::printf("%s contact: leak %.3f%%, acne %.3f%%\n", variant, 100 * result.leakFraction(),
                     100 * result.acneFraction());
         EXPECT_GT(result.truthShadowed, 200) << variant;
-        EXPECT_LE(result.leakFraction(), 0.01) << variant;
-        EXPECT_LE(result.acneFraction(), 0.005) << variant;
+        EXPECT_LE(result.leak, kStrayPixels) << variant;
+        EXPECT_LE(result.acne, kStrayPixels) << variant;
     }
 }
 
@@ -129,8 +139,8 @@ TEST_F(ShadowVariants, OpenCasterUnderBackfaceIsReportedAndStillCasts) {
             return std::acos(glm::dot(glm::normalize(p - apex), axis)) < 0.72;
         });
     EXPECT_GT(result.truthShadowed, 200);  // the sheet's shadow is on the floor ...
-    EXPECT_LE(result.leakFraction(), 0.01);  // ... and the mask has it
-    EXPECT_LE(result.acneFraction(), 0.005);
+    EXPECT_LE(result.leak, kStrayPixels);  // ... and the mask has it
+    EXPECT_LE(result.acne, kStrayPixels);
 }
 
 TEST_F(ShadowVariants, WooMapHoldsTheMidpointOfTheFirstTwoLayers) {

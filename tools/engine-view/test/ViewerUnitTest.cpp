@@ -20,6 +20,8 @@
 
 #include <unistd.h>
 
+namespace engine_view {
+
 namespace {
 
 const char* const kGltf = R"({
@@ -261,3 +263,5 @@ TEST(OverlayText, SaysWhereEachLightsShadeCameFrom) {
     EXPECT_EQ(OverlayText::shadeSource(shadeCache, 7), "");
     EXPECT_EQ(OverlayText::shadeSource(nlohmann::json::object(), 0), "");
 }
+
+} // namespace engine_view

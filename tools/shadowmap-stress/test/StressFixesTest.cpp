@@ -1,4 +1,4 @@
-// The fixes shadowmap-stress drove (issue 8), checked directly: the reversed-Z and infinite
+// The fixes shadowmap-stress drove, checked directly: the reversed-Z and infinite
 // projections and their texgen S (no GL), and through the plugin on one EGL context: the
 // new settings are validated with one clear sentence, an infinite far plane is reported as
 // such, a clamped cone and non-finite texgen planes are said out loud instead of shading

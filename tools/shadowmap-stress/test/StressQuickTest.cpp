@@ -1,4 +1,4 @@
-// The CI version of the stress sweep (issue 8): runs shadowmap-stress --quick once and holds
+// The CI version of the stress sweep: runs shadowmap-stress --quick once and holds
 // its CSV to the bounds: error at 1e6 within 0.1 points of the origin's for every light,
 // variant and format; scale 1e-3 and 1e3 within 0.2 points of scale 1; no NaN/Inf anywhere;
 // a light inside a closed box leaves everything outside in shadow.

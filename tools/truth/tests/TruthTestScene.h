@@ -2,7 +2,7 @@
 // The scene of the truth tests, built in code so every expected answer is a formula:
 // a 10x10 plane at y = 0, a closed 2x2x2 box floating at y = 1..3 over its centre, one light
 // above, and a camera looking down at it from the side. Everything can be moved by `offset`
-// (DESIGN.md: 10^6 from the origin must behave as at the origin).
+// (the truth must hold 10^6 from the origin as it does at the origin).
 #include "engine/render/Frame.h"
 #include "engine/scene/Scene.h"
 

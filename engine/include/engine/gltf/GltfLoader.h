@@ -1,6 +1,6 @@
 #pragma once
 // glTF 2.0 loading (.gltf with external or data-URI buffers, and .glb) into engine::Scene,
-// through tinygltf 2.7.0 guarded as ../shared/notes/tinygltf-2.7.0.md requires: our own
+// through tinygltf 2.7.0, guarded against the crashes and escapes that version still has: our own
 // file callbacks (scene folder only), our own image decoding, structural validation.
 #include "engine/scene/Scene.h"
 

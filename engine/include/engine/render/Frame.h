@@ -33,7 +33,7 @@ struct FrameCamera {
     glm::dvec3 position() const { return glm::dvec3(eyeToWorld[3]); }
 };
 
-// The per-light visibility term of the lit pass (DESIGN.md "ambient-retaining modulate").
+// The per-light visibility term of the lit pass (the ambient-retaining modulate, lit.frag).
 // `glsl` is inserted into the lit fragment shader (GLSL 4.50 core, after the engine's own
 // declarations) and must define
 //     float lightVisibility(int lightSlot, vec3 eyePosition, vec3 eyeNormal);

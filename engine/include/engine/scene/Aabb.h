@@ -1,6 +1,6 @@
 #pragma once
 // Axis-aligned bounding box in double precision: world bounds must stay exact far from
-// the origin (DESIGN.md: a scene 10^6 units away shadows like one at 0).
+// the origin (a scene 10^6 units away must shadow like one at 0).
 #include <glm/glm.hpp>
 #include <limits>
 

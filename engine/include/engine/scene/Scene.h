@@ -1,6 +1,6 @@
 #pragma once
 // The engine's own scene graph: plain data, filled by the glTF loader (or by tests), read
-// by the renderer and the plugins. Transforms follow DESIGN.md: M (object -> world) per
+// by the renderer and the plugins. Transforms: M (object -> world) per
 // node, composed in double. Cameras look down their node's -Z, lights shine down -Z.
 #include "engine/scene/Aabb.h"
 

@@ -1,0 +1,34 @@
+#pragma once
+// The values the tools' flags take, parsed one way for every tool (engine-render, engine-view,
+// shadowmap-bench, shadowmap-stress). Each parser names the flag in its error, thrown as
+// std::invalid_argument (one line, which toolMain prints), so every tool words a bad value
+// alike: `--width: "0" is not an integer in [1, 16384]`.
+#include "engine/scene/Scene.h"
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace tools {
+
+// A decimal integer in [minimum, maximum]: no sign games, no trailing text, no overflow.
+int parseInteger(const std::string& flag, const std::string& text, int minimum, int maximum);
+
+// A comma-separated list: "a,b,c". One rule for every list flag: an empty item (",a", "a,,b",
+// "a,", "") and an item listed twice are errors naming the flag and the item.
+std::vector<std::string> parseList(const std::string& flag, const std::string& text);
+
+// parseList whose every item must be one of `known` (the error lists them).
+std::vector<std::string> parseNames(const std::string& flag, const std::string& text,
+                                    const std::vector<std::string>& known);
+
+// parseList of integers, each in [minimum, maximum].
+std::vector<int> parseIntegerList(const std::string& flag, const std::string& text, int minimum, int maximum);
+
+// NAME=VALUE with both sides non-empty (the first '=' splits: VALUE may hold more).
+std::pair<std::string, std::string> parseAssignment(const std::string& flag, const std::string& text);
+
+// --key-light's light types: spot, point or directional.
+engine::Light::Type parseLightType(const std::string& flag, const std::string& text);
+
+} // namespace tools

@@ -1,0 +1,31 @@
+#pragma once
+// --set PLUGIN.KEY=VALUE, shared by the tools that load plugins from an engine config
+// (engine-render, shadowmap-bench, shadowmap-stress): one override of one plugin setting.
+// The plugin is named by its library in the config; the value is JSON, a bare word counting
+// as a string (--set shadowmap_plugin.variant=woo), and the plugin checks it like any
+// config setting.
+#include "engine/config/EngineConfig.h"
+
+#include <nlohmann/json.hpp>
+
+#include <string>
+#include <vector>
+
+namespace tools {
+
+struct SettingOverride {
+    std::string plugin;   // the library's name in the config: "shadowmap_plugin"
+    std::string key;      // the setting: "resolution"
+    nlohmann::json value;
+    std::string text;     // as given, for messages
+};
+
+// Throws std::invalid_argument naming the flag when the text is not PLUGIN.KEY=VALUE with
+// every part non-empty.
+SettingOverride parseSettingOverride(const std::string& flag, const std::string& text);
+
+// Applies each override to the config's plugin of that name. Throws engine::InputError when
+// the config loads no such plugin (naming the config's source).
+void applySettingOverrides(engine::EngineConfig& config, const std::vector<SettingOverride>& overrides);
+
+} // namespace tools

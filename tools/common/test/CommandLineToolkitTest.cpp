@@ -1,0 +1,155 @@
+// The tools' command-line toolkit: every bad value is refused with one line naming the flag
+// and what is wrong with it, the same way in every tool.
+#include "CommandLine.h"
+#include "Median.h"
+#include "OptionValues.h"
+#include "SettingOverrides.h"
+
+#include "engine/util/Error.h"
+
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace {
+
+// The message of the std::invalid_argument `parse` throws; fails the test when none is.
+template <typename Parse>
+std::string errorOf(Parse parse) {
+    try {
+        parse();
+    } catch (const std::invalid_argument& error) {
+        return error.what();
+    }
+    ADD_FAILURE() << "no std::invalid_argument thrown";
+    return {};
+}
+
+TEST(OptionValues, IntegersInRangeAreRead) {
+    EXPECT_EQ(tools::parseInteger("--width", "1", 1, 16384), 1);
+    EXPECT_EQ(tools::parseInteger("--width", "16384", 1, 16384), 16384);
+    EXPECT_EQ(tools::parseInteger("--warmup", "0", 0, 1000), 0);
+}
+
+TEST(OptionValues, BadIntegerNamesTheFlagAndTheText) {
+    for (const char* text : {"", "12px", "abc", " 12", "+12", "1.5", "99999999999999999999"})
+        EXPECT_EQ(errorOf([&] { tools::parseInteger("--frames", text, 1, 100); }),
+                  std::string("--frames: \"") + text + "\" is not an integer in [1, 100]");
+}
+
+TEST(OptionValues, IntegerOutOfRangeNamesTheRange) {
+    EXPECT_EQ(errorOf([] { tools::parseInteger("--width", "0", 1, 16384); }),
+              "--width: \"0\" is not an integer in [1, 16384]");
+    EXPECT_EQ(errorOf([] { tools::parseInteger("--width", "16385", 1, 16384); }),
+              "--width: \"16385\" is not an integer in [1, 16384]");
+    EXPECT_EQ(errorOf([] { tools::parseInteger("--width", "-3", 1, 16384); }),
+              "--width: \"-3\" is not an integer in [1, 16384]");
+}
+
+TEST(OptionValues, ListsKeepTheirOrder) {
+    EXPECT_EQ(tools::parseList("--variants", "woo,standard"), (std::vector<std::string>{"woo", "standard"}));
+    EXPECT_EQ(tools::parseList("--variants", "woo"), (std::vector<std::string>{"woo"}));
+    EXPECT_EQ(tools::parseIntegerList("--resolutions", "512,2048", 1, 65536), (std::vector<int>{512, 2048}));
+}
+
+TEST(OptionValues, EmptyListItemIsAnErrorNamingTheFlag) {
+    for (const char* text : {"", ",woo", "woo,", "woo,,standard"})
+        EXPECT_EQ(errorOf([&] { tools::parseList("--variants", text); }),
+                  std::string("--variants: empty item in \"") + text + "\" (items are separated by single commas)");
+}
+
+TEST(OptionValues, DuplicateListItemIsAnErrorNamingFlagAndItem) {
+    EXPECT_EQ(errorOf([] { tools::parseList("--formats", "d24,d32f,d24"); }),
+              "--formats: \"d24\" is listed twice in \"d24,d32f,d24\"");
+    EXPECT_EQ(errorOf([] { tools::parseIntegerList("--resolutions", "512,512", 1, 65536); }),
+              "--resolutions: \"512\" is listed twice in \"512,512\"");
+}
+
+TEST(OptionValues, UnknownNameListsTheKnownOnes) {
+    EXPECT_EQ(errorOf([] { tools::parseNames("--variants", "woo,wang", {"standard", "woo", "backface"}); }),
+              "--variants: unknown value \"wang\" (known: standard,woo,backface)");
+    EXPECT_EQ(errorOf([] { tools::parseIntegerList("--resolutions", "512,big", 1, 65536); }),
+              "--resolutions: \"big\" is not an integer in [1, 65536]");
+}
+
+TEST(OptionValues, AssignmentNeedsBothSides) {
+    EXPECT_EQ(tools::parseAssignment("--light", "sun=woo"), (std::pair<std::string, std::string>{"sun", "woo"}));
+    EXPECT_EQ(tools::parseAssignment("--light", "a=b=c").second, "b=c");
+    for (const char* text : {"sun", "=woo", "sun="})
+        EXPECT_EQ(errorOf([&] { tools::parseAssignment("--light", text); }),
+                  std::string("--light: \"") + text + "\" must be NAME=VALUE");
+}
+
+TEST(OptionValues, KeyLightTypes) {
+    EXPECT_EQ(tools::parseLightType("--key-light", "spot"), engine::Light::Type::Spot);
+    EXPECT_EQ(tools::parseLightType("--key-light", "point"), engine::Light::Type::Point);
+    EXPECT_EQ(tools::parseLightType("--key-light", "directional"), engine::Light::Type::Directional);
+    EXPECT_EQ(errorOf([] { tools::parseLightType("--key-light", "sun"); }),
+              "--key-light: \"sun\" is not spot, point or directional");
+}
+
+TEST(SettingOverrides, ValueIsJsonOrABareWord) {
+    const tools::SettingOverride number = tools::parseSettingOverride("--set", "shadowmap_plugin.resolution=512");
+    EXPECT_EQ(number.plugin, "shadowmap_plugin");
+    EXPECT_EQ(number.key, "resolution");
+    EXPECT_EQ(number.value, 512);
+    EXPECT_EQ(tools::parseSettingOverride("--set", "shadowmap_plugin.variant=woo").value, "woo");
+    EXPECT_EQ(tools::parseSettingOverride("--set", "p.offset=[1,2]").value, nlohmann::json::array({1, 2}));
+}
+
+TEST(SettingOverrides, SetWithoutEqualsIsAnError) {
+    EXPECT_EQ(errorOf([] { tools::parseSettingOverride("--set", "shadowmap_plugin.resolution"); }),
+              "--set: \"shadowmap_plugin.resolution\" must be PLUGIN.KEY=VALUE (no '=')");
+}
+
+TEST(SettingOverrides, TargetMustBePluginDotKey) {
+    for (const char* target : {"resolution", ".resolution", "shadowmap_plugin."})
+        EXPECT_EQ(errorOf([&] { tools::parseSettingOverride("--set", std::string(target) + "=1"); }),
+                  std::string("--set: \"") + target + "=1\" must be PLUGIN.KEY=VALUE (\"" + target +
+                      "\" is not PLUGIN.KEY)");
+    EXPECT_EQ(errorOf([] { tools::parseSettingOverride("--set", "p.key="); }),
+              "--set: \"p.key=\" must be PLUGIN.KEY=VALUE (no value)");
+}
+
+TEST(SettingOverrides, AppliedToTheNamedPluginOnly) {
+    engine::EngineConfig config;
+    config.sourcePath = "engine.json";
+    config.plugins = {{"shadowmap_plugin", {{"resolution", 2048}}}, {"other", {}}};
+    tools::applySettingOverrides(config, {tools::parseSettingOverride("--set", "shadowmap_plugin.resolution=512")});
+    EXPECT_EQ(config.plugins[0].settings["resolution"], 512);
+    EXPECT_FALSE(config.plugins[1].settings.contains("resolution"));
+    try {
+        tools::applySettingOverrides(config, {tools::parseSettingOverride("--set", "nope.key=1")});
+        ADD_FAILURE() << "an override of a plugin the config does not load was accepted";
+    } catch (const engine::InputError& error) {
+        EXPECT_STREQ(error.what(), "--set nope.key=1: the config engine.json loads no plugin \"nope\"");
+    }
+}
+
+TEST(Median, OddEvenAndEmpty) {
+    EXPECT_EQ(tools::median({3.0, 1.0, 2.0}), 2.0);
+    EXPECT_EQ(tools::median({4.0, 1.0, 3.0, 2.0}), 2.5);
+    EXPECT_EQ(tools::median({5.0}), 5.0);
+    EXPECT_EQ(tools::median({}), 0.0);
+}
+
+// The flag loop: values are taken whatever they look like, switches take none, and the
+// errors it owns name the flag.
+TEST(CommandLine, FlagLoopErrors) {
+    std::vector<std::string> words = {"tool", "--width", "64", "--truth", "--typo", "1"};
+    std::vector<char*> argv;
+    for (std::string& word : words) argv.push_back(word.data());
+    std::vector<std::string> seen;
+    const auto handler = [&](const std::string& flag, const std::string& value) {
+        seen.push_back(flag + "=" + value);
+        return flag != "--typo";
+    };
+    EXPECT_EQ(errorOf([&] { tools::parseFlags(int(argv.size()), argv.data(), {"--truth"}, handler); }),
+              "unknown option --typo");
+    EXPECT_EQ(seen, (std::vector<std::string>{"--width=64", "--truth=", "--typo=1"}));
+    EXPECT_EQ(errorOf([&] { tools::parseFlags(2, argv.data(), {"--truth"}, handler); }), "--width: missing value");
+}
+
+} // namespace
