@@ -9,14 +9,13 @@
 // rounding): four interpolated components per light instead of a mat4 product per pixel.
 // The plugin generates, after this file, one output per shadowed light and lightTexgen()
 // setting them with constant slots.
-uniform mat4 uShadowEyePlanes[MAX_LIGHTS];   // Ee, rows s,t,r,q (2D maps)
-uniform vec4 uShadowPointLight[MAX_LIGHTS];  // eye-space light position, near (cube maps)
-uniform mat3 uShadowEyeToWorld;              // R_V: cube lookups use world axes
+// Ee, the light's eye-space position and R_V come from shadow_data.glsl's block, placed
+// before this file.
 
 vec4 shadowCoord(int slot, vec3 eyePosition) {
-    return uShadowEyePlanes[slot] * vec4(eyePosition, 1.0);
+    return shadowData.eyePlanes[slot] * vec4(eyePosition, 1.0);
 }
 
 vec3 shadowToPoint(int slot, vec3 eyePosition) {
-    return uShadowEyeToWorld * (eyePosition - uShadowPointLight[slot].xyz);
+    return mat3(shadowData.eyeToWorld) * (eyePosition - shadowData.pointLight[slot].xyz);
 }

@@ -17,15 +17,7 @@
 // indexing sampler arrays cost llvmpipe 40 ms per 1280x720 frame even with every light
 // unshadowed: it runs the texture fetches of untaken branches.)
 
-// x: 1 = reversed Z (ShadowSettings reversed_z: window depth 1 at near, 0 at far, and the
-// map compares with GL_GEQUAL), y: bias subtracted from the reference depth (d32f without
-// reversed Z, see ShadowSettings.h), z: dimming (applied by the engine, hook.dimming), w: the
-// shade outside the map (2D maps) or of every
-// point of a light without a map this frame (1 for lights without shadows, 0 for a spot
-// light whose frustum holds nothing the camera sees: every visible point is outside it).
-uniform vec4 uShadowParams[MAX_LIGHTS];
-uniform vec4 uShadowPointLight[MAX_LIGHTS];  // eye-space light position, near (cube maps)
-uniform float uShadowPointFar[MAX_LIGHTS];   // far (cube maps); 0 = infinite
+// The per-light parameters come from shadow_data.glsl's block, placed before this file.
 
 // shadowMap2D is branch-free on purpose (selects, no early return): llvmpipe runs a fragment
 // shader on SIMD lanes, and early returns cost it more than always sampling (measured:
@@ -38,11 +30,11 @@ uniform float uShadowPointFar[MAX_LIGHTS];   // far (cube maps); 0 = infinite
 // coord: (s,t,r,q) from the vertex part (texgen.glsl).
 float shadowMap2D(int slot, vec4 coord, sampler2DShadow map) {
     vec3 p = coord.xyz / coord.w;
-    bool reversed = uShadowParams[slot].x > 0.5;
-    float reference = p.z - uShadowParams[slot].y;
+    bool reversed = shadowData.params[slot].x > 0.5;
+    float reference = p.z - shadowData.params[slot].y;
     float shade = texture(map, vec3(p.xy, reversed ? max(reference, 0.0) : min(reference, 1.0)));
     bool outside = any(lessThan(p.xy, vec2(0.0))) || any(greaterThan(p.xy, vec2(1.0)));
-    shade = outside ? uShadowParams[slot].w : shade;
+    shade = outside ? shadowData.params[slot].w : shade;
     shade = (reversed ? p.z > 1.0 : p.z < 0.0) ? 1.0 : shade;
     return coord.w <= 0.0 ? 0.0 : shade;
 }
@@ -60,8 +52,8 @@ float cubeMajorAxisDistance(vec3 toPoint) {
 // with an infinite far (f = 0 here): 1 - n/major, reversed n/major. Its CPU twin is
 // cubeShadowReferenceDepth (math/LightFrustum.h); CubeReferenceDepthTest compares the two.
 float cubeReferenceDepth(int slot, float major) {
-    float n = uShadowPointLight[slot].w, f = uShadowPointFar[slot];
-    bool reversed = uShadowParams[slot].x > 0.5;
+    float n = shadowData.pointLight[slot].w, f = shadowData.pointFar[slot].x;
+    bool reversed = shadowData.params[slot].x > 0.5;
     if (f <= 0.0) return reversed ? n / major : 1.0 - n / major;
     return reversed ? n / (f - n) * (f / major - 1.0) : f / (f - n) * (1.0 - n / major);
 }
@@ -87,14 +79,14 @@ vec4 comparison2D(int slot, vec4 coord, sampler2D depth) {
         return vec4(0.4, 0.4, 0.4, 1.0);
     float stored = texture(depth, p.xy).r;
     // Reversed Z: nearer is larger, so the roles swap for "reference behind stored".
-    return uShadowParams[slot].x > 0.5 ? comparisonColor(stored, p.z) : comparisonColor(p.z, stored);
+    return shadowData.params[slot].x > 0.5 ? comparisonColor(stored, p.z) : comparisonColor(p.z, stored);
 }
 
 vec4 comparisonCube(int slot, vec3 toPoint, samplerCube depth) {
     float major = cubeMajorAxisDistance(toPoint);
     float reference = cubeReferenceDepth(slot, major);
-    bool reversed = uShadowParams[slot].x > 0.5;
-    if (major < uShadowPointLight[slot].w || (reversed ? reference < 0.0 : reference > 1.0))
+    bool reversed = shadowData.params[slot].x > 0.5;
+    if (major < shadowData.pointLight[slot].w || (reversed ? reference < 0.0 : reference > 1.0))
         return vec4(0.4, 0.4, 0.4, 1.0);
     float stored = texture(depth, toPoint).r;
     return reversed ? comparisonColor(stored, reference) : comparisonColor(reference, stored);
@@ -103,8 +95,8 @@ vec4 comparisonCube(int slot, vec3 toPoint, samplerCube depth) {
 // toPoint: light -> point along world axes, from the vertex part (texgen.glsl).
 float shadowMapCube(int slot, vec3 toPoint, samplerCubeShadow map) {
     float major = cubeMajorAxisDistance(toPoint);
-    if (major < uShadowPointLight[slot].w) return 1.0;
-    float depth = cubeReferenceDepth(slot, major) - uShadowParams[slot].y;
-    bool reversed = uShadowParams[slot].x > 0.5;
+    if (major < shadowData.pointLight[slot].w) return 1.0;
+    float depth = cubeReferenceDepth(slot, major) - shadowData.params[slot].y;
+    bool reversed = shadowData.params[slot].x > 0.5;
     return texture(map, vec4(toPoint, reversed ? max(depth, 0.0) : min(depth, 1.0)));
 }

@@ -114,6 +114,13 @@ LitPass::LitPass(const RendererConfig& config)
 
 const gl::Program& LitPass::programFor(const LightVisibilityHook* hook, const std::string& lightDefinesGlsl,
                                       Output output, const std::string& loadShadesGlsl, unsigned variant) {
+    // A hook without a version is known by its text (Frame.h).
+    std::string hookIdentity;
+    if (hook) hookIdentity = hook->glslVersion ? hook->owner : hook->owner + '\0' + hook->glsl + '\0' + hook->vertexGlsl;
+    ProgramKey key{std::move(hookIdentity), hook ? hook->glslVersion : 0, lightDefinesGlsl, loadShadesGlsl, output,
+                   variant};
+    auto found = programs_.find(key);
+    if (found != programs_.end()) return *found->second;
     const std::string visibilityGlsl = hook ? hook->glsl : kNoShadowsGlsl;
     const std::string vertexTail = hook && !hook->vertexGlsl.empty() ? hook->vertexGlsl : kNoTexgenGlsl;
     const std::string header = "#version 450 core\n#define MAX_LIGHTS " + std::to_string(kMaxLights) + "\n" +
@@ -122,13 +129,10 @@ const gl::Program& LitPass::programFor(const LightVisibilityHook* hook, const st
                                (output == Output::ShadowMask ? "#define LIGHT_MASK_VIEW\n" : "") +
                                materialDefines(variant, MaterialUse::Shading);
     const std::string fragmentTail = visibilityGlsl + "\n" + loadShadesGlsl;
-    const std::string key = header + vertexTail + fragmentTail;
-    auto found = programs_.find(key);
-    if (found != programs_.end()) return *found->second;
     auto program = std::make_unique<gl::Program>(gl::Program::compile(
         "lit", {{GL_VERTEX_SHADER, header + materialVertexGlsl() + shaders::lit_vert + "\n" + vertexTail},
                 {GL_FRAGMENT_SHADER, header + materialFragmentGlsl() + shaders::lit_frag + "\n" + fragmentTail}}));
-    return *programs_.emplace(key, std::move(program)).first->second;
+    return *programs_.emplace(std::move(key), std::move(program)).first->second;
 }
 
 void LitPass::uploadLights(const Scene& scene, const FrameCamera& camera) {

@@ -2,6 +2,7 @@
 
 #include "plugin/DepthFormatGl.h"
 #include "plugin/MapCacheKey.h"
+#include "plugin/ShadowBlock.h"
 
 #include "engine/scene/FrustumCull.h"
 #include "math/LightFrustum.h"
@@ -21,10 +22,6 @@
 
 namespace shadowmap {
 
-namespace shaders {
-extern const char visibility_glsl[];
-extern const char texgen_glsl[];
-}
 
 namespace {
 
@@ -339,10 +336,13 @@ engine::LightVisibilityHook ShadowMapPlugin::makeHook(const engine::Frame& frame
     const glm::dmat4& eyeToWorld = frame.camera().eyeToWorld;  // V
     const glm::dmat4 view = glm::inverse(eyeToWorld);          // V^-1
     // Lights without a map this frame: fully visible, nothing dimmed.
-    std::vector<glm::vec4> params(engine::kMaxLights, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
-    std::vector<glm::mat4> eyePlanes(engine::kMaxLights, glm::mat4(0.0f));
-    std::vector<glm::vec4> pointLight(engine::kMaxLights, glm::vec4(0.0f));
-    std::vector<float> pointFar(engine::kMaxLights, 1.0f);
+    ShadowBlock block{};
+    glm::vec4* params = block.params;
+    for (int slot = 0; slot < engine::kMaxLights; ++slot) {
+        params[slot] = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
+        block.pointFar[slot].x = 1.0f;
+    }
+    block.eyeToWorld = glm::mat4(glm::mat3(glm::dmat3(eyeToWorld)));
     std::vector<std::pair<int, unsigned>> units;      // texture unit, map (comparing)
     std::vector<std::pair<int, unsigned>> rawUnits;   // texture unit, map (raw depth, debug)
     std::vector<std::uint64_t> shadeKeys(lights_.size(), 0);  // 0: not to be reused
@@ -350,10 +350,9 @@ engine::LightVisibilityHook ShadowMapPlugin::makeHook(const engine::Frame& frame
     // whose frustum holds nothing visible): the lit pass needs no lookup for it.
     std::map<int, float> constantShades;
 
-    // The generated part of the hook: per shadowed light one sampler, one interpolated
-    // coordinate set per vertex, and a dispatch on the slot with constant arguments (see
-    // visibility.glsl for why).
-    std::string declarations, dispatch, debugDispatch, texgenOutputs, texgen;
+    // What the generated GLSL depends on: per shadowed light its slot, map kind and whether
+    // its comparison view has a texture unit.
+    std::vector<HookGlsl::Lookup> lookups;
     for (const LightShadow& light : lights_) {
         const LightShadowFrame& plan = light.frame;
         // Outside a spot light's frustum is outside its cone: never lit by it. Directional
@@ -399,8 +398,6 @@ engine::LightVisibilityHook ShadowMapPlugin::makeHook(const engine::Frame& frame
         // Without map caching nothing is reused: a depth pass whose map no pass reads
         // would be culled, and timing runs (bench, cache_maps false) would time nothing.
         if (cacheMaps_) shadeKeys[light.slot] = shadeKey.value();
-        const std::string slot = std::to_string(light.slot);
-        const std::string unit = std::to_string(kFirstUnit + light.slot);
         units.emplace_back(kFirstUnit + light.slot, light.map.id());
         // The comparison view reads the same map's raw depth on a second unit, through a
         // sampler object with comparison off (when the GL has units to spare).
@@ -408,35 +405,17 @@ engine::LightVisibilityHook ShadowMapPlugin::makeHook(const engine::Frame& frame
         const bool debuggable = rawUnit < maxTextureUnits_;
         if (debuggable) rawUnits.emplace_back(rawUnit, light.map.id());
         const bool cube = plan.kind == MapKind::Cube;
-        // The lookup's coordinates come interpolated from the vertex part (texgen.glsl).
-        const std::string coordinate = (cube ? "vShadowToPoint" : "vShadowCoord") + slot;
-        const std::string coordinateType = cube ? "vec3 " : "vec4 ";
-        texgenOutputs += "out " + coordinateType + coordinate + ";\n";
-        texgen += "    " + coordinate + (cube ? " = shadowToPoint(" : " = shadowCoord(") + slot + ", eyePosition);\n";
-        declarations += "in " + coordinateType + coordinate + ";\n";
-        if (debuggable) {
-            declarations += "layout(binding = " + std::to_string(rawUnit) + ") uniform " +
-                        (cube ? "samplerCube" : "sampler2D") + " uShadowDepth" + slot + ";\n";
-            debugDispatch += "    if (lightSlot == " + slot + ") return " +
-                             (cube ? "comparisonCube(" : "comparison2D(") + slot + ", " + coordinate +
-                             ", uShadowDepth" + slot + ");\n";
-        }
-        if (plan.kind == MapKind::Map2D) {
+        lookups.push_back({light.slot, kFirstUnit + light.slot, cube, debuggable ? rawUnit : -1});
+        if (!cube) {
             // Ee = Epo * V with Epo = S * P_light * L^-1, composed in double (Texgen.h).
-            eyePlanes[light.slot] = uploaded;
-            declarations += "layout(binding = " + unit + ") uniform sampler2DShadow uShadowMap" + slot + ";\n";
-            dispatch += "    if (lightSlot == " + slot + ") return shadowMap2D(" + slot + ", " + coordinate +
-                        ", uShadowMap" + slot + ");\n";
+            block.eyePlanes[light.slot] = uploaded;
         } else {
             const glm::dvec3 lightPosition = frame.scene().lightInstances[light.slot].position();
-            pointLight[light.slot] = glm::vec4(glm::vec3(view * glm::dvec4(lightPosition, 1.0)),
-                                               static_cast<float>(plan.pointViews.nearPlane));
+            block.pointLight[light.slot] = glm::vec4(glm::vec3(view * glm::dvec4(lightPosition, 1.0)),
+                                                     static_cast<float>(plan.pointViews.nearPlane));
             // 0 stands for an infinite far plane (GLSL has no infinity to pass).
-            pointFar[light.slot] = std::isinf(plan.pointViews.farPlane) ? 0.0f
-                                                                        : static_cast<float>(plan.pointViews.farPlane);
-            declarations += "layout(binding = " + unit + ") uniform samplerCubeShadow uShadowMap" + slot + ";\n";
-            dispatch += "    if (lightSlot == " + slot + ") return shadowMapCube(" + slot + ", " + coordinate +
-                        ", uShadowMap" + slot + ");\n";
+            block.pointFar[light.slot].x =
+                std::isinf(plan.pointViews.farPlane) ? 0.0f : static_cast<float>(plan.pointViews.farPlane);
         }
     }
 
@@ -444,22 +423,20 @@ engine::LightVisibilityHook ShadowMapPlugin::makeHook(const engine::Frame& frame
     hook.owner = name();
     hook.constantShades = std::move(constantShades);
     hook.shadeKeys = std::move(shadeKeys);
-    for (const glm::vec4& light : params) hook.dimming.push_back(light.z);
-    hook.glsl = std::string(shaders::visibility_glsl) + declarations +
-                "float lightVisibility(int lightSlot, vec3 eyePosition, vec3 eyeNormal) {\n" + dispatch +
-                "    return uShadowParams[lightSlot].w;\n}\n" +
-                "vec4 lightDebugColor(int lightSlot, vec3 eyePosition, vec3 eyeNormal) {\n" +
-                debugDispatch + "    return vec4(0.4, 0.4, 0.4, 1.0);\n}\n";
-    hook.vertexGlsl = std::string(shaders::texgen_glsl) + texgenOutputs +
-                      "void lightTexgen(vec3 eyePosition) {\n" + texgen + "}\n";
+    for (const glm::vec4& light : block.params) hook.dimming.push_back(light.z);
+    const HookGlsl::Code& code = hookGlsl_.codeFor(lookups);
+    hook.glsl = code.fragment;
+    hook.vertexGlsl = code.vertex;
+    hook.glslVersion = code.version;
+    // Uploaded now, before any pass of the frame runs (GL keeps the order), once for every
+    // program variant of the frame.
+    if (!shadowBlock_.id())
+        shadowBlock_ = engine::gl::Buffer::create(sizeof(ShadowBlock), nullptr, GL_DYNAMIC_STORAGE_BIT);
+    glNamedBufferSubData(shadowBlock_.id(), 0, sizeof(ShadowBlock), &block);
     const unsigned rawSampler = rawDepthSampler().id();
-    const glm::mat3 eyeToWorldRotation = glm::mat3(glm::dmat3(eyeToWorld));
-    hook.bind = [=](const engine::gl::Program& program, const engine::PassContext&) {
-        program.set("uShadowParams", params);
-        program.set("uShadowEyePlanes", eyePlanes);
-        program.set("uShadowPointLight", pointLight);
-        program.set("uShadowPointFar", pointFar);
-        program.set("uShadowEyeToWorld", eyeToWorldRotation);
+    const unsigned blockBuffer = shadowBlock_.id();
+    hook.bind = [=](const engine::gl::Program&, const engine::PassContext&) {
+        glBindBufferBase(GL_UNIFORM_BUFFER, kShadowBlockBinding, blockBuffer);
         for (const auto& [unit, map] : units) glBindTextureUnit(unit, map);
         for (const auto& [unit, map] : rawUnits) {
             glBindTextureUnit(unit, map);

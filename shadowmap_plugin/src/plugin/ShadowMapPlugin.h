@@ -2,9 +2,11 @@
 // The shadow plugin: per light, a depth pass into a shadow map it owns, and the lit pass's
 // visibility hook (texgen eye planes, hardware comparison, ambient-retaining modulate).
 #include "plugin/DepthRenderer.h"
+#include "plugin/HookGlsl.h"
 #include "plugin/LightShadow.h"
 #include "shadowmap/ShadowSettings.h"
 
+#include "engine/gl/Buffer.h"
 #include "engine/gl/Sampler.h"
 #include "engine/plugin/RenderPlugin.h"
 
@@ -52,6 +54,8 @@ private:
     std::unique_ptr<DepthRenderer> depth_;             // created with the first frame (needs GL)
     int maxTextureUnits_ = 16;                         // GL_MAX_TEXTURE_IMAGE_UNITS
     engine::gl::Sampler rawDepthSampler_;
+    engine::gl::Buffer shadowBlock_;                   // ShadowBlock.h, refilled every frame
+    HookGlsl hookGlsl_;                                // the hook's code per map layout
     std::set<std::string> warned_;                     // warnings already printed
     std::string scenePath_;                            // the scene's file, for messages
     bool cacheMaps_ = true;

@@ -71,12 +71,16 @@ protected:
                   "  outDepth = vec4(cubeReferenceDepth(" + std::to_string(kSlot) + ", cubeMajorAxisDistance(v)));\n"
                   "}\n"}});
         // The other slots hold values that would give wrong depths if read.
-        std::vector<glm::vec4> params(engine::kMaxLights, glm::vec4(1.0f - float(light.reversed), 0, 0, 0));
-        std::vector<glm::vec4> pointLight(engine::kMaxLights, glm::vec4(0, 0, 0, 3.0f));
-        std::vector<float> pointFar(engine::kMaxLights, 7.0f);
-        params[kSlot] = glm::vec4(light.reversed ? 1.0f : 0.0f, 0.0f, 0.4f, 1.0f);
-        pointLight[kSlot] = glm::vec4(1.0f, 2.0f, 3.0f, light.nearPlane);
-        pointFar[kSlot] = light.farPlane;
+        shadowmap::ShadowBlock block{};
+        for (int slot = 0; slot < engine::kMaxLights; ++slot) {
+            block.params[slot] = glm::vec4(1.0f - float(light.reversed), 0, 0, 0);
+            block.pointLight[slot] = glm::vec4(0, 0, 0, 3.0f);
+            block.pointFar[slot] = glm::vec4(7.0f);
+        }
+        block.params[kSlot] = glm::vec4(light.reversed ? 1.0f : 0.0f, 0.0f, 0.4f, 1.0f);
+        block.pointLight[kSlot] = glm::vec4(1.0f, 2.0f, 3.0f, light.nearPlane);
+        block.pointFar[kSlot].x = light.farPlane;
+        const engine::gl::Buffer blockBuffer = shadowmap::test::bindShadowBlock(block);
 
         engine::gl::Buffer buffer = engine::gl::Buffer::create(directions.size() * sizeof(glm::vec4), directions.data());
         buffer.bindBase(GL_SHADER_STORAGE_BUFFER, 0);
@@ -89,9 +93,6 @@ protected:
         glViewport(0, 0, kSamples, 1);
         glDisable(GL_DEPTH_TEST);
         program.use();
-        program.set("uShadowParams", params);
-        program.set("uShadowPointLight", pointLight);
-        program.set("uShadowPointFar", pointFar);
         glBindVertexArray(empty.id());
         glDrawArrays(GL_TRIANGLES, 0, 3);
         glBindVertexArray(0);

@@ -166,9 +166,10 @@ TEST_F(TexgenOracle, EmulationMatchesFixedFunctionEyeLinearTexgen) {
             emulation.set("uModelView", glm::mat4(view * setup.model));
             emulation.set("uProjection", glm::mat4(setup.eyeProjection));
             // The other slots hold a matrix that would give wrong coordinates if read.
-            std::vector<glm::mat4> eyePlanes(engine::kMaxLights, glm::mat4(2.0f));
-            eyePlanes[kSlot] = glm::mat4(texgen.eyePlanes());
-            emulation.set("uShadowEyePlanes", eyePlanes);
+            shadowmap::ShadowBlock block{};
+            for (glm::mat4& planes : block.eyePlanes) planes = glm::mat4(2.0f);
+            block.eyePlanes[kSlot] = glm::mat4(texgen.eyePlanes());
+            const engine::gl::Buffer blockBuffer = shadowmap::test::bindShadowBlock(block);
             glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(floats.size()));
             glUseProgram(0);
             glDeleteBuffers(1, &buffer);

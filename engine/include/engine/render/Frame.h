@@ -25,6 +25,8 @@ namespace gl { class Program; }
 constexpr int kMaxLights = 16;
 // Texture units 0..kFirstPluginTextureUnit-1 belong to the engine's materials.
 constexpr int kFirstPluginTextureUnit = 4;
+// Uniform block binding 0 is the lit pass's lights; a visibility hook's blocks start here.
+constexpr unsigned kFirstPluginUniformBinding = 1;
 
 struct FrameCamera {
     glm::dmat4 eyeToWorld{1.0};  // V (eye -> world); the view matrix is V^-1
@@ -46,8 +48,13 @@ struct FrameCamera {
 // (e.g. shadow-map coordinates, which the fragment part declares as inputs).
 // `dimming` (by light slot; missing = 0) is each light's dimming d in [0,1]: the lit pass
 // uses diffuseShade = d + (1 - d) * shade for diffuse and shade for specular.
-// `bind` runs before the lit pass draws (uniforms; textures on units
-// >= kFirstPluginTextureUnit), and `reads` are the graph resources it samples.
+// `bind` runs before the lit pass draws (uniforms, blocks on bindings
+// >= kFirstPluginUniformBinding, textures on units >= kFirstPluginTextureUnit), and `reads`
+// are the graph resources it samples.
+// `glslVersion` names the code: the lit pass keeps its programs by (owner, glslVersion) and
+// never reads the sources of a version it has compiled, so a plugin must give a new version
+// to different code (and may give an old one back when its code returns to what it was).
+// Version 0 promises nothing: such a hook's programs are found by comparing its text.
 //
 // `shadeKeys` (by light slot; missing or 0 = "evaluate every frame") lets the lit pass
 // reuse a light's shade from the previous frame, per pixel (ShadeCache.h): a plugin gives
@@ -62,6 +69,7 @@ struct LightVisibilityHook {
     std::string owner;  // plugin name, for messages
     std::string glsl;
     std::string vertexGlsl;
+    std::uint64_t glslVersion = 0;
     std::vector<ResourceHandle> reads;
     std::function<void(const gl::Program&, const PassContext&)> bind;
     std::vector<float> dimming;

@@ -12,6 +12,8 @@
 #include "engine/render/ShadeCache.h"
 
 #include <array>
+#include <compare>
+#include <cstdint>
 #include <map>
 #include <memory>
 #include <string>
@@ -55,8 +57,19 @@ private:
     void uploadLights(const Scene& scene, const FrameCamera& camera);
     void drawScene(const Frame& frame, const Variants& programs, PassContext& context);
 
+    // What a lit program is compiled from, without its text: the hook by owner and version
+    // (Frame.h), the light and shade-cache defines (a few lines), output and variant.
+    struct ProgramKey {
+        std::string hookIdentity;  // its owner; empty: no hook (or none of its code needed)
+        std::uint64_t hookVersion = 0;
+        std::string lightDefines, loadShades;
+        Output output = Output::Color;
+        unsigned variant = 0;
+        auto operator<=>(const ProgramKey&) const = default;
+    };
+
     RendererConfig config_;
-    std::map<std::string, std::unique_ptr<gl::Program>> programs_;  // by full header + hook
+    std::map<ProgramKey, std::unique_ptr<gl::Program>> programs_;
     gl::Buffer lightBuffer_;
     int lightCount_ = 0;
     int culledInstances_ = 0;

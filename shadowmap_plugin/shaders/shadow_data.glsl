@@ -1,0 +1,22 @@
+// Every light's shadow parameters, one std140 uniform block shared by the hook's vertex part
+// (texgen.glsl) and its fragment part (visibility.glsl), filled once per frame from
+// plugin/ShadowBlock.h (the same layout, static_asserted there). Binding 1: the lit pass's
+// lights are block 0 (engine/render/Frame.h).
+//   eyePlanes   Ee, rows s,t,r,q (2D maps)
+//   params      x: 1 = reversed Z (ShadowSettings reversed_z: window depth 1 at near, 0 at
+//               far, and the map compares with GL_GEQUAL); y: bias subtracted from the
+//               reference depth (d32f without reversed Z, see ShadowSettings.h); z: dimming
+//               (applied by the engine, hook.dimming); w: the shade outside the map (2D
+//               maps) or of every point of a light without a map this frame (1 for lights
+//               without shadows, 0 for a spot light whose frustum holds nothing the camera
+//               sees: every visible point is outside it)
+//   pointLight  eye-space light position, near (cube maps)
+//   pointFar    x: far (cube maps); 0 = infinite
+//   eyeToWorld  R_V in its upper 3x3: cube lookups use world axes
+layout(std140, binding = 1) uniform ShadowData {
+    mat4 eyePlanes[MAX_LIGHTS];
+    vec4 params[MAX_LIGHTS];
+    vec4 pointLight[MAX_LIGHTS];
+    vec4 pointFar[MAX_LIGHTS];
+    mat4 eyeToWorld;
+} shadowData;

@@ -1,0 +1,56 @@
+#include "plugin/HookGlsl.h"
+
+namespace shadowmap {
+
+namespace shaders {
+extern const char shadow_data_glsl[];
+extern const char visibility_glsl[];
+extern const char texgen_glsl[];
+} // namespace shaders
+
+namespace {
+
+HookGlsl::Code generate(const std::vector<HookGlsl::Lookup>& lookups) {
+    std::string declarations, dispatch, debugDispatch, texgenOutputs, texgen;
+    for (const HookGlsl::Lookup& lookup : lookups) {
+        const std::string slot = std::to_string(lookup.slot);
+        // The lookup's coordinates come interpolated from the vertex part (texgen.glsl).
+        const std::string coordinate = (lookup.cube ? "vShadowToPoint" : "vShadowCoord") + slot;
+        const std::string coordinateType = lookup.cube ? "vec3 " : "vec4 ";
+        texgenOutputs += "out " + coordinateType + coordinate + ";\n";
+        texgen += "    " + coordinate + (lookup.cube ? " = shadowToPoint(" : " = shadowCoord(") + slot +
+                  ", eyePosition);\n";
+        declarations += "in " + coordinateType + coordinate + ";\n";
+        if (lookup.rawUnit >= 0) {
+            declarations += "layout(binding = " + std::to_string(lookup.rawUnit) + ") uniform " +
+                            (lookup.cube ? "samplerCube" : "sampler2D") + " uShadowDepth" + slot + ";\n";
+            debugDispatch += "    if (lightSlot == " + slot + ") return " +
+                             (lookup.cube ? "comparisonCube(" : "comparison2D(") + slot + ", " + coordinate +
+                             ", uShadowDepth" + slot + ");\n";
+        }
+        declarations += "layout(binding = " + std::to_string(lookup.unit) + ") uniform " +
+                        (lookup.cube ? "samplerCubeShadow" : "sampler2DShadow") + " uShadowMap" + slot + ";\n";
+        dispatch += "    if (lightSlot == " + slot + ") return " + (lookup.cube ? "shadowMapCube(" : "shadowMap2D(") +
+                    slot + ", " + coordinate + ", uShadowMap" + slot + ");\n";
+    }
+    HookGlsl::Code code;
+    code.fragment = std::string(shaders::shadow_data_glsl) + shaders::visibility_glsl + declarations +
+                    "float lightVisibility(int lightSlot, vec3 eyePosition, vec3 eyeNormal) {\n" + dispatch +
+                    "    return shadowData.params[lightSlot].w;\n}\n" +
+                    "vec4 lightDebugColor(int lightSlot, vec3 eyePosition, vec3 eyeNormal) {\n" + debugDispatch +
+                    "    return vec4(0.4, 0.4, 0.4, 1.0);\n}\n";
+    code.vertex = std::string(shaders::shadow_data_glsl) + shaders::texgen_glsl + texgenOutputs +
+                  "void lightTexgen(vec3 eyePosition) {\n" + texgen + "}\n";
+    return code;
+}
+
+} // namespace
+
+const HookGlsl::Code& HookGlsl::codeFor(const std::vector<Lookup>& lookups) {
+    if (auto found = codes_.find(lookups); found != codes_.end()) return found->second;
+    Code code = generate(lookups);
+    code.version = codes_.size() + 1;  // 0 is no version (Frame.h)
+    return codes_.emplace(lookups, std::move(code)).first->second;
+}
+
+} // namespace shadowmap
