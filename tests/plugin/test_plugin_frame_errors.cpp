@@ -7,6 +7,8 @@
 #include "engine/render/Renderer.h"
 #include "engine/scene/Scene.h"
 
+#include <memory>
+
 namespace {
 
 engine::FrameRequest tinyFrame() {
@@ -38,16 +40,24 @@ TEST_F(PluginFrameErrors, BadPassDeclarationNamesPluginPassAndResource) {
     }
 }
 
-TEST_F(PluginFrameErrors, GlErrorIsReportedWithThePassThatRaisedIt) {
+// An empty scene rendered with the gl_error fixture plugin loaded.
+struct GlErrorFixture {
     engine::PluginHost host;
-    host.load({"gl_error_plugin", {}}, {TEST_PLUGIN_DIR});
     engine::Scene scene;
-    engine::RendererConfig config;
-    config.checkGlErrors = true;  // what Debug builds default to
-    engine::Renderer renderer(config, host.renderPlugins());
-    renderer.setScene(scene);
+    std::unique_ptr<engine::Renderer> renderer;
+    explicit GlErrorFixture(bool checkGlErrors) {
+        host.load({"gl_error_plugin", {}}, {TEST_PLUGIN_DIR});
+        engine::RendererConfig config;
+        config.checkGlErrors = checkGlErrors;
+        renderer = std::make_unique<engine::Renderer>(config, host.renderPlugins());
+        renderer->setScene(scene);
+    }
+};
+
+TEST_F(PluginFrameErrors, GlErrorIsReportedWithThePassThatRaisedIt) {
+    GlErrorFixture fixture(true);  // what Debug builds default to
     try {
-        renderer.renderFrame(tinyFrame());
+        fixture.renderer->renderFrame(tinyFrame());
         FAIL() << "an invalid glEnable went unreported";
     } catch (const engine::gl::GlError& error) {
         const std::string message = error.what();
@@ -57,13 +67,7 @@ TEST_F(PluginFrameErrors, GlErrorIsReportedWithThePassThatRaisedIt) {
 }
 
 TEST_F(PluginFrameErrors, GlErrorsAreNotCheckedWhenTheConfigSaysNot) {
-    engine::PluginHost host;
-    host.load({"gl_error_plugin", {}}, {TEST_PLUGIN_DIR});
-    engine::Scene scene;
-    engine::RendererConfig config;
-    config.checkGlErrors = false;  // the Release default: no glGetError round trip per pass
-    engine::Renderer renderer(config, host.renderPlugins());
-    renderer.setScene(scene);
-    EXPECT_NO_THROW(renderer.renderFrame(tinyFrame()));
+    GlErrorFixture fixture(false);  // the Release default: no glGetError round trip per pass
+    EXPECT_NO_THROW(fixture.renderer->renderFrame(tinyFrame()));
     EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_INVALID_ENUM)) << "the flag the pass raised is still pending";
 }
