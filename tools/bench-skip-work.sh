@@ -20,17 +20,20 @@ run() {  # engine-render's report of one setting
   "$render" --out "$out/frame.png" --width 1280 --height 720 --frames "$frames" "$@"
 }
 median_ms() { sed -n 's/.*median frame \([0-9.]*\) ms.*/\1/p'; }
-# The light's depth pass in the report's pass table: shadow_<slot>_<light name>.
-pass_ms() { awk -v light="$1" '$1 ~ ("^shadow_[0-9]+_" light "$") { print $2 }'; }
+# The light's map time from --stats (shadow_maps: one entry per light, by name).
+map_ms() {
+  python3 -c 'import json, sys
+for light in json.load(open(sys.argv[1]))["shadow_maps"]:
+    if light["light"] == sys.argv[2]: print(light["map_ms"])' "$1" "$2"
+}
 
 row() {  # name, scene, light, then extra engine-render args
   local name=$1 scene=$2 light=$3; shift 3
-  local none static orbit orbit_report depth cam_none cam_static
+  local none static orbit depth cam_none cam_static
   none=$(run --config content/engine-unshadowed.json --scene "$scene" "$@" | median_ms)
   static=$(run --config content/engine.json --scene "$scene" "$@" | median_ms)
-  orbit_report=$(run --config content/engine.json --scene "$scene" "$@" --orbit-light "$light")
-  orbit=$(median_ms <<<"$orbit_report")
-  depth=$(pass_ms "$light" <<<"$orbit_report")
+  orbit=$(run --config content/engine.json --scene "$scene" "$@" --orbit-light "$light" --stats "$out/orbit.json" | median_ms)
+  depth=$(map_ms "$out/orbit.json" "$light")
   cam_none=$(run --config content/engine-unshadowed.json --scene "$scene" "$@" --orbit-camera | median_ms)
   cam_static=$(run --config content/engine.json --scene "$scene" "$@" --orbit-camera | median_ms)
   awk -v n="$name" -v a="$none" -v b="$static" -v c="$orbit" -v d="$depth" -v e="$cam_none" -v f="$cam_static" 'BEGIN {

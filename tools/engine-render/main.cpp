@@ -59,6 +59,26 @@ struct PassSummary {
     engine::PassReport last;
 };
 
+// A light's map time over the timed frames: the median of each of its passes, summed.
+// `rendered` is false when no timed frame drew the map (served from the cache every time,
+// e.g. a still light after warm-up, or the light has none).
+struct MapTime {
+    double ms = 0.0;
+    bool rendered = false;
+};
+MapTime mapTime(const engine::ShadowView& view, const std::map<std::string, PassSummary>& passes) {
+    MapTime time;
+    for (const std::string& pass : view.passes) {
+        const auto found = passes.find(pass);
+        if (found == passes.end() || found->second.wallMs.empty()) continue;
+        time.ms += tools::median(found->second.wallMs);
+        time.rendered = true;
+    }
+    return time;
+}
+
+const char* mapKind(const engine::ShadowView& view) { return !view.hasMap ? "none" : view.cube ? "cube" : "2d"; }
+
 nlohmann::json statsJson(const RenderOptions& options, const std::vector<double>& frameMs,
                          const std::vector<std::string>& order,
                          const std::map<std::string, PassSummary>& passes,
@@ -83,6 +103,16 @@ nlohmann::json statsJson(const RenderOptions& options, const std::vector<double>
                         {"triangles", pass.last.triangles}});
     }
     stats["passes"] = list;
+    // Per light, from the shadow views the plugin published: what scripts should read
+    // rather than pass names, which may change.
+    nlohmann::json maps = nlohmann::json::array();
+    for (const engine::ShadowView& view : last.shadowViews) {
+        const MapTime time = mapTime(view, passes);
+        maps.push_back({{"light", view.name}, {"slot", view.slot}, {"variant", view.variant},
+                        {"map", mapKind(view)}, {"map_ms", time.rendered ? nlohmann::json(time.ms) : nlohmann::json(nullptr)},
+                        {"map_cached", view.hasMap && !time.rendered}});
+    }
+    stats["shadow_maps"] = maps;
     stats["lit_instances_culled"] = last.litInstancesCulled;
     stats["plugins"] = last.pluginStats;
     return stats;
@@ -99,26 +129,18 @@ nlohmann::json printLightErrors(engine::Renderer& renderer, const engine::Scene&
                 "acne %", "leak %", "error %", "error-edge %");
     nlohmann::json lights = nlohmann::json::array();
     for (const evaluation::LightResult& light : view.lights) {
-        // Over the timed frames that rendered the map; a map served from the cache in every
-        // timed frame (a still light after warm-up) has no time to report, and says so.
-        double mapMs = 0.0;
-        bool rendered = false;
-        for (const std::string& pass : light.view.passes) {
-            const auto found = passes.find(pass);
-            if (found == passes.end() || found->second.wallMs.empty()) continue;
-            mapMs += tools::median(found->second.wallMs);
-            rendered = true;
-        }
+        // A map served from the cache in every timed frame has no time to report, and says so.
+        const MapTime time = mapTime(light.view, passes);
         const truth::ShadowErrors& e = light.errors;
-        const char* map = !light.view.hasMap ? "none" : light.view.cube ? "cube" : "2d";
-        char mapTime[32];
-        std::snprintf(mapTime, sizeof mapTime, rendered ? "%.2f" : !light.view.hasMap ? "-" : "cached", mapMs);
+        char shownTime[32];
+        std::snprintf(shownTime, sizeof shownTime, time.rendered ? "%.2f" : !light.view.hasMap ? "-" : "cached",
+                      time.ms);
         std::printf("  %-20s %-9s %6s %9s %8.3f %8.3f %8.3f %12.3f\n", light.light.c_str(),
-                    light.view.variant.c_str(), map, mapTime, 100 * e.acne, 100 * e.leak,
+                    light.view.variant.c_str(), mapKind(light.view), shownTime, 100 * e.acne, 100 * e.leak,
                     100 * e.error, 100 * e.errorNoEdge);
         lights.push_back({{"light", light.light}, {"slot", light.slot}, {"variant", light.view.variant},
-                          {"map_ms", rendered ? nlohmann::json(mapMs) : nlohmann::json(nullptr)},
-                          {"map_cached", light.view.hasMap && !rendered},
+                          {"map_ms", time.rendered ? nlohmann::json(time.ms) : nlohmann::json(nullptr)},
+                          {"map_cached", light.view.hasMap && !time.rendered},
                           {"acne", 100 * e.acne}, {"leak", 100 * e.leak},
                           {"error", 100 * e.error}, {"error_noedge", 100 * e.errorNoEdge},
                           {"evaluated_pixels", e.evaluated}});

@@ -420,3 +420,20 @@ TEST_F(EngineRenderShadows, WooWithAnExplicitOffsetIsNoWorseThanWithout) {
     EXPECT_LE(with["error"].get<double>(), without["error"].get<double>() + onePixel) << with << "\n" << without;
     EXPECT_LE(with["acne"].get<double>(), without["acne"].get<double>() + onePixel) << with << "\n" << without;
 }
+
+// --stats' shadow_maps (from the published shadow views, not pass names): an orbiting light's
+// map is redrawn and timed every frame, a still light's is served from the cache.
+TEST_F(EngineRenderShadows, StatsGiveEveryLightsMapTimeOrSayItWasCached) {
+    const CommandResult result = render("--warmup 1 --frames 2 --orbit-light sun");
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    const nlohmann::json all = stats();
+    ASSERT_EQ(all["shadow_maps"].size(), 3u) << all.dump();
+    for (const auto& entry : all["shadow_maps"]) {
+        const bool orbiting = entry["light"] == "sun";
+        EXPECT_EQ(entry["map_cached"].get<bool>(), !orbiting) << entry;
+        if (orbiting) EXPECT_GT(entry["map_ms"].get<double>(), 0.0) << entry;
+        else EXPECT_TRUE(entry["map_ms"].is_null()) << entry;
+    }
+    EXPECT_EQ(all["shadow_maps"][1]["map"], "2d");
+    EXPECT_EQ(all["shadow_maps"][2]["map"], "cube");
+}
