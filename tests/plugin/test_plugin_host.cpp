@@ -49,6 +49,9 @@ TEST(PluginHost, GoodPluginRegistersAPassThatExecutes) {
     host.load({"good_plugin", {{"marker", "hello"}}}, kDirs);
     ASSERT_EQ(host.renderPlugins().size(), 1u);
     EXPECT_EQ(host.loadedNames(), std::vector<std::string>{"marker"});
+    // Found by the library's name in the config, which --set uses, not by its own name.
+    EXPECT_EQ(host.renderPlugins("good_plugin"), host.renderPlugins());
+    EXPECT_TRUE(host.renderPlugins("marker").empty());
 
     engine::Scene scene;
     engine::SceneGpu gpu(scene);  // empty scene: no GL needed

@@ -17,9 +17,22 @@ SettingOverride parseSettingOverride(const std::string& flag, const std::string&
     const auto dot = target.find('.');
     if (dot == std::string::npos || dot == 0 || dot + 1 == target.size())
         throw refuse("\"" + target + "\" is not PLUGIN.KEY");
-    nlohmann::json parsed = nlohmann::json::parse(value, nullptr, false);
-    if (parsed.is_discarded()) parsed = value;  // a bare word is a string
-    return {target.substr(0, dot), target.substr(dot + 1), std::move(parsed), text};
+    return {target.substr(0, dot), target.substr(dot + 1), parseJsonOrWord(value), text};
+}
+
+void addSettingOverride(std::vector<SettingOverride>& overrides, const std::string& flag, const std::string& text) {
+    SettingOverride setting = parseSettingOverride(flag, text);
+    for (const SettingOverride& earlier : overrides)
+        if (earlier.plugin == setting.plugin && earlier.key == setting.key)
+            throw std::invalid_argument(flag + " " + setting.plugin + "." + setting.key + " is given twice: " +
+                                        earlier.value.dump() + " and " + setting.value.dump());
+    overrides.push_back(std::move(setting));
+}
+
+nlohmann::json parseJsonOrWord(const std::string& text) {
+    nlohmann::json parsed = nlohmann::json::parse(text, nullptr, false);
+    if (parsed.is_discarded()) return text;  // a bare word is a string
+    return parsed;
 }
 
 void applySettingOverrides(engine::EngineConfig& config, const std::vector<SettingOverride>& overrides) {
@@ -30,9 +43,14 @@ void applySettingOverrides(engine::EngineConfig& config, const std::vector<Setti
                 plugin.settings[setting.key] = setting.value;
                 found = true;
             }
-        if (!found)
+        if (!found) {
+            std::string loaded;
+            for (const engine::PluginConfig& plugin : config.plugins)
+                loaded += (loaded.empty() ? "" : ", ") + plugin.library;
             throw engine::InputError("--set " + setting.text + ": the config " + config.sourcePath.string() +
-                                     " loads no plugin \"" + setting.plugin + "\"");
+                                     " loads no plugin \"" + setting.plugin + "\" (it loads: " +
+                                     (loaded.empty() ? "none" : loaded) + ")");
+        }
     }
 }
 

@@ -24,8 +24,15 @@ struct SettingOverride {
 // every part non-empty.
 SettingOverride parseSettingOverride(const std::string& flag, const std::string& text);
 
+// parseSettingOverride, appended to `overrides`. The same PLUGIN.KEY twice is an error naming
+// both values: which one was meant is not ours to guess.
+void addSettingOverride(std::vector<SettingOverride>& overrides, const std::string& flag, const std::string& text);
+
+// An option's value as JSON, a bare word counting as a string: 512, [1,2], true, woo.
+nlohmann::json parseJsonOrWord(const std::string& text);
+
 // Applies each override to the config's plugin of that name. Throws engine::InputError when
-// the config loads no such plugin (naming the config's source).
+// the config loads no such plugin (naming the config's source and the plugins it loads).
 void applySettingOverrides(engine::EngineConfig& config, const std::vector<SettingOverride>& overrides);
 
 } // namespace tools

@@ -11,12 +11,16 @@ const char* const kRenderUsage =
     "       engine-render --scene SCENE.gltf|.glb --list   (its cameras and lights, numbered)\n"
     "  [--width W] [--height H] [--camera NAME|NUMBER]\n"
     "  (a light or camera is named by its name, its node's name, or its number in --list)\n"
-    "  [--light NAME=VARIANT]... [--shadow-mask NAME=MASK.png]... [--shadow-map NAME=MAP.png]...\n"
+    "  [--light-set NAME.KEY=JSON]...  (a per-light setting: wins over the light's glTF extras)\n"
+    "  [--light NAME=VARIANT]...        (--light-set NAME.variant=VARIANT)\n"
+    "  [--shadow-mask NAME=MASK.png]... [--shadow-map NAME=MAP.png]...\n"
     "  [--shadow-compare NAME=VIEW.png]...  (green: r agrees with the map, red: shadowed)\n"
     "  [--frames N] [--stats STATS.json] [--graph-dot GRAPH.dot]\n"
     "  [--key-light spot|point|directional] [--orbit-light NAME] [--orbit-camera]\n"
     "  [--truth]   (per light: map time, and acne/leak against ray-traced shadows)\n"
-    "  [--warmup N] (untimed frames first, default 1) [--set PLUGIN.KEY=JSON]...\n";
+    "  [--warmup N] (untimed frames first, default 1)\n"
+    "  [--set PLUGIN.KEY=JSON]...  (a plugin's config setting, e.g. shadowmap_plugin.cache_maps=false)\n"
+    "  a light's setting: defaults < config and --set < the light's glTF extras < --light-set\n";
 
 namespace {
 
@@ -56,13 +60,14 @@ RenderOptions parseRenderOptions(int argc, char** argv) {
         else if (flag == "--width") options.width = tools::parseInteger(flag, value, 1, kMaxSize);
         else if (flag == "--height") options.height = tools::parseInteger(flag, value, 1, kMaxSize);
         else if (flag == "--camera") options.camera = value;
-        else if (flag == "--light") options.lightVariants.push_back(tools::parseAssignment(flag, value));
+        else if (flag == "--light") options.lightSettings.push_back(tools::parseLightVariant(flag, value));
+        else if (flag == "--light-set") options.lightSettings.push_back(tools::parseLightSetting(flag, value));
         else if (flag == "--shadow-mask") options.shadowMasks.push_back(parsePngAssignment(flag, value));
         else if (flag == "--shadow-map") options.shadowMaps.push_back(parsePngAssignment(flag, value));
         else if (flag == "--shadow-compare") options.comparisons.push_back(parsePngAssignment(flag, value));
         else if (flag == "--frames") options.frames = tools::parseInteger(flag, value, 1, kMaxFrames);
         else if (flag == "--warmup") options.warmup = tools::parseInteger(flag, value, 0, kMaxWarmup);
-        else if (flag == "--set") options.pluginSettings.push_back(tools::parseSettingOverride(flag, value));
+        else if (flag == "--set") tools::addSettingOverride(options.pluginSettings, flag, value);
         else if (flag == "--stats") options.stats = value;
         else if (flag == "--graph-dot") options.graphDot = value;
         else if (flag == "--key-light") options.keyLight = tools::parseLightType(flag, value);

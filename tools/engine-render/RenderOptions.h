@@ -1,5 +1,6 @@
 #pragma once
 // engine-render's command line (the contract the README's "Rendering a scene" documents).
+#include "LightOverrides.h"
 #include "SettingOverrides.h"
 
 #include "engine/scene/Scene.h"
@@ -15,13 +16,14 @@ struct RenderOptions {
     std::string out;
     int width = 1280, height = 720;
     std::string camera;  // a name, else a number from --list; empty: first glTF camera
-    std::vector<std::pair<std::string, std::string>> lightVariants;  // --light NAME=VARIANT
+    // --light-set NAME.KEY=JSON and --light NAME=VARIANT, in the order given
+    std::vector<tools::LightOverride> lightSettings;
     std::vector<std::pair<std::string, std::string>> shadowMasks;    // --shadow-mask NAME=FILE
     std::vector<std::pair<std::string, std::string>> shadowMaps;     // --shadow-map NAME=FILE
     std::vector<std::pair<std::string, std::string>> comparisons;    // --shadow-compare NAME=FILE
     int frames = 1;
     int warmup = 1;  // untimed frames first: llvmpipe compiles shaders at their first draw
-    std::vector<tools::SettingOverride> pluginSettings;  // --set PLUGIN.KEY=JSON
+    std::vector<tools::SettingOverride> pluginSettings;  // --set PLUGIN.KEY=JSON, each key once
     // --key-light spot|point|directional: add a light from the bounds
     std::optional<engine::Light::Type> keyLight;
     std::string orbitLight;   // --orbit-light NAME: turn that light 2 degrees per frame

@@ -3,6 +3,7 @@
 #include "Median.h"
 #include "ToolMain.h"
 #include "DepthImage.h"
+#include "LightOverrides.h"
 #include "RenderOptions.h"
 
 #include "ShadowEvaluation.h"
@@ -187,17 +188,15 @@ int run(const RenderOptions& options, std::unique_ptr<engine::GlContext>& contex
 
     host.loadAll(config);
     const auto plugins = host.renderPlugins();
-    for (const auto& [light, variant] : options.lightVariants) {
-        // Plugins know lights by the name the scene gives them, not by what was typed.
-        const std::string name = engine::lightInstanceName(scene, lightSlot(scene, options.scene, light, true));
-        bool handled = false;
-        for (engine::RenderPlugin* plugin : plugins) handled = plugin->setLightOption(name, variant) || handled;
-        if (!handled)
-            throw engine::InputError("--light " + light + "=" + variant +
-                                     ": no loaded plugin takes per-light options (config " +
-                                     options.config + " loads " +
-                                     std::to_string(plugins.size()) + " plugins)");
-    }
+    // Plugins know lights by the name the scene gives them, not by what was typed; a shared
+    // name sets every instance of it.
+    const std::vector<tools::LightOverride> lightSettings =
+        tools::resolveLightOverrides(options.lightSettings, [&](const std::string& light) {
+            return engine::lightInstanceName(scene, lightSlot(scene, options.scene, light, true));
+        });
+    tools::applyLightOverrides(lightSettings, plugins, options.config);
+    for (const std::string& warning : tools::shadowedSettingWarnings(options.pluginSettings, lightSettings, host, scene))
+        std::cerr << "warning: " << warning << "\n";
     const int orbitingLight =
         options.orbitLight.empty() ? -1 : scene.lightInstances[lightSlot(scene, options.scene, options.orbitLight)].node;
     const glm::dvec3 orbitCenter = scene.worldBounds.empty() ? glm::dvec3(0.0) : scene.worldBounds.center();

@@ -10,6 +10,8 @@
 #include <cmath>
 #include <vector>
 
+namespace engine_view {
+
 namespace {
 
 constexpr std::array<const char*, kDebugViewCount> kViewNames = {
@@ -161,3 +163,5 @@ void ViewerState::apply(engine::Renderer& renderer) {
     }
     for (std::size_t i = 0; i < scene_.lights.size(); ++i) applied_[i] = scene_.lights[i].extras;
 }
+
+} // namespace engine_view

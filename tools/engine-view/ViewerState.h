@@ -12,6 +12,8 @@
 #include <string>
 #include <vector>
 
+namespace engine_view {
+
 enum class DebugView { Shaded, LightView, DepthMap, ProjectedDepth, Comparison, ShadowTerm, AcneLeak };
 constexpr int kDebugViewCount = 7;
 // "shaded", "light", "depth", "projected", "comparison", "shadow", "truth"
@@ -82,3 +84,5 @@ private:
     DebugView view_ = DebugView::Shaded;
     std::vector<engine::ShadowView> views_;
 };
+
+} // namespace engine_view

@@ -1,12 +1,13 @@
 #include "BenchOptions.h"
 
 #include "CommandLine.h"
+#include "OptionValues.h"
 
 #include "shadowmap/ShadowSettings.h"
 
-#include <cerrno>
-#include <cstdlib>
 #include <stdexcept>
+
+namespace shadowmap_bench {
 
 namespace {
 
@@ -34,59 +35,14 @@ std::string joined(const std::vector<std::string>& items) {
     return text;
 }
 
-int parseInteger(const std::string& flag, const std::string& text, int minimum, int maximum) {
-    char* end = nullptr;
-    errno = 0;
-    const long value = std::strtol(text.c_str(), &end, 10);
-    if (text.empty() || *end != '\0' || errno != 0 || value < minimum || value > maximum)
-        throw std::invalid_argument(flag + ": \"" + text + "\" is not an integer in [" +
-                                    std::to_string(minimum) + ", " + std::to_string(maximum) + "]");
-    return static_cast<int>(value);
-}
-
-std::vector<std::string> splitList(const std::string& flag, const std::string& text) {
-    std::vector<std::string> items;
-    std::size_t start = 0;
-    while (true) {
-        const std::size_t comma = text.find(',', start);
-        const std::string item = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
-        if (item.empty()) throw std::invalid_argument(flag + ": empty item in \"" + text + "\"");
-        for (const std::string& seen : items)
-            if (seen == item) throw std::invalid_argument(flag + ": \"" + item + "\" listed twice");
-        items.push_back(item);
-        if (comma == std::string::npos) return items;
-        start = comma + 1;
-    }
-}
-
-std::vector<std::string> parseNames(const std::string& flag, const std::string& text,
-                                    const std::vector<std::string>& known) {
-    std::vector<std::string> items = splitList(flag, text);
-    for (const std::string& item : items) {
-        bool isKnown = false;
-        for (const std::string& name : known) isKnown = isKnown || item == name;
-        if (!isKnown)
-            throw std::invalid_argument(flag + ": unknown value \"" + item + "\" (known: " + joined(known) + ")");
-    }
-    return items;
-}
-
-std::vector<int> parseResolutions(const std::string& flag, const std::string& text) {
-    std::vector<int> resolutions;
-    // The plugin's own bounds; it checks the GL's GL_MAX_TEXTURE_SIZE when it renders.
-    const shadowmap::SettingKey& resolution = shadowmap::settingKey("resolution");
-    for (const std::string& item : splitList(flag, text))
-        resolutions.push_back(parseInteger(flag, item, static_cast<int>(*resolution.minimum),
-                                           static_cast<int>(*resolution.maximum)));
-    return resolutions;
-}
-
-std::optional<engine::Light::Type> parseKeyLight(const std::string& text) {
-    if (text == "spot") return engine::Light::Type::Spot;
-    if (text == "point") return engine::Light::Type::Point;
-    if (text == "directional") return engine::Light::Type::Directional;
+// The toolkit's light types, or none: a scene without a light is then an error.
+std::optional<engine::Light::Type> parseKeyLight(const std::string& flag, const std::string& text) {
     if (text == "none") return std::nullopt;
-    throw std::invalid_argument("--key-light: \"" + text + "\" is not spot, point, directional or none");
+    try {
+        return tools::parseLightType(flag, text);
+    } catch (const std::invalid_argument&) {
+        throw std::invalid_argument(flag + ": \"" + text + "\" is not spot, point, directional or none");
+    }
 }
 
 } // namespace
@@ -137,20 +93,23 @@ BenchOptions parseBenchOptions(int argc, char** argv) {
     options.depthFormats = knownFormats();
     options.filters = knownFilters();
 
+    // The plugin's own bounds; it checks the GL's GL_MAX_TEXTURE_SIZE when it renders.
+    const shadowmap::SettingKey& resolution = shadowmap::settingKey("resolution");
+    const int minResolution = static_cast<int>(*resolution.minimum), maxResolution = static_cast<int>(*resolution.maximum);
     options.help = tools::parseFlags(argc, argv, [&](const std::string& flag, const std::string& value) {
         if (flag == "--config") options.config = value;
         else if (flag == "--scene") {
             options.defaultScenes = false;
             options.scenes.push_back(value);
         } else if (flag == "--camera") options.camera = value;
-        else if (flag == "--width") options.width = parseInteger(flag, value, 1, 16384);
-        else if (flag == "--height") options.height = parseInteger(flag, value, 1, 16384);
-        else if (flag == "--frames") options.frames = parseInteger(flag, value, 1, 10000);
-        else if (flag == "--variants") options.variants = parseNames(flag, value, knownVariants());
-        else if (flag == "--resolutions") options.resolutions = parseResolutions(flag, value);
-        else if (flag == "--depth-formats") options.depthFormats = parseNames(flag, value, knownFormats());
-        else if (flag == "--filters") options.filters = parseNames(flag, value, knownFilters());
-        else if (flag == "--key-light") options.keyLight = parseKeyLight(value);
+        else if (flag == "--width") options.width = tools::parseInteger(flag, value, 1, 16384);
+        else if (flag == "--height") options.height = tools::parseInteger(flag, value, 1, 16384);
+        else if (flag == "--frames") options.frames = tools::parseInteger(flag, value, 1, 10000);
+        else if (flag == "--variants") options.variants = tools::parseNames(flag, value, knownVariants());
+        else if (flag == "--resolutions") options.resolutions = tools::parseIntegerList(flag, value, minResolution, maxResolution);
+        else if (flag == "--depth-formats") options.depthFormats = tools::parseNames(flag, value, knownFormats());
+        else if (flag == "--filters") options.filters = tools::parseNames(flag, value, knownFilters());
+        else if (flag == "--key-light") options.keyLight = parseKeyLight(flag, value);
         else if (flag == "--out") options.out = value;
         else return false;
         return true;
@@ -165,3 +124,5 @@ BenchOptions parseBenchOptions(int argc, char** argv) {
     }
     return options;
 }
+
+} // namespace shadowmap_bench

@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+namespace shadowmap_bench {
+
 struct BenchOptions {
     std::string config;               // default: the source tree's content/engine.json
     std::vector<std::string> scenes;  // default: the showcase and Debian's 2CylinderEngine.glb
@@ -35,3 +37,5 @@ const char* benchUsage();
 
 // Throws std::invalid_argument with one line naming the flag and the reason.
 BenchOptions parseBenchOptions(int argc, char** argv);
+
+} // namespace shadowmap_bench

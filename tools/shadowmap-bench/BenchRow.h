@@ -3,6 +3,8 @@
 // row of results.csv, and what the summary and the plot are made of.
 #include <string>
 
+namespace shadowmap_bench {
+
 struct ShadowSetting {
     std::string variant;  // standard | woo | backface
     int resolution = 0;   // texels per side
@@ -24,3 +26,5 @@ struct BenchRow {
     // Percent of the evaluation set (docs/metrics.md).
     double acne = 0.0, leak = 0.0, error = 0.0, errorNoEdge = 0.0;
 };
+
+} // namespace shadowmap_bench

@@ -14,6 +14,8 @@
 #include <filesystem>
 #include <iostream>
 
+namespace shadowmap_bench {
+
 namespace {
 
 // The named camera, else the scene's first, else one framing the scene (as engine-render).
@@ -143,3 +145,5 @@ std::vector<BenchRow> runSweep(std::vector<BenchScene>& scenes, const engine::Re
     }
     return rows;
 }
+
+} // namespace shadowmap_bench

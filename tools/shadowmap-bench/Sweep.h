@@ -14,6 +14,8 @@
 #include <string>
 #include <vector>
 
+namespace shadowmap_bench {
+
 struct BenchScene {
     std::string name;  // the file's stem, the "scene" column
     std::string path;
@@ -45,3 +47,5 @@ using RowCallback = std::function<void(const BenchRow& row, int index, int total
 std::vector<BenchRow> runSweep(std::vector<BenchScene>& scenes, const engine::RendererConfig& rendererConfig,
                                const std::vector<engine::RenderPlugin*>& plugins, int frames,
                                const RowCallback& onRow);
+
+} // namespace shadowmap_bench

@@ -101,7 +101,8 @@ int run(const BenchOptions& options, std::unique_ptr<engine::GlContext>& context
 } // namespace shadowmap_bench
 
 int main(int argc, char** argv) {
-    return tools::toolMain("shadowmap-bench", benchUsage(), argc, argv, parseBenchOptions,
+    return tools::toolMain("shadowmap-bench", shadowmap_bench::benchUsage(), argc, argv,
+                           shadowmap_bench::parseBenchOptions,
                            [](const auto& options, tools::ToolSession& session) {
                                return shadowmap_bench::run(options, session.context, session.host);
                            });

@@ -94,7 +94,7 @@ Options parseOptions(int argc, char** argv) {
         else if (flag == "--config") options.config = value;
         else if (flag == "--no-plots") options.plots = false;
         else if (flag == "--images") options.images = true;
-        else if (flag == "--set") options.pluginSettings.push_back(tools::parseSettingOverride(flag, value));
+        else if (flag == "--set") tools::addSettingOverride(options.pluginSettings, flag, value);
         else return false;
         return true;
     });

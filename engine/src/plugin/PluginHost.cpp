@@ -15,6 +15,7 @@ namespace engine {
 // code lives in the library) is destroyed before the handle is closed.
 struct PluginHost::LoadedLibrary {
     std::filesystem::path path;
+    std::string library;  // as the config names it
     std::string name;
     void* handle = nullptr;
     PluginRegistry registry;
@@ -71,6 +72,7 @@ void PluginHost::load(const PluginConfig& plugin,
 
     auto library = std::make_unique<LoadedLibrary>();
     library->path = path;
+    library->library = plugin.library;
     dlerror();
     // RTLD_NOW: an unresolved symbol fails here, not at first call in the middle of a frame.
     library->handle = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
@@ -123,6 +125,14 @@ std::vector<RenderPlugin*> PluginHost::renderPlugins() const {
     std::vector<RenderPlugin*> out;
     for (const auto& library : libraries_)
         for (const auto& plugin : library->registry.renderPlugins()) out.push_back(plugin.get());
+    return out;
+}
+
+std::vector<RenderPlugin*> PluginHost::renderPlugins(const std::string& library) const {
+    std::vector<RenderPlugin*> out;
+    for (const auto& loaded : libraries_)
+        if (loaded->library == library)
+            for (const auto& plugin : loaded->registry.renderPlugins()) out.push_back(plugin.get());
     return out;
 }
 

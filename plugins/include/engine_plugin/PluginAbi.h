@@ -38,7 +38,7 @@ typedef const EnginePluginInfo* (*EnginePluginEntryFunction)();
 }  // extern "C"
 
 // Use in exactly one source file of a plugin:
-//   ENGINE_DECLARE_PLUGIN("shadowmap", &registerShadowPlugin)
+//   ENGINE_DECLARE_PLUGIN("shadowmap_plugin", &registerShadowPlugin)
 #define ENGINE_DECLARE_PLUGIN(pluginName, registerFunction)                                 \
     extern "C" __attribute__((visibility("default"))) const EnginePluginInfo*            \
     ENGINE_PLUGIN_ENTRY() {                                                                \

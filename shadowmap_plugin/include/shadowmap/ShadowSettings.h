@@ -7,8 +7,9 @@
 // No GL here: the GL side of a depth format lives with the plugin (plugin/DepthFormatGl.h).
 //
 // Per-light shadow settings and where they come from, most specific last:
-//   built-in defaults  <-  plugin settings in the engine config  <-  the light's glTF
-//   extras.shadow  <-  engine-render --light NAME=VARIANT.
+//   built-in defaults  <-  plugin settings in the engine config (--set PLUGIN.KEY=JSON edits
+//   them)  <-  the light's glTF extras.shadow  <-  engine-render --light-set NAME.KEY=JSON
+//   (--light NAME=VARIANT is --light-set NAME.variant=VARIANT).
 // Every key and value is checked: an unknown key, variant, format or filter, a resolution
 // of 0 or above GL_MAX_TEXTURE_SIZE, a non-finite number or a dimming outside [0,1] is an
 // InputError naming the source (config file or scene), the light and the key.
@@ -25,7 +26,8 @@
 // casters two-sided, with the standard offset. An explicit offset on woo applies to both
 // of its passes alike (the peel compares them): on the showcase it lowered woo's error
 // (sun at 2048: 0.079% without, 0.034% with [2, 8]; at 512: 0.264%, 0.135% with [1, 2]).
-// The default offset departs from the seeds' (1, 4), for measured reasons:
+// The default offset departs from the classic glPolygonOffset(1, 4) of the hardware
+// shadow-mapping literature, for measured reasons:
 //  - units 8, not 4: the comparison's reference r/q is computed in float32, whose spacing
 //    near depth 1 is 2^-24, one d24 unit; with 4 units a floor facing a spot light head-on
 //    (zero slope, so only units help) showed acne lines on 2.2% of its lit pixels (d24 and

@@ -26,4 +26,4 @@ void registerShadowMap(engine::PluginRegistry* registry, const char* settingsJso
 
 } // namespace
 
-ENGINE_DECLARE_PLUGIN("shadowmap", &registerShadowMap)
+ENGINE_DECLARE_PLUGIN(shadowmap::kPluginName, &registerShadowMap)

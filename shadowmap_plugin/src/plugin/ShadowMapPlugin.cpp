@@ -69,9 +69,21 @@ std::uint64_t withDepthSettings(std::uint64_t key, const ShadowSettings& setting
 
 } // namespace
 
-bool ShadowMapPlugin::setLightOption(const std::string& light, const std::string& value) {
-    variantOverrides_[light] = parseVariant(value, "--light " + light + "=" + value, "variant");
+bool ShadowMapPlugin::setLightOption(const std::string& light, const std::string& key, const nlohmann::json& value) {
+    // Checked alone now, so a bad key or value is refused before any GL work; checked again
+    // combined with the light's other settings in resolveLights (reversed_z needs d32f...).
+    const nlohmann::json option = {{key, value}};
+    ShadowSettings scratch;
+    applySettings(scratch, option, "", "light \"" + light + "\"");
+    lightOptions_[light][key] = value;
     return true;
+}
+
+nlohmann::json ShadowMapPlugin::sceneLightSettings(const engine::Scene& scene, int slot) const {
+    const engine::Light& light = scene.lights[scene.lightInstances[slot].light];
+    if (light.extras.is_object() && light.extras.contains("shadow") && light.extras["shadow"].is_object())
+        return light.extras["shadow"];
+    return nlohmann::json::object();
 }
 
 void ShadowMapPlugin::resolveLights(const engine::Scene& scene) {
@@ -80,12 +92,12 @@ void ShadowMapPlugin::resolveLights(const engine::Scene& scene) {
     glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxTextureSize);
     glGetIntegerv(GL_MAX_TEXTURE_IMAGE_UNITS, &maxTextureUnits_);
     // Overrides name lights as engine-render resolved them (lightInstanceName).
-    for (const auto& [name, variant] : variantOverrides_) {
+    for (const auto& [name, options] : lightOptions_) {
         bool found = false;
         for (std::size_t i = 0; i < scene.lightInstances.size() && !found; ++i)
             found = engine::lightInstanceName(scene, static_cast<int>(i)) == name;
         if (!found)
-            engine::throwInputError(source, "--light " + name,
+            engine::throwInputError(source, "light \"" + name + "\" (command line)",
                                     "no light of that name in the scene (" + engine::describeLightInstances(scene) + ")");
     }
 
@@ -118,7 +130,7 @@ void ShadowMapPlugin::resolveLights(const engine::Scene& scene) {
         if (light.extras.is_object() && light.extras.contains("shadow"))
             applySettings(shadow.settings, light.extras["shadow"], source, object + ": extras.shadow");
         // KHR_lights_shadows "castShadows": false: the file says this light casts no shadow,
-        // and that wins over our extras (only the command line's --light overrides it).
+        // and that wins over our extras (only the command line's variant overrides it).
         if (!light.castShadows) {
             if (shadow.settings.variant != Variant::None && light.extras.contains("shadow") &&
                 light.extras["shadow"].contains("variant"))
@@ -126,9 +138,11 @@ void ShadowMapPlugin::resolveLights(const engine::Scene& scene) {
                                      toString(shadow.settings.variant) + "\" is not used");
             shadow.settings.variant = Variant::None;
         }
-        if (auto found = variantOverrides_.find(shadow.name); found != variantOverrides_.end())
-            shadow.settings.variant = found->second;
-        checkLimits(shadow.settings, maxTextureSize, source, object + ": extras.shadow");
+        // The command line's per-light settings come last: they win over everything.
+        const auto options = lightOptions_.find(shadow.name);
+        if (options != lightOptions_.end()) applySettings(shadow.settings, options->second, "", object);
+        checkLimits(shadow.settings, maxTextureSize, source,
+                    options == lightOptions_.end() ? object + ": extras.shadow" : object);
         lights_.push_back(std::move(shadow));
     }
 }
@@ -155,7 +169,7 @@ void ShadowMapPlugin::reloadSettings(const engine::Scene& scene) {
 void ShadowMapPlugin::warnOnce(const LightShadow& light, const std::string& message) {
     // Once per scene file, light and message for the plugin's life: a sweep that sets the
     // same scene again for every setting (shadowmap-bench) must not repeat itself.
-    const std::string line = "shadowmap: " + scenePath_ + ": light \"" + light.name + "\": " + message;
+    const std::string line = std::string(kPluginName) + ": " + scenePath_ + ": light \"" + light.name + "\": " + message;
     if (warned_.insert(line).second) std::cerr << "warning: " << line << "\n";
 }
 

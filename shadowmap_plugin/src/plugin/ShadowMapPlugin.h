@@ -18,6 +18,10 @@
 
 namespace shadowmap {
 
+// The plugin's one name, in configs ("library"), messages, --stats and --set: the library's,
+// since that is the name users type.
+inline constexpr char kPluginName[] = "shadowmap_plugin";
+
 class ShadowMapPlugin final : public engine::RenderPlugin {
 public:
     // cacheMaps: keep a light's map across frames while its inputs are unchanged, and give
@@ -25,8 +29,11 @@ public:
     ShadowMapPlugin(const ShadowSettings& defaults, bool cacheMaps)
         : defaults_(defaults), cacheMaps_(cacheMaps) {}
 
-    std::string name() const override { return "shadowmap"; }
-    bool setLightOption(const std::string& light, const std::string& value) override;
+    std::string name() const override { return kPluginName; }
+    // Any key of extras.shadow (ShadowSettings.h), checked now: over the light's extras.
+    bool setLightOption(const std::string& light, const std::string& key, const nlohmann::json& value) override;
+    // The light's glTF extras.shadow.
+    nlohmann::json sceneLightSettings(const engine::Scene& scene, int slot) const override;
     void prepareScene(const engine::Scene& scene) override;
     void reloadSettings(const engine::Scene& scene) override;
     void addPasses(engine::Frame& frame) override;
@@ -43,12 +50,12 @@ private:
     void reportOpenCasters(LightShadow& light, const engine::Frame& frame);
     engine::LightVisibilityHook makeHook(const engine::Frame& frame);
     void warnOnce(const LightShadow& light, const std::string& message);
-    // Resolves every light's settings (defaults, extras.shadow, --light) into lights_.
+    // Resolves every light's settings (defaults, extras.shadow, command line) into lights_.
     void resolveLights(const engine::Scene& scene);
     const engine::gl::Sampler& rawDepthSampler();  // comparison off: reads a map's depth
 
     ShadowSettings defaults_;
-    std::map<std::string, Variant> variantOverrides_;  // --light NAME=VARIANT
+    std::map<std::string, nlohmann::json> lightOptions_;  // light name -> {key: value}, command line
     std::vector<LightShadow> lights_;                  // one per lit-pass light slot
     std::vector<bool> closedMeshes_;                   // per mesh: closed, not double-sided
     std::unique_ptr<DepthRenderer> depth_;             // created with the first frame (needs GL)

@@ -60,7 +60,7 @@ protected:
     // The entry of --stats' plugin report for one light.
     nlohmann::json pluginLightStats(const std::string& name) {
         const nlohmann::json all = stats();
-        for (const auto& entry : all["plugins"]["shadowmap"]["lights"])
+        for (const auto& entry : all["plugins"]["shadowmap_plugin"]["lights"])
             if (entry["light"] == name) return entry;
         throw std::runtime_error("no stats for light " + name + " in " + all.dump());
     }
@@ -118,7 +118,7 @@ TEST_F(EngineRenderShadows, VariantNoneCostsNoPassFromGltfAndFromTheCommandLine)
     EXPECT_FALSE(ranPass("shadow_1_sun"));
     EXPECT_FALSE(ranPass("shadow_2_point_light"));
     const nlohmann::json all = stats();
-    for (const auto& entry : all["plugins"]["shadowmap"]["lights"])
+    for (const auto& entry : all["plugins"]["shadowmap_plugin"]["lights"])
         if (entry["light"] != "spot_light") {
             EXPECT_EQ(entry["skip_reason"], "variant none");
         }
@@ -129,7 +129,7 @@ TEST_F(EngineRenderShadows, ConfigDefaultsApplyWhereTheLightIsSilent) {
     const CommandResult result = render();
     ASSERT_EQ(result.exitCode, 0) << result.output;
     const nlohmann::json all = stats();
-    for (const auto& entry : all["plugins"]["shadowmap"]["lights"]) {
+    for (const auto& entry : all["plugins"]["shadowmap_plugin"]["lights"]) {
         if (entry["light"] == "sun") {
             EXPECT_EQ(entry["resolution"], 2048);  // from the config
         } else if (entry["light"] == "point_light") {
@@ -436,4 +436,93 @@ TEST_F(EngineRenderShadows, StatsGiveEveryLightsMapTimeOrSayItWasCached) {
     }
     EXPECT_EQ(all["shadow_maps"][1]["map"], "2d");
     EXPECT_EQ(all["shadow_maps"][2]["map"], "cube");
+}
+
+// ---- Command-line overrides: never silently nothing --------------------------------------
+
+namespace {
+
+// How often `fragment` occurs in `text`.
+int occurrences(const std::string& text, const std::string& fragment) {
+    int count = 0;
+    for (auto at = text.find(fragment); at != std::string::npos; at = text.find(fragment, at + 1)) ++count;
+    return count;
+}
+
+} // namespace
+
+// --set edits the config, which a light's extras override: each light whose extras set the
+// key is named once, with the value that wins and the per-light option that would not lose.
+TEST_F(EngineRenderShadows, ASetShadowedByALightsExtrasWarnsNamingTheLightAndTheKey) {
+    light("spot_light")["extras"]["shadow"].erase("resolution");  // silent: the --set applies
+    const CommandResult result = render("--set shadowmap_plugin.resolution=512");
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    EXPECT_EQ(occurrences(result.output, "does nothing for light \"sun\": its glTF extras set resolution to 2048"), 1)
+        << result.output;
+    EXPECT_EQ(occurrences(result.output, "--light-set sun.resolution=512"), 1) << result.output;
+    EXPECT_EQ(occurrences(result.output, "does nothing for light \"point_light\": its glTF extras set resolution "
+                                         "to 1024"), 1) << result.output;
+    EXPECT_EQ(result.output.find("does nothing for light \"spot_light\""), std::string::npos) << result.output;
+    EXPECT_EQ(pluginLightStats("spot_light")["resolution"], 512);
+    EXPECT_EQ(pluginLightStats("sun")["resolution"], 2048);
+    // A per-light option for that key settles it: no warning for that light.
+    const CommandResult settled = render("--set shadowmap_plugin.resolution=512 --light-set sun.resolution=256");
+    ASSERT_EQ(settled.exitCode, 0) << settled.output;
+    EXPECT_EQ(settled.output.find("light \"sun\": its glTF extras"), std::string::npos) << settled.output;
+    EXPECT_NE(settled.output.find("light \"point_light\": its glTF extras"), std::string::npos) << settled.output;
+}
+
+// --light-set wins over the extras: the light's map is made at the size asked for (stats and
+// the map written by --shadow-map), the other lights keep theirs; a light is named by name
+// or by its number in --list.
+TEST_F(EngineRenderShadows, LightSetChangesThatLightsMap) {
+    const CommandResult result = render("--light-set sun.resolution=512 --light-set 3.filter=nearest "
+                                        "--light-set spot_light.polygon_offset=[3,16] --shadow-map sun=" +
+                                        (dir_ / "sun.png").string());
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    EXPECT_EQ(pluginLightStats("sun")["resolution"], 512);
+    EXPECT_EQ(pluginLightStats("spot_light")["resolution"], 2048);
+    EXPECT_EQ(pluginLightStats("point_light")["filter"], "nearest");
+    EXPECT_EQ(pluginLightStats("sun")["filter"], "pcf");
+    EXPECT_EQ(pluginLightStats("spot_light")["polygon_offset"], nlohmann::json::array({3.0, 16.0}));
+    int width = 0, height = 0;
+    engine::readPng(dir_ / "sun.png", 1, width, height);
+    EXPECT_EQ(width, 512);
+    EXPECT_EQ(height, 512);
+}
+
+TEST_F(EngineRenderShadows, BadLightSetNamesTheLightTheKeyAndTheReason) {
+    expectError(render("--light-set sun.resolution=0"),
+                {"--light-set sun.resolution=0", "light \"sun\".resolution", "whole number of texels >= 1, got 0"});
+    expectError(render("--light-set 2.bias=0.1"), {"--light-set 2.bias=0.1", "light \"sun\".bias", "unknown key"});
+    expectError(render("--light-set sun.filter=[1]"), {"light \"sun\".filter", "must be a string"});
+    // Checked with the light's other settings: its extras say d24.
+    expectError(render("--light-set sun.reversed_z=true"), {"light \"sun\".reversed_z", "needs depth_format \"d32f\""});
+    expectError(render("--light-set nosuchlight.resolution=512"), {"light \"nosuchlight\"", "no such light"});
+    expectError(render("--light-set sun=512"), {"--light-set", "must be NAME.KEY=VALUE"});
+}
+
+// The last of two values winning silently hid typos in scripts: both are named instead.
+TEST_F(EngineRenderShadows, ARepeatedOverrideIsAnErrorNamingBothValues) {
+    expectError(render("--light sun=woo --light sun=backface"), {"\"woo\" and \"backface\"", "light \"sun\".variant"});
+    // The same light typed two ways, and --light against --light-set.
+    expectError(render("--light sun=woo --light-set 2.variant=backface"), {"\"woo\" and \"backface\""});
+    expectError(render("--set shadowmap_plugin.resolution=512 --set shadowmap_plugin.resolution=1024"),
+                {"shadowmap_plugin.resolution is given twice: 512 and 1024"});
+}
+
+// One name, the one users type in the config: in --stats, --set and the plugin's messages.
+TEST_F(EngineRenderShadows, ThePluginIsCalledShadowmapPluginEverywhere) {
+    light("sun")["extras"]["shadow"]["near_plane"] = 1.0;  // a directional light ignores it, with a warning
+    const CommandResult result = render("--set shadowmap_plugin.cache_maps=false");
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    const nlohmann::json all = stats();
+    EXPECT_TRUE(all["plugins"].contains("shadowmap_plugin")) << all["plugins"].dump();
+    EXPECT_FALSE(all["plugins"].contains("shadowmap")) << all["plugins"].dump();
+    EXPECT_EQ(all["plugins"]["shadowmap_plugin"]["cache_maps"], false);
+    EXPECT_NE(result.output.find("warning: shadowmap_plugin: "), std::string::npos) << result.output;
+    EXPECT_EQ(result.output.find("warning: shadowmap: "), std::string::npos) << result.output;
+    fs::remove(dir_ / "out.png");  // the refused run below must write none
+    expectError(render("--set shadowmap.cache_maps=false"),
+                {"loads no plugin \"shadowmap\" (it loads: shadowmap_plugin)"});
 }

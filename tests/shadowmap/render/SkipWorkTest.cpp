@@ -26,7 +26,7 @@ struct Frames {
         return runs;
     }
     const nlohmann::json& lastLight(int index) const {
-        return results.back().pluginStats["shadowmap"]["lights"][index];
+        return results.back().pluginStats["shadowmap_plugin"]["lights"][index];
     }
 };
 
@@ -70,7 +70,7 @@ TEST_F(SkipWork, StaticSceneRendersEachMapOnce) {
     EXPECT_EQ(frames.mapRenders("spot"), 1);
     EXPECT_EQ(frames.mapRenders("sun"), 1);
     EXPECT_EQ(frames.mapRenders("bulb"), 1);
-    EXPECT_EQ(frames.results.back().pluginStats["shadowmap"]["cache_hits"], 12);
+    EXPECT_EQ(frames.results.back().pluginStats["shadowmap_plugin"]["cache_hits"], 12);
     EXPECT_EQ(frames.lastLight(0)["cache"], "hit");
 }
 
@@ -223,7 +223,7 @@ TEST_F(SkipWork, ReloadedSettingsRerenderOnlyTheChangedLightAndMatchAFreshScene)
         scene.lights[0].extras = {{"shadow", edit.shadow}};
         reloaded.reloadSettings();
         const engine::FrameResult frame = reloaded.renderFrame(request);
-        const nlohmann::json& lights = frame.pluginStats["shadowmap"]["lights"];
+        const nlohmann::json& lights = frame.pluginStats["shadowmap_plugin"]["lights"];
         EXPECT_EQ(lights[0]["cache"], edit.spotCache);
         EXPECT_EQ(lights[1]["cache"], "hit") << "the bulb's settings did not change";
         EXPECT_EQ(lights[0]["resolution"], 128);

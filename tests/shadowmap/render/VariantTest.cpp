@@ -131,7 +131,7 @@ TEST_F(ShadowVariants, OpenCasterUnderBackfaceIsReportedAndStillCasts) {
 
     nlohmann::json stats;
     const auto mask = engine::test::renderShadowMask(plugins(), scene, camera(), 0, &stats);
-    EXPECT_EQ(stats["shadowmap"]["lights"][0]["open_casters"], nlohmann::json::array({"sheet"}));
+    EXPECT_EQ(stats["shadowmap_plugin"]["lights"][0]["open_casters"], nlohmann::json::array({"sheet"}));
     const engine::Aabb sheet{{-1, 2, -1}, {1, 2, 1}};
     const glm::dvec3 axis = glm::normalize(target - apex);
     const auto result = engine::test::compareFloorMask(

@@ -1,6 +1,7 @@
 // The tools' command-line toolkit: every bad value is refused with one line naming the flag
 // and what is wrong with it, the same way in every tool.
 #include "CommandLine.h"
+#include "LightOverrides.h"
 #include "Median.h"
 #include "OptionValues.h"
 #include "SettingOverrides.h"
@@ -9,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include <map>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -124,7 +126,58 @@ TEST(SettingOverrides, AppliedToTheNamedPluginOnly) {
         tools::applySettingOverrides(config, {tools::parseSettingOverride("--set", "nope.key=1")});
         ADD_FAILURE() << "an override of a plugin the config does not load was accepted";
     } catch (const engine::InputError& error) {
-        EXPECT_STREQ(error.what(), "--set nope.key=1: the config engine.json loads no plugin \"nope\"");
+        EXPECT_STREQ(error.what(),
+                     "--set nope.key=1: the config engine.json loads no plugin \"nope\" (it loads: shadowmap_plugin, other)");
+    }
+}
+
+// Which value of two was meant is not the tool's to guess: the second is refused, naming both.
+TEST(SettingOverrides, TheSameKeyTwiceIsAnErrorNamingBothValues) {
+    std::vector<tools::SettingOverride> overrides;
+    tools::addSettingOverride(overrides, "--set", "shadowmap_plugin.resolution=512");
+    tools::addSettingOverride(overrides, "--set", "shadowmap_plugin.cache_maps=false");
+    ASSERT_EQ(overrides.size(), 2u);
+    EXPECT_EQ(errorOf([&] { tools::addSettingOverride(overrides, "--set", "shadowmap_plugin.resolution=1024"); }),
+              "--set shadowmap_plugin.resolution is given twice: 512 and 1024");
+}
+
+TEST(LightOverrides, LightSetSplitsAtTheLastDotBeforeTheValue) {
+    const tools::LightOverride option = tools::parseLightSetting("--light-set", "Light.001.polygon_offset=[1,2]");
+    EXPECT_EQ(option.light, "Light.001");  // Blender's names hold dots; keys never do
+    EXPECT_EQ(option.key, "polygon_offset");
+    EXPECT_EQ(option.value, nlohmann::json::array({1, 2}));
+    EXPECT_EQ(option.text, "--light-set Light.001.polygon_offset=[1,2]");
+    EXPECT_EQ(tools::parseLightSetting("--light-set", "sun.filter=nearest").value, "nearest");
+    EXPECT_EQ(errorOf([] { tools::parseLightSetting("--light-set", "sun=512"); }),
+              "--light-set: \"sun=512\" must be NAME.KEY=VALUE (\"sun\" is not NAME.KEY)");
+    EXPECT_EQ(errorOf([] { tools::parseLightSetting("--light-set", "sun.resolution="); }),
+              "--light-set: \"sun.resolution=\" must be NAME.KEY=VALUE (no value)");
+}
+
+TEST(LightOverrides, LightIsShortForTheVariantKey) {
+    const tools::LightOverride option = tools::parseLightVariant("--light", "sun=none");
+    EXPECT_EQ(option.light, "sun");
+    EXPECT_EQ(option.key, "variant");
+    EXPECT_EQ(option.value, "none");  // a word, not JSON's null
+    EXPECT_EQ(errorOf([] { tools::parseLightVariant("--light", "sun"); }), "--light: \"sun\" must be NAME=VARIANT");
+}
+
+// "2" and "sun" are the same light once resolved: the repeat is found however it was typed.
+TEST(LightOverrides, TheSameLightAndKeyTwiceIsAnErrorNamingBoth) {
+    const std::map<std::string, std::string> names = {{"sun", "sun"}, {"2", "sun"}, {"spot", "spot"}};
+    const auto resolve = [&](const std::string& typed) { return names.at(typed); };
+    const std::vector<tools::LightOverride> distinct = {tools::parseLightVariant("--light", "sun=woo"),
+                                                        tools::parseLightSetting("--light-set", "2.resolution=512"),
+                                                        tools::parseLightVariant("--light", "spot=woo")};
+    EXPECT_EQ(tools::resolveLightOverrides(distinct, resolve)[1].light, "sun");
+    try {
+        tools::resolveLightOverrides({tools::parseLightVariant("--light", "sun=woo"),
+                                      tools::parseLightSetting("--light-set", "2.variant=backface")},
+                                     resolve);
+        ADD_FAILURE() << "a light's variant given twice was accepted";
+    } catch (const engine::InputError& error) {
+        EXPECT_STREQ(error.what(), "--light-set 2.variant=backface: light \"sun\".variant is already set by "
+                                   "--light sun=woo (\"woo\" and \"backface\"): give each light and key once");
     }
 }
 

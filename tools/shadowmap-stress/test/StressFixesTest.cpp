@@ -158,7 +158,7 @@ protected:
         }
         engine::FrameRequest request;
         request.camera = built.camera;
-        return renderer.renderFrame(request).pluginStats["shadowmap"]["lights"][0];
+        return renderer.renderFrame(request).pluginStats["shadowmap_plugin"]["lights"][0];
     }
 
     static inline std::unique_ptr<engine::GlContext> context_;

@@ -25,6 +25,8 @@ public:
     void loadAll(const EngineConfig& config);
 
     std::vector<RenderPlugin*> renderPlugins() const;
+    // The render plugins that the library of that name (as the config names it) registered.
+    std::vector<RenderPlugin*> renderPlugins(const std::string& library) const;
     std::vector<std::string> loadedNames() const;
 
     // Where plugins are looked for: the config's dirs, then the build's plugin folder.

@@ -17,10 +17,20 @@ public:
     virtual ~RenderPlugin() = default;
     virtual std::string name() const = 0;
 
-    // A per-light option from the command line (engine-render --light NAME=VALUE), given
-    // before prepareScene. Return false when this plugin has no per-light options.
-    virtual bool setLightOption(const std::string& light, const std::string& value) {
+    // A per-light setting from the command line (engine-render --light-set NAME.KEY=JSON;
+    // --light NAME=VARIANT is the key "variant"), given before prepareScene, at most once per
+    // light and key. It wins over every other source of that light's setting. `light` is the
+    // instance's name (engine/scene/SceneNames.h). Returns false when this plugin has no
+    // per-light settings; throws InputError naming the light, the key and the reason when it
+    // has no such key or the value is bad.
+    virtual bool setLightOption(const std::string& light, const std::string& key, const nlohmann::json& value) {
         return false;
+    }
+    // The per-light settings the scene gives light instance `slot` itself (the shadow plugin:
+    // its glTF extras.shadow), as a JSON object key -> value. They win over the plugin's
+    // config settings, so a tool can say when a config override it applied does nothing there.
+    virtual nlohmann::json sceneLightSettings(const Scene& scene, int slot) const {
+        return nlohmann::json::object();
     }
     // The scene was loaded (or replaced). Validate per-light settings here and throw
     // InputError naming the light for bad ones.
