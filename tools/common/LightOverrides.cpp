@@ -24,17 +24,8 @@ std::string commandLineName(const engine::Scene& scene, int slot) {
 } // namespace
 
 LightOverride parseLightSetting(const std::string& flag, const std::string& text) {
-    const auto refuse = [&](const std::string& why) {
-        return std::invalid_argument(flag + ": \"" + text + "\" must be NAME.KEY=VALUE (" + why + ")");
-    };
-    const auto equals = text.find('=');
-    if (equals == std::string::npos) throw refuse("no '='");
-    const std::string target = text.substr(0, equals), value = text.substr(equals + 1);
-    if (value.empty()) throw refuse("no value");
-    const auto dot = target.rfind('.');
-    if (dot == std::string::npos || dot == 0 || dot + 1 == target.size())
-        throw refuse("\"" + target + "\" is not NAME.KEY");
-    return {target.substr(0, dot), target.substr(dot + 1), parseJsonOrWord(value), flag + " " + text};
+    KeyAssignment assignment = parseKeyAssignment(flag, text, "NAME.KEY", true);
+    return {std::move(assignment.owner), std::move(assignment.key), std::move(assignment.value), flag + " " + text};
 }
 
 LightOverride parseLightVariant(const std::string& flag, const std::string& text) {

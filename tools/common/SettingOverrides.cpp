@@ -6,18 +6,24 @@
 
 namespace tools {
 
-SettingOverride parseSettingOverride(const std::string& flag, const std::string& text) {
+KeyAssignment parseKeyAssignment(const std::string& flag, const std::string& text, const std::string& shape,
+                                 bool ownerMayHoldDots) {
     const auto refuse = [&](const std::string& why) {
-        return std::invalid_argument(flag + ": \"" + text + "\" must be PLUGIN.KEY=VALUE (" + why + ")");
+        return std::invalid_argument(flag + ": \"" + text + "\" must be " + shape + "=VALUE (" + why + ")");
     };
     const auto equals = text.find('=');
     if (equals == std::string::npos) throw refuse("no '='");
     const std::string target = text.substr(0, equals), value = text.substr(equals + 1);
     if (value.empty()) throw refuse("no value");
-    const auto dot = target.find('.');
+    const auto dot = ownerMayHoldDots ? target.rfind('.') : target.find('.');
     if (dot == std::string::npos || dot == 0 || dot + 1 == target.size())
-        throw refuse("\"" + target + "\" is not PLUGIN.KEY");
-    return {target.substr(0, dot), target.substr(dot + 1), parseJsonOrWord(value), text};
+        throw refuse("\"" + target + "\" is not " + shape);
+    return {target.substr(0, dot), target.substr(dot + 1), parseJsonOrWord(value)};
+}
+
+SettingOverride parseSettingOverride(const std::string& flag, const std::string& text) {
+    KeyAssignment assignment = parseKeyAssignment(flag, text, "PLUGIN.KEY", false);
+    return {std::move(assignment.owner), std::move(assignment.key), std::move(assignment.value), text};
 }
 
 void addSettingOverride(std::vector<SettingOverride>& overrides, const std::string& flag, const std::string& text) {

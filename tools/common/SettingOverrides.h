@@ -31,6 +31,17 @@ void addSettingOverride(std::vector<SettingOverride>& overrides, const std::stri
 // An option's value as JSON, a bare word counting as a string: 512, [1,2], true, woo.
 nlohmann::json parseJsonOrWord(const std::string& text);
 
+// OWNER.KEY=VALUE, the shape of --set (owner: a plugin) and --light-set (owner: a light).
+// The owner ends at the first dot, or at the last one when `ownerMayHoldDots` (light names
+// such as "Light.001"; no key holds a dot). Throws std::invalid_argument naming the flag and
+// `shape` (e.g. "PLUGIN.KEY") when a part is missing or empty.
+struct KeyAssignment {
+    std::string owner, key;
+    nlohmann::json value;
+};
+KeyAssignment parseKeyAssignment(const std::string& flag, const std::string& text, const std::string& shape,
+                                 bool ownerMayHoldDots);
+
 // Applies each override to the config's plugin of that name. Throws engine::InputError when
 // the config loads no such plugin (naming the config's source and the plugins it loads).
 void applySettingOverrides(engine::EngineConfig& config, const std::vector<SettingOverride>& overrides);
