@@ -94,8 +94,6 @@ DepthDrawCounts DepthRenderer::render(const engine::Frame& frame, engine::PassCo
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
         return counts;
     }
-    // Per face, not per pass: the far layer at the end of a previous face switched it off.
-    setPolygonOffset(style.polygonOffset, style);
 
     const Peel peel = !style.firstLayer ? Peel::None : style.firstLayerIsArray ? Peel::LayerArray : Peel::Layer2D;
     if (style.firstLayer) glBindTextureUnit(kFirstLayerUnit, style.firstLayer);
@@ -147,7 +145,6 @@ DepthDrawCounts DepthRenderer::render(const engine::Frame& frame, engine::PassCo
             counts.triangles += triangles;
         }
     }
-    glDisable(GL_POLYGON_OFFSET_FILL);
     if (style.firstLayer) {
         // Woo pass 2, last: the far plane as one more layer (a full-screen triangle at far
         // depth, not clipped), so a texel whose ray meets one surface and then nothing holds
@@ -156,13 +153,16 @@ DepthDrawCounts DepthRenderer::render(const engine::Frame& frame, engine::PassCo
         // (2x2 PCF reads the neighbouring "nothing behind" texels: 0.06% of the pixels
         // that must be dark, tools/shadowmap-stress special/light_inside_box). Texels
         // with no surface at all fail the peel test and stay far.
-        // Woo is never backface, so nothing is culled; the next face clamps nothing.
+        // Woo is never backface, so nothing is culled. The far layer is drawn without the
+        // offset and depth-clamped; the pass's state is then put back for the next cube face.
+        glDisable(GL_POLYGON_OFFSET_FILL);
         glEnable(GL_DEPTH_CLAMP);
         use(0).set("uFarLayer", 1);
         empty_.bind();
         glDrawArrays(GL_TRIANGLES, 0, 3);
         glBindVertexArray(0);
         glDisable(GL_DEPTH_CLAMP);
+        setPolygonOffset(style.polygonOffset, style);
     }
     if (style.firstLayer) glBindTextureUnit(kFirstLayerUnit, 0);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
