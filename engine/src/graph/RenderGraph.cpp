@@ -12,6 +12,10 @@ std::string quoted(const std::string& name) { return "'" + name + "'"; }
 bool contains(const std::vector<int>& list, int value) {
     return std::find(list.begin(), list.end(), value) != list.end();
 }
+// Layers a single attachment may name: cube faces, array layers. A desc does not say whether
+// a one-layer texture is an array, so its layer 0 passes here (GL refuses it for a plain 2D
+// texture, and the renderer's GL error check names the pass).
+int attachableLayers(const TextureDesc& desc) { return desc.cube ? 6 * desc.layers : desc.layers; }
 } // namespace
 
 // ---- declaration ----------------------------------------------------------------------
@@ -27,13 +31,14 @@ int RenderGraph::addResource(Resource resource, int pass) {
     if (resource.name.empty()) throw GraphError(who + ": resource with an empty name");
     if (auto it = resourceByName_.find(resource.name); it != resourceByName_.end()) {
         const Resource& old = resources_[it->second];
-        const std::string first = old.imported ? "imported" : "created by pass " + quoted(passes_[old.writer].name);
+        const std::string first =
+            old.imported ? "imported" : "created by pass " + quoted(passes_[old.writers.front().pass].name);
         throw GraphError(who + ": resource " + quoted(resource.name) + " already " + first);
     }
     const TextureDesc& d = resource.desc;
     if (d.width <= 0 || d.height <= 0 || d.layers < 1 || (d.cube && d.width != d.height))
         throw GraphError(who + ": resource " + quoted(resource.name) + " has an invalid desc " + toString(d));
-    resource.writer = pass;
+    if (pass >= 0) resource.writers = {Writer{pass, -1}};
     resourceByName_.emplace(resource.name, static_cast<int>(resources_.size()));
     resources_.push_back(std::move(resource));
     compiled_ = false;
@@ -64,7 +69,7 @@ void RenderGraph::addPass(std::string name, std::function<void(PassBuilder&)> se
             resourceByName_.erase(resources_[i].name);
         resources_.resize(resourceCount);
         for (Resource& resource : resources_)
-            if (resource.writer == index) resource.writer = -1;
+            std::erase_if(resource.writers, [index](const Writer& writer) { return writer.pass == index; });
         passes_.pop_back();
         throw;
     }
@@ -119,24 +124,55 @@ ResourceHandle PassBuilder::read(const std::string& name) {
     return read(handle);
 }
 
-ResourceHandle PassBuilder::write(ResourceHandle handle) {
+ResourceHandle PassBuilder::write(ResourceHandle handle) { return write(handle, -1); }
+
+ResourceHandle PassBuilder::write(ResourceHandle handle, int layer) {
     const auto& resource = graph_.resourceAt(handle, pass_);
     auto& pass = graph_.passes_[pass_];
-    if (resource.writer == pass_) return handle;
-    if (resource.writer >= 0)
-        throw GraphError("pass " + quoted(pass.name) + " writes " + quoted(resource.name) +
-                         ", already written by pass " + quoted(graph_.passes_[resource.writer].name));
+    const std::string what = (layer < 0 ? "" : "layer " + std::to_string(layer) + " of ") + quoted(resource.name);
+    if (layer >= attachableLayers(resource.desc))
+        throw GraphError("pass " + quoted(pass.name) + " writes " + what + ", which has " +
+                         std::to_string(attachableLayers(resource.desc)) + " layers (" + toString(resource.desc) + ")");
+    if (!resource.imported && !resource.writers.empty() && resource.writers.front().pass == pass_) return handle;
+    for (const RenderGraph::Writer& writer : resource.writers) {
+        if (writer.pass == pass_ && writer.layer == layer) return handle;
+        if (writer.layer < 0 || layer < 0 || writer.layer == layer)
+            throw GraphError("pass " + quoted(pass.name) + " writes " + what + ", already written by pass " +
+                             quoted(graph_.passes_[writer.pass].name));
+    }
     if (contains(pass.reads, handle.index))
         throw GraphError("pass " + quoted(pass.name) + " writes " + quoted(resource.name) +
                          ", which it reads itself");
-    graph_.resources_[handle.index].writer = pass_;
-    pass.writes.push_back(handle.index);
+    graph_.resources_[handle.index].writers.push_back({pass_, layer});
+    if (!contains(pass.writes, handle.index)) pass.writes.push_back(handle.index);
     return handle;
 }
 
 void PassBuilder::sideEffect() { graph_.passes_[pass_].sideEffect = true; }
 
 void PassBuilder::setState(const PassState& state) { graph_.passes_[pass_].state = state; }
+
+void PassBuilder::setTargets(const PassTargets& targets) {
+    auto& pass = graph_.passes_[pass_];
+    auto check = [&](ResourceHandle handle, int layer, const char* kind) {
+        const auto& resource = graph_.resourceAt(handle, pass_);
+        const std::string what = std::string(kind) + " target " + quoted(resource.name) +
+                                 (layer < 0 ? "" : " layer " + std::to_string(layer));
+        if (!contains(pass.writes, handle.index))
+            throw GraphError("pass " + quoted(pass.name) + ": " + what + " is not written by the pass");
+        if (layer >= attachableLayers(resource.desc))
+            throw GraphError("pass " + quoted(pass.name) + ": " + what + " is out of range (" +
+                             toString(resource.desc) + ")");
+        // A pass that writes only some layers may draw into only those.
+        const bool allowed = std::any_of(resource.writers.begin(), resource.writers.end(), [&](const auto& writer) {
+            return writer.pass == pass_ && (writer.layer < 0 || writer.layer == layer);
+        });
+        if (!allowed) throw GraphError("pass " + quoted(pass.name) + ": " + what + " is not a layer the pass writes");
+    };
+    for (const ColorTarget& color : targets.colors) check(color.resource, color.layer, "colour");
+    if (targets.depth.resource.valid()) check(targets.depth.resource, targets.depth.layer, "depth");
+    pass.targets = targets;
+}
 
 // ---- execution --------------------------------------------------------------------------
 
@@ -166,8 +202,13 @@ const std::string& PassContext::passName() const { return graph_.passes_[pass_].
 
 PassState RenderGraph::resolvedState(const Pass& pass) const {
     PassState state = pass.state;
-    if (state.viewportWidth == 0 && state.viewportHeight == 0 && !pass.writes.empty()) {
-        const TextureDesc& target = resources_[pass.writes.front()].desc;
+    const PassTargets& targets = pass.targets;
+    const int sized = !targets.colors.empty()            ? targets.colors.front().resource.index
+                      : targets.depth.resource.valid()  ? targets.depth.resource.index
+                      : !pass.writes.empty()            ? pass.writes.front()
+                                                        : -1;
+    if (state.viewportWidth == 0 && state.viewportHeight == 0 && sized >= 0) {
+        const TextureDesc& target = resources_[sized].desc;
         state.viewportWidth = target.width;
         state.viewportHeight = target.height;
     }
@@ -198,7 +239,9 @@ void RenderGraph::execute(ResourceAllocator& allocator, const ExecuteOptions& op
             const int index = order_[position];
             PassContext context(*this, index, reports_[index]);
             const auto start = std::chrono::steady_clock::now();
-            if (options.applyState) options.applyState(resolvedState(passes_[index]));
+            const PassState state = resolvedState(passes_[index]);
+            if (options.applyState) options.applyState(state);
+            if (options.bindTargets) options.bindTargets(passes_[index].targets, state, context);
             if (passes_[index].execute) passes_[index].execute(context);
             if (options.timing) {
                 if (options.finish) options.finish();

@@ -17,14 +17,14 @@ std::string quoted(const std::string& name) { return "'" + name + "'"; }
 // back through their unfinished predecessors must revisit one, which yields the cycle.
 std::vector<int> RenderGraph::topologicalOrder() const {
     const int passCount = static_cast<int>(passes_.size());
-    struct Edge { int pass, resource; };
+    struct Edge { int pass, resource; };  // the pass at the other end, through the resource
     std::vector<std::vector<Edge>> successors(passCount), predecessors(passCount);
     std::vector<int> inDegree(passCount, 0);
     for (int reader = 0; reader < passCount; ++reader)
         for (int r : passes_[reader].reads)
-            if (int writer = resources_[r].writer; writer >= 0) {
-                successors[writer].push_back({reader, r});
-                predecessors[reader].push_back({writer, r});
+            for (const Writer& writer : resources_[r].writers) {
+                successors[writer.pass].push_back({reader, r});
+                predecessors[reader].push_back({writer.pass, r});
                 ++inDegree[reader];
             }
 
@@ -43,20 +43,22 @@ std::vector<int> RenderGraph::topologicalOrder() const {
 
     int p = static_cast<int>(std::find_if(inDegree.begin(), inDegree.end(),
                                           [](int d) { return d > 0; }) - inDegree.begin());
-    std::vector<Edge> path;  // path[i]: pass path[i].pass reads resource path[i].resource
+    // path[i]: pass path[i].reader reads resource path[i].resource, written by path[i].writer
+    struct Step { int reader, resource, writer; };
+    std::vector<Step> path;
     std::vector<int> seenAt(passCount, -1);
     while (seenAt[p] < 0) {
         seenAt[p] = static_cast<int>(path.size());
         const Edge& back = *std::find_if(predecessors[p].begin(), predecessors[p].end(),
                                          [&](const Edge& e) { return inDegree[e.pass] > 0; });
-        path.push_back({p, back.resource});
+        path.push_back({p, back.resource, back.pass});
         p = back.pass;
     }
     std::string message = "render graph has a cycle:";
     for (int i = static_cast<int>(path.size()) - 1; i >= seenAt[p]; --i) {
         const Resource& resource = resources_[path[i].resource];
-        message += " pass " + quoted(passes_[resource.writer].name) + " writes " +
-                   quoted(resource.name) + ", read by pass " + quoted(passes_[path[i].pass].name) +
+        message += " pass " + quoted(passes_[path[i].writer].name) + " writes " +
+                   quoted(resource.name) + ", read by pass " + quoted(passes_[path[i].reader].name) +
                    (i > seenAt[p] ? ";" : "");
     }
     throw GraphError(message);
@@ -89,8 +91,8 @@ std::vector<bool> RenderGraph::cull() {
         };
         if (node < passCount) {
             for (int r : passes_[node].reads) release(passCount + r);
-        } else if (int writer = resources_[node - passCount].writer; writer >= 0) {
-            release(writer);
+        } else {
+            for (const Writer& writer : resources_[node - passCount].writers) release(writer.pass);
         }
     }
     std::vector<bool> culled(passCount);

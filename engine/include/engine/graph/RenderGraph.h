@@ -7,13 +7,17 @@
 // Contract (plugins and tools rely on it):
 // - Resources are textures with names unique in the graph. A transient is made by create()
 //   in exactly one pass, its writer. An import (importTexture) is owned elsewhere (persistent
-//   shadow maps, the final target) and may be written by at most one pass, via write().
-//   A duplicate name, a second writer, an unknown name or a pass reading what it writes is a
-//   GraphError naming the pass(es) and the resource.
-// - Dependencies run from a resource's writer to every reader, whatever the declaration
-//   order: a pass reading an import that another pass writes runs after that writer and sees
+//   shadow maps, the final target) and is written either whole by at most one pass, via
+//   write(), or layer by layer (cube faces, array layers) by several passes, each writing
+//   layers no other pass writes, via write(resource, layer).
+//   A duplicate name, a second writer of the same texels, an unknown name or a pass reading
+//   what it writes is a GraphError naming the pass(es) and the resource.
+// - Dependencies run from a resource's writers to every reader, whatever the declaration
+//   order: a pass reading an import that other passes write runs after all of them and sees
 //   this frame's contents. An import nobody writes is a valid input (its contents come from
 //   outside). Cycles are a GraphError naming the passes in them.
+// - A pass's fixed-function state (PassState.h) and the targets it draws into (PassTargets.h)
+//   are declared with it and applied by the executor, in that order, before it runs.
 // - Culling counts references back from the outputs (as Filament's FrameGraph): a pass
 //   survives if it has a side effect, writes a resource marked output, or writes something a
 //   surviving pass reads. Culled passes never execute, their transients are never acquired,
@@ -24,7 +28,9 @@
 //   plans that reuse statically (physicalSlot / physicalSlotCount): transients of equal desc
 //   with disjoint lifetimes share one slot. To keep contents past the frame, import instead.
 #include "engine/graph/PassState.h"
+#include "engine/graph/PassTargets.h"
 #include "engine/graph/ResourceAllocator.h"
+#include "engine/graph/ResourceHandle.h"
 #include "engine/graph/TextureDesc.h"
 
 #include <cstdint>
@@ -43,13 +49,6 @@ public:
     using std::runtime_error::runtime_error;
 };
 
-// Index of a resource in its graph; only meaningful for the graph that returned it.
-struct ResourceHandle {
-    int index = -1;
-    bool valid() const { return index >= 0; }
-    bool operator==(const ResourceHandle&) const = default;
-};
-
 // Handed to a pass's setup callback: the pass declares its resources through it.
 class PassBuilder {
 public:
@@ -59,9 +58,14 @@ public:
     ResourceHandle read(const std::string& name);  // unknown name -> GraphError
     // Declares this pass the writer of an import (or returns its own transient unchanged).
     [[nodiscard]] ResourceHandle write(ResourceHandle resource);
+    // Declares this pass the writer of one layer (array layer or cube face) of an import;
+    // other passes may write its other layers.
+    [[nodiscard]] ResourceHandle write(ResourceHandle resource, int layer);
     void sideEffect();  // never culled (e.g. a readback)
     // The state the pass's draws start from (PassState.h); PassState{} when not declared.
     void setState(const PassState& state);
+    // What the pass draws into (PassTargets.h): textures, and layers, it writes.
+    void setTargets(const PassTargets& targets);
 
 private:
     friend class RenderGraph;
@@ -105,6 +109,9 @@ struct ExecuteOptions {
     // Called before each pass runs, with its declared state (the viewport filled in from the
     // first texture it writes when left 0).
     std::function<void(const PassState&)> applyState;
+    // Called after applyState: binds the pass's declared targets (none: the default
+    // framebuffer) and clears what they ask to, under the pass's state.
+    std::function<void(const PassTargets&, const PassState&, const PassContext&)> bindTargets;
     // Called after each pass has run (after finish, when timing), with its name: e.g. a GL
     // error check that blames the pass that raised the flag. May throw; the frame stops.
     std::function<void(const std::string& passName)> afterPass;
@@ -146,12 +153,17 @@ private:
         std::vector<int> reads{}, writes{};  // resource indices; writes include creates
         bool sideEffect = false;
         PassState state{};
+        PassTargets targets{};
+    };
+    struct Writer {
+        int pass = -1;
+        int layer = -1;  // -1: the whole texture
     };
     struct Resource {
         std::string name;
         TextureDesc desc;
         bool imported = false, output = false;
-        int writer = -1;             // pass index
+        std::vector<Writer> writers{};  // one whole writer, or one per written layer
         std::uint32_t physical = 0;  // an import's handle; a transient's while acquired
         int firstUse = -1, lastUse = -1;  // positions in order_, from compile()
         int slot = -1;                    // aliasing plan, from compile()
