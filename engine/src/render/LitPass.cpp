@@ -1,6 +1,5 @@
 #include "engine/render/LitPass.h"
 
-#include "engine/gl/Framebuffer.h"
 #include "engine/render/MaterialShading.h"
 #include "engine/render/SceneGpu.h"
 #include "engine/scene/DrawOrder.h"
@@ -232,6 +231,8 @@ void LitPass::addPass(Frame& frame, const std::string& name, ResourceHandle targ
     struct Handles { ResourceHandle target, depth; };
     auto handles = std::make_shared<Handles>();
     handles->target = target;
+    const bool color = output == Output::Color;
+    const ShadeCache::Plan* shadePlan = color && shadePlan_.layers > 0 ? &shadePlan_ : nullptr;
     frame.graph().addPass(
         name,
         [&](PassBuilder& builder) {
@@ -241,22 +242,32 @@ void LitPass::addPass(Frame& frame, const std::string& name, ResourceHandle targ
                 name + "_depth",
                 {frame.camera().width, frame.camera().height, TextureFormat::Depth32F});
             handles->target = builder.write(target);
+            PassTargets targets;
+            const glm::vec4 clear = color ? glm::vec4(config_.clearColor, 1.0f) : glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
+            targets.colors.push_back({handles->target, -1, std::array<float, 4>{clear.r, clear.g, clear.b, clear.a}});
+            targets.depth = DepthTarget{handles->depth, -1, 1.0f};
+            // The shade cache's arrays live across frames (ShadeCache.h): imported, read and
+            // written here; the written one's layers are the extra colour outputs.
+            if (shadePlan) {
+                const TextureDesc desc{frame.camera().width, frame.camera().height, TextureFormat::RGBA32F,
+                                       shadePlan->layers};
+                if (shadePlan->readArray)
+                    builder.read(frame.graph().importTexture("shade_cache_read", desc, shadePlan->readArray));
+                if (shadePlan->writeArray) {
+                    const ResourceHandle written = builder.write(
+                        frame.graph().importTexture("shade_cache_written", desc, shadePlan->writeArray));
+                    for (int layer = 0; layer < shadePlan->layers; ++layer)
+                        targets.colors.push_back({written, layer, std::nullopt});
+                }
+            }
+            builder.setTargets(targets);
             PassState state;  // depth test, back faces culled, viewport: the target's size
-            state.srgbWrites = output == Output::Color;
+            state.srgbWrites = color;
             builder.setState(state);
         },
-        [this, &frame, programs, handles, output, maskSlot, shading, dimming](PassContext& context) {
-            const bool color = output == Output::Color;
-            if (color) uploadLights(frame.scene(), frame.camera());
-            const ShadeCache::Plan* shadePlan = color && shadePlan_.layers > 0 ? &shadePlan_ : nullptr;
-            const gl::Framebuffer& framebuffer =
-                framebufferFor(context.texture(handles->target), context.texture(handles->depth), shadePlan);
+        [this, &frame, programs, output, maskSlot, shading, shadePlan, dimming](PassContext& context) {
+            if (output == Output::Color) uploadLights(frame.scene(), frame.camera());
             if (shadePlan && shadePlan->readArray) glBindTextureUnit(ShadeCache::kTextureUnit, shadePlan->readArray);
-            glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.id());
-            const glm::vec4 clear = color ? glm::vec4(config_.clearColor, 1.0f) : glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
-            glClearNamedFramebufferfv(framebuffer.id(), GL_COLOR, 0, &clear[0]);
-            const float farDepth = 1.0f;
-            glClearNamedFramebufferfv(framebuffer.id(), GL_DEPTH, 0, &farDepth);
             for (const gl::Program* program : programs) {
                 if (!program) continue;
                 program->set("uMaskLight", maskSlot);
@@ -264,22 +275,11 @@ void LitPass::addPass(Frame& frame, const std::string& name, ResourceHandle targ
                 if (shading && shading->bind) shading->bind(*program, context);
             }
             drawScene(frame, programs, context);
-            glBindFramebuffer(GL_FRAMEBUFFER, 0);
             if (shadePlan) {
                 glBindTextureUnit(ShadeCache::kTextureUnit, 0);
                 shadeCache_.commit(*shadePlan);
             }
         });
-}
-
-const gl::Framebuffer& LitPass::framebufferFor(std::uint32_t target, std::uint32_t depth,
-                                               const ShadeCache::Plan* shadePlan) {
-    std::vector<gl::TargetAttachment> attachments{{GL_COLOR_ATTACHMENT0, target},
-                                                  {GL_DEPTH_ATTACHMENT, depth}};
-    if (shadePlan && shadePlan->writeArray)
-        for (int layer = 0; layer < shadePlan->layers; ++layer)
-            attachments.push_back({static_cast<GLenum>(GL_COLOR_ATTACHMENT1 + layer), shadePlan->writeArray, layer});
-    return framebuffers_.get(attachments, "lit pass framebuffer");
 }
 
 void LitPass::sceneChanged() {

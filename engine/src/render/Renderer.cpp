@@ -100,11 +100,15 @@ FrameResult Renderer::renderFrame(const FrameRequest& request) {
     options.timing = request.timing;
     options.finish = [] { glFinish(); };
     options.applyState = applyPassState;
+    options.bindTargets = [this](const PassTargets& targets, const PassState& state, const PassContext& context) {
+        targets_.bind(targets, state, context);
+    };
     if (config_.checkGlErrors) {
         gl::checkGlError("the start of the frame (a call made before renderFrame)");
         options.afterPass = [](const std::string& pass) { gl::checkGlError(("pass \"" + pass + "\"").c_str()); };
     }
     graph.execute(pool_, options);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
     PassState afterFrame;  // tools drawing after the frame start from the defaults too
     afterFrame.viewportWidth = width;
     afterFrame.viewportHeight = height;

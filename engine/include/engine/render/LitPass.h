@@ -5,7 +5,6 @@
 // used.
 #include "engine/config/EngineConfig.h"
 #include "engine/gl/Buffer.h"
-#include "engine/gl/FramebufferCache.h"
 #include "engine/gl/Program.h"
 #include "engine/render/Frame.h"
 #include "engine/render/MaterialShading.h"
@@ -49,11 +48,6 @@ private:
                                   Output output, const std::string& loadShadesGlsl, unsigned variant);
     // A pass's programs by material variant; null where no primitive of the scene needs it.
     using Variants = std::array<const gl::Program*, kMaterialFeatureCombinations>;
-    // Binds the array the plan fetches from and attaches the one it writes as outputs 1...
-    // The targets of a lit pass: its colour target and depth, and the layers of the shade
-    // cache it writes (each an extra colour output).
-    const gl::Framebuffer& framebufferFor(std::uint32_t target, std::uint32_t depth,
-                                          const ShadeCache::Plan* shadePlan);
     void uploadLights(const Scene& scene, const FrameCamera& camera);
     void drawScene(const Frame& frame, const Variants& programs, PassContext& context);
 
@@ -74,7 +68,6 @@ private:
     int lightCount_ = 0;
     int culledInstances_ = 0;
     ShadeCache shadeCache_;
-    gl::FramebufferCache framebuffers_;
     ShadeCache::Plan shadePlan_;  // of this frame's shaded image
     std::uint64_t sceneGeneration_ = 0;
 };

@@ -6,6 +6,7 @@
 #include "engine/gl/Texture.h"
 #include "engine/plugin/RenderPlugin.h"
 #include "engine/render/Frame.h"
+#include "engine/render/GlPassTargets.h"
 #include "engine/render/GlTexturePool.h"
 #include "engine/render/LitPass.h"
 #include "engine/render/SceneGpu.h"
@@ -92,6 +93,7 @@ private:
     std::unique_ptr<SceneGpu> gpu_;
     std::unique_ptr<LitPass> litPass_;
     GlTexturePool pool_;
+    GlPassTargets targets_;
     gl::Texture color_;
     std::map<std::pair<LitPass::LightView, int>, gl::Texture> lightViews_;  // (view, slot)
     std::uint64_t frameIndex_ = 0;
