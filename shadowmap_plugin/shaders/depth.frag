@@ -13,14 +13,7 @@
 // ALPHA_TEST (an alpha-tested caster, MaterialShading.h): texels whose base color alpha
 // is below the material's shadow cutoff cast nothing, in both of Woo's passes alike.
 #ifdef PEEL
-#ifdef PEEL_ARRAY
-layout(binding = FIRST_LAYER_UNIT) uniform sampler2DArray uFirstLayer;  // one layer per cube face
-uniform int uFirstLayerIndex;
-#define FIRST_LAYER_DEPTH texelFetch(uFirstLayer, ivec3(gl_FragCoord.xy, uFirstLayerIndex), 0).r
-#else
-layout(binding = FIRST_LAYER_UNIT) uniform sampler2D uFirstLayer;
-#define FIRST_LAYER_DEPTH texelFetch(uFirstLayer, ivec2(gl_FragCoord.xy), 0).r
-#endif
+layout(binding = FIRST_LAYER_UNIT) uniform sampler2D uFirstLayer;  // this map layer's (or cube face's)
 uniform float uPeelEpsilon;
 // Reversed Z (d32f): near is 1, far 0, so "behind z1" is smaller, and the epsilon is
 // relative (uPeelEpsilon * z1): float depth there has relative, not absolute, steps.
@@ -32,7 +25,7 @@ void main() {
     discardBelowAlphaCutoff(materialBaseColor().a);
 #endif
 #ifdef PEEL
-    float z1 = FIRST_LAYER_DEPTH;
+    float z1 = texelFetch(uFirstLayer, ivec2(gl_FragCoord.xy), 0).r;
     bool firstLayer = uReversedZ ? gl_FragCoord.z >= z1 - uPeelEpsilon * z1
                                  : gl_FragCoord.z <= z1 + uPeelEpsilon;
     if (firstLayer) discard;

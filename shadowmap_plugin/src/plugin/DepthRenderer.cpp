@@ -65,38 +65,29 @@ engine::PassState depthPassState(const DepthPassStyle& style) {
     return state;
 }
 
+engine::PassTargets depthPassTargets(engine::ResourceHandle map, int layer, const DepthPassStyle& style) {
+    return engine::PassTargets::depthOnly(map, layer, style.reversedZ ? 0.0f : 1.0f);
+}
+
 DepthRenderer::DepthRenderer() : empty_(engine::gl::VertexArray::create()) {
     // The opaque casters' programs, which every scene with shadows uses, before the first frame.
-    for (const Peel peel : {Peel::None, Peel::Layer2D, Peel::LayerArray}) program(peel, 0);
+    for (const bool peel : {false, true}) program(peel, 0);
 }
 
-const engine::gl::Program& DepthRenderer::program(Peel peel, unsigned materialFeatures) {
+const engine::gl::Program& DepthRenderer::program(bool peel, unsigned materialFeatures) {
     const auto key = std::make_pair(peel, materialFeatures);
     if (auto found = programs_.find(key); found != programs_.end()) return found->second;
-    const char* name = peel == Peel::None ? "shadow depth" : peel == Peel::Layer2D ? "shadow depth peel"
-                                                                                    : "shadow depth peel (cube)";
-    const char* defines = peel == Peel::None ? "" : peel == Peel::Layer2D ? "#define PEEL\n"
-                                                                           : "#define PEEL\n#define PEEL_ARRAY\n";
-    return programs_.emplace(key, compileDepthProgram(name, defines, materialFeatures)).first->second;
+    return programs_
+        .emplace(key, compileDepthProgram(peel ? "shadow depth peel" : "shadow depth", peel ? "#define PEEL\n" : "",
+                                          materialFeatures))
+        .first->second;
 }
 
-DepthDrawCounts DepthRenderer::render(const engine::Frame& frame, engine::PassContext& context,
-                                      unsigned target, int layer, const glm::dmat4& viewProjection, const DepthPassStyle& style,
-                                      bool drawCasters) {
-    const engine::gl::Framebuffer& framebuffer =
-        framebuffers_.get({{GL_DEPTH_ATTACHMENT, target, layer}}, "shadow map framebuffer");
-
-    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.id());
-    const float farDepth = style.reversedZ ? 0.0f : 1.0f;
-    glClearNamedFramebufferfv(framebuffer.id(), GL_DEPTH, 0, &farDepth);
+DepthDrawCounts DepthRenderer::draw(const engine::Frame& frame, engine::PassContext& context,
+                                    const glm::dmat4& viewProjection, const DepthPassStyle& style) {
     DepthDrawCounts counts;
-    if (!drawCasters) {
-        glBindFramebuffer(GL_FRAMEBUFFER, 0);
-        return counts;
-    }
-
-    const Peel peel = !style.firstLayer ? Peel::None : style.firstLayerIsArray ? Peel::LayerArray : Peel::Layer2D;
-    if (style.firstLayer) glBindTextureUnit(kFirstLayerUnit, style.firstLayer);
+    const bool peel = style.firstLayer != 0;
+    if (peel) glBindTextureUnit(kFirstLayerUnit, style.firstLayer);
     const engine::gl::Program* current = nullptr;
     // Switches to the program a caster's material needs, with the pass's own uniforms.
     auto use = [&](unsigned materialFeatures) -> const engine::gl::Program& {
@@ -104,8 +95,7 @@ DepthDrawCounts DepthRenderer::render(const engine::Frame& frame, engine::PassCo
         if (&next == current) return next;
         current = &next;
         next.use();
-        if (style.firstLayer) {
-            if (style.firstLayerIsArray) next.set("uFirstLayerIndex", std::max(layer, 0));
+        if (peel) {
             next.set("uPeelEpsilon", style.peelEpsilon);
             next.set("uReversedZ", style.reversedZ ? 1 : 0);
             next.set("uFarLayer", 0);
@@ -145,7 +135,7 @@ DepthDrawCounts DepthRenderer::render(const engine::Frame& frame, engine::PassCo
             counts.triangles += triangles;
         }
     }
-    if (style.firstLayer) {
+    if (peel) {
         // Woo pass 2, last: the far plane as one more layer (a full-screen triangle at far
         // depth, not clipped), so a texel whose ray meets one surface and then nothing holds
         // the midpoint between that surface and far instead of far itself. Without it, a
@@ -153,19 +143,16 @@ DepthDrawCounts DepthRenderer::render(const engine::Frame& frame, engine::PassCo
         // (2x2 PCF reads the neighbouring "nothing behind" texels: 0.06% of the pixels
         // that must be dark, tools/shadowmap-stress special/light_inside_box). Texels
         // with no surface at all fail the peel test and stay far.
-        // Woo is never backface, so nothing is culled. The far layer is drawn without the
-        // offset and depth-clamped; the pass's state is then put back for the next cube face.
+        // Woo is never backface, so nothing is culled. The far layer is the pass's last draw,
+        // without the offset and depth-clamped.
         glDisable(GL_POLYGON_OFFSET_FILL);
         glEnable(GL_DEPTH_CLAMP);
         use(0).set("uFarLayer", 1);
         empty_.bind();
         glDrawArrays(GL_TRIANGLES, 0, 3);
         glBindVertexArray(0);
-        glDisable(GL_DEPTH_CLAMP);
-        setPolygonOffset(style.polygonOffset, style);
+        glBindTextureUnit(kFirstLayerUnit, 0);
     }
-    if (style.firstLayer) glBindTextureUnit(kFirstLayerUnit, 0);
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
     return counts;
 }
 

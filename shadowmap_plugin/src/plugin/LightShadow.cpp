@@ -29,8 +29,32 @@ void LightShadow::ensureMap() {
 }
 
 std::string LightShadow::mapResource() const { return "shadow_map_" + std::to_string(slot); }
-std::string LightShadow::depthPass() const { return "shadow_" + std::to_string(slot) + "_" + name; }
-std::string LightShadow::firstLayerPass() const { return depthPass() + "_first_layer"; }
+namespace {
+// Cube faces in GL order (GL_TEXTURE_CUBE_MAP_POSITIVE_X + i), as pass names show them.
+constexpr const char* kFaceNames[6] = {"+x", "-x", "+y", "-y", "+z", "-z"};
+std::string layerSuffix(int layer) { return layer < 0 ? "" : std::string("_") + kFaceNames[layer]; }
+} // namespace
+
+std::string LightShadow::depthPass(int layer) const {
+    return "shadow_" + std::to_string(slot) + "_" + name + layerSuffix(layer);
+}
+std::string LightShadow::firstLayerPass(int layer) const { return depthPass(layer) + "_first_layer"; }
+std::string LightShadow::firstLayerResource(int layer) const {
+    return "shadow_first_layer_" + std::to_string(slot) + layerSuffix(layer);
+}
+
+std::vector<std::string> LightShadow::depthPasses() const {
+    std::vector<std::string> passes;
+    auto addLayer = [&](int layer, bool drawsCasters) {
+        // Woo draws a first layer only where there are casters to draw (ShadowMapPlugin.cpp).
+        if (settings.variant == Variant::Woo && drawsCasters) passes.push_back(firstLayerPass(layer));
+        passes.push_back(depthPass(layer));
+    };
+    if (frame.kind == MapKind::Map2D) addLayer(-1, true);
+    if (frame.kind == MapKind::Cube)
+        for (int face = 0; face < 6; ++face) addLayer(face, !frame.pointViews.faces[face].empty);
+    return passes;
+}
 
 nlohmann::json LightShadow::settingsJson() const {
     return {{"variant", toString(settings.variant)},
@@ -93,8 +117,7 @@ engine::ShadowView LightShadow::view() const {
     if (out.hasMap) {
         out.renderedThisFrame = !frame.cacheHit;
         out.mapResource = mapResource();
-        if (settings.variant == Variant::Woo) out.passes.push_back(firstLayerPass());
-        out.passes.push_back(depthPass());
+        out.passes = depthPasses();
     }
     return out;
 }

@@ -45,10 +45,14 @@ struct LightShadow {
     // state the visibility hook relies on (GL_COMPARE_REF_TO_TEXTURE, GL_LEQUAL).
     void ensureMap();
     // Graph names, keyed by the light instance (names may repeat or be empty): the map as
-    // imported, and the depth pass (woo: the peel pass; firstLayerPass() before it).
+    // imported, and per map layer (-1: the 2D map; 0-5: cube faces in GL order) the depth
+    // pass (woo: the peel pass) and woo's first layer and the pass drawing it.
     std::string mapResource() const;
-    std::string depthPass() const;
-    std::string firstLayerPass() const;
+    std::string depthPass(int layer) const;
+    std::string firstLayerPass(int layer) const;
+    std::string firstLayerResource(int layer) const;
+    // The passes that render the map this frame, in order.
+    std::vector<std::string> depthPasses() const;
     // The settings in effect, keyed as in extras.shadow.
     nlohmann::json settingsJson() const;
     nlohmann::json stats() const;

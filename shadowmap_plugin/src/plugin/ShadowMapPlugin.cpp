@@ -236,26 +236,26 @@ bool ShadowMapPlugin::planLight(LightShadow& light, const engine::Frame& frame,
     return true;
 }
 
-void ShadowMapPlugin::renderMap(LightShadow& light, const engine::Frame& frame,
-                                engine::PassContext& context, unsigned target, bool targetIsArray,
-                                const DepthPassStyle& style) {
-    LightShadowFrame& plan = light.frame;
-    const auto add = [&plan](const DepthDrawCounts& counts) {
-        plan.draws += counts.draws;
-        plan.triangles += counts.triangles;
-        plan.castersCulled += counts.castersCulled;
-    };
-    if (plan.kind == MapKind::Map2D) {
-        add(depth_->render(frame, context, target, targetIsArray ? 0 : -1, plan.view.viewProjection(), style));
-        return;
-    }
-    for (int face = 0; face < 6; ++face) {
-        const LightView& view = plan.pointViews.faces[face];
-        // A face that sees no receiver is cleared (lookups there must read "far") but
-        // draws nothing.
-        add(depth_->render(frame, context, target, face, view.viewProjection(), style, !view.empty));
-    }
+namespace {
+
+void addCounts(LightShadowFrame& plan, const DepthDrawCounts& counts) {
+    plan.draws += counts.draws;
+    plan.triangles += counts.triangles;
+    plan.castersCulled += counts.castersCulled;
 }
+
+// Woo's peel against the first layer: fragments within a step or two of it are that layer.
+DepthPassStyle peelStyle(const DepthPassStyle& style, const ShadowSettings& settings, unsigned firstLayer) {
+    DepthPassStyle peel = style;
+    peel.firstLayer = firstLayer;
+    const double step = depthStep(settings.depthFormat);
+    peel.peelEpsilon = static_cast<float>(settings.depthFormat == DepthFormat::D32F ? 4.0 * step : 2.0 * step);
+    // Reversed Z: relative, eight float steps of z1 (z1 * 2^-20).
+    if (settings.reversedZ) peel.peelEpsilon = std::ldexp(1.0f, -20);
+    return peel;
+}
+
+} // namespace
 
 void ShadowMapPlugin::addDepthPasses(LightShadow& light, engine::Frame& frame,
                                      engine::ResourceHandle map, std::uint64_t key) {
@@ -276,55 +276,69 @@ void ShadowMapPlugin::addDepthPasses(LightShadow& light, engine::Frame& frame,
         style.closedMeshes = &closedMeshes_;
         reportOpenCasters(light, frame);
     }
-    if (settings.variant != Variant::Woo) {
+    if (!cube) {
+        addLayerPasses(light, frame, map, -1, light.frame.view.viewProjection(), true, style, key);
+        return;
+    }
+    // A face that sees no receiver is cleared (lookups there must read "far") but draws nothing.
+    for (int face = 0; face < 6; ++face) {
+        const LightView& view = light.frame.pointViews.faces[face];
+        addLayerPasses(light, frame, map, face, view.viewProjection(), !view.empty, style, face == 5 ? key : 0);
+    }
+}
+
+void ShadowMapPlugin::addLayerPasses(LightShadow& light, engine::Frame& frame, engine::ResourceHandle map,
+                                     int layer, const glm::dmat4& viewProjection, bool drawCasters,
+                                     const DepthPassStyle& style, std::uint64_t keyWhenDone) {
+    // Only now does the map hold what the key says.
+    auto done = [&light, keyWhenDone] {
+        if (keyWhenDone) light.renderedKey = keyWhenDone;
+    };
+    if (light.settings.variant != Variant::Woo || !drawCasters) {
         frame.graph().addPass(
-            light.depthPass(),
-            [map, style](engine::PassBuilder& builder) {
-                (void)builder.write(map);
+            light.depthPass(layer),
+            [map, layer, style](engine::PassBuilder& builder) {
+                (void)builder.write(map, layer);
+                builder.setTargets(depthPassTargets(map, layer, style));
                 builder.setState(depthPassState(style));
             },
-            [this, &light, &frame, map, style, key](engine::PassContext& context) {
-                renderMap(light, frame, context, context.texture(map), false, style);
-                light.renderedKey = key;  // only now does the map hold what the key says
+            [this, &light, &frame, viewProjection, style, drawCasters, done](engine::PassContext& context) {
+                if (drawCasters) addCounts(light.frame, depth_->draw(frame, context, viewProjection, style));
+                done();
             });
         return;
     }
-    // Woo: the nearest layer first (a transient: one 2D layer, or one per cube face), then
-    // the midpoint pass peeling it into the light's map.
+    // Woo: the nearest layer first (a transient of the map's size), then the midpoint pass
+    // peeling it into this layer of the light's map. The same style (offset included) for
+    // both: the peel discards what lies within a depth step or two of z1, so both passes
+    // must rasterize the nearest surface to the same depth. An offset in the peel alone left
+    // the nearest surface behind z1, kept as a second layer: acne on 1.2% of the showcase
+    // sun's pixels (14.7% at 512).
     auto firstLayer = std::make_shared<engine::ResourceHandle>();
-    const engine::TextureDesc firstLayerDesc{settings.resolution, settings.resolution,
-                                             graphFormat(settings.depthFormat), cube ? 6 : 1, false};
+    const engine::TextureDesc firstLayerDesc{light.settings.resolution, light.settings.resolution,
+                                             graphFormat(light.settings.depthFormat)};
     frame.graph().addPass(
-        light.firstLayerPass(),
-        [&](engine::PassBuilder& builder) {
-            *firstLayer = builder.create("shadow_first_layer_" + std::to_string(light.slot), firstLayerDesc);
+        light.firstLayerPass(layer),
+        [&light, layer, style, firstLayer, firstLayerDesc](engine::PassBuilder& builder) {
+            *firstLayer = builder.create(light.firstLayerResource(layer), firstLayerDesc);
+            builder.setTargets(depthPassTargets(*firstLayer, -1, style));
             builder.setState(depthPassState(style));
         },
-        // The same style (offset included) as the peel: the peel discards what lies within
-        // a depth step or two of z1, so both passes must rasterize the nearest surface to
-        // the same depth. An offset in the peel alone left the nearest surface behind z1,
-        // kept as a second layer: acne on 1.2% of the showcase sun's pixels (14.7% at 512).
-        [this, &light, &frame, firstLayer, cube, style](engine::PassContext& context) {
-            renderMap(light, frame, context, context.texture(*firstLayer), cube, style);
+        [this, &light, &frame, viewProjection, style](engine::PassContext& context) {
+            addCounts(light.frame, depth_->draw(frame, context, viewProjection, style));
         });
     frame.graph().addPass(
-        light.depthPass(),
-        [map, firstLayer, style](engine::PassBuilder& builder) {
+        light.depthPass(layer),
+        [map, layer, firstLayer, style](engine::PassBuilder& builder) {
             builder.read(*firstLayer);
-            (void)builder.write(map);
+            (void)builder.write(map, layer);
+            builder.setTargets(depthPassTargets(map, layer, style));
             builder.setState(depthPassState(style));
         },
-        [this, &light, &frame, map, firstLayer, cube, style, key](engine::PassContext& context) {
-            DepthPassStyle peel = style;
-            peel.firstLayer = context.texture(*firstLayer);
-            peel.firstLayerIsArray = cube;
-            const double step = depthStep(light.settings.depthFormat);
-            peel.peelEpsilon = static_cast<float>(
-                light.settings.depthFormat == DepthFormat::D32F ? 4.0 * step : 2.0 * step);
-            // Reversed Z: relative, eight float steps of z1 (z1 * 2^-20).
-            if (light.settings.reversedZ) peel.peelEpsilon = std::ldexp(1.0f, -20);
-            renderMap(light, frame, context, context.texture(map), false, peel);
-            light.renderedKey = key;
+        [this, &light, &frame, viewProjection, firstLayer, style, done](engine::PassContext& context) {
+            const DepthPassStyle peel = peelStyle(style, light.settings, context.texture(*firstLayer));
+            addCounts(light.frame, depth_->draw(frame, context, viewProjection, peel));
+            done();
         });
 }
 

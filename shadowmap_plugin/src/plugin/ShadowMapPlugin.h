@@ -41,12 +41,15 @@ public:
 
 private:
     bool planLight(LightShadow& light, const engine::Frame& frame, const ShadowBounds& bounds);
-    // Adds the light's depth pass(es); the last one records `key` once it has run.
+    // Adds the light's depth passes, one per map layer (the 2D map, or each cube face; woo:
+    // two per layer); the last one records `key` once it has run.
     void addDepthPasses(LightShadow& light, engine::Frame& frame, engine::ResourceHandle map,
                         std::uint64_t key);
-    // Renders the light's views (one 2D view or six cube faces) into `target` with `style`.
-    void renderMap(LightShadow& light, const engine::Frame& frame, engine::PassContext& context,
-                   unsigned target, bool targetIsArray, const DepthPassStyle& style);
+    // The passes rendering one layer of the map (-1: the 2D map) from P_light * L^-1; without
+    // casters to draw, one pass that only clears it.
+    void addLayerPasses(LightShadow& light, engine::Frame& frame, engine::ResourceHandle map, int layer,
+                        const glm::dmat4& viewProjection, bool drawCasters, const DepthPassStyle& style,
+                        std::uint64_t keyWhenDone);
     void reportOpenCasters(LightShadow& light, const engine::Frame& frame);
     engine::LightVisibilityHook makeHook(const engine::Frame& frame);
     void warnOnce(const LightShadow& light, const std::string& message);
