@@ -2,8 +2,11 @@
 
 #include "ParetoFront.h"
 
+#include "shadowmap/ShadowSettings.h"
+
 #include <algorithm>
 #include <cstdio>
+#include <iterator>
 
 namespace shadowmap_bench {
 
@@ -23,8 +26,14 @@ std::string dataLabel(const std::string& text) {
     return out + "\"";
 }
 
-// Filled circle, square and triangle: standard, woo, backface.
-int pointType(const std::string& variant) { return variant == "woo" ? 5 : variant == "backface" ? 9 : 7; }
+// One gnuplot point shape per variant, in the order the settings API lists the variants
+// (standard, woo, backface, none: filled circle, square, triangle, diamond).
+int pointType(const std::string& variant) {
+    constexpr int kShapes[] = {7, 5, 9, 13};
+    const std::vector<std::string>& variants = shadowmap::settingKey("variant").choices;
+    const std::size_t index = std::find(variants.begin(), variants.end(), variant) - variants.begin();
+    return kShapes[std::min(index, std::size(kShapes) - 1)];
+}
 
 std::string dataBlock(const std::string& name, const std::vector<BenchRow>& rows) {
     std::string text = "$";
@@ -95,7 +104,7 @@ std::string timeErrorPlotScript(const std::vector<BenchRow>& rows) {
                     " notitle, \\\n  ";
         }
         // Legend entries for the point shapes of the variants measured (no data: NaN).
-        for (const char* variant : {"standard", "woo", "backface"})
+        for (const std::string& variant : shadowmap::settingKey("variant").choices)
             if (std::any_of(rows.begin(), rows.end(), [&](const BenchRow& row) { return row.setting.variant == variant; }))
                 plot += "NaN with points pt " + std::to_string(pointType(variant)) + " lc 'black' title '" + variant + "', ";
         script += plot.substr(0, plot.size() - 2) + "\n";  // drop the last ", "
