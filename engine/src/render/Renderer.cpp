@@ -105,6 +105,7 @@ FrameResult Renderer::renderFrame(const FrameRequest& request) {
         options.afterPass = [](const std::string& pass) { gl::checkGlError(("pass \"" + pass + "\"").c_str()); };
     }
     graph.execute(pool_, options);
+    pool_.endFrame();  // textures of an old setting or size are freed, not kept forever
     PassState afterFrame;  // tools drawing after the frame start from the defaults too
     afterFrame.viewportWidth = width;
     afterFrame.viewportHeight = height;
