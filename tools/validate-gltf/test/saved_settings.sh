@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # saved_settings.sh VIEW RENDER COMPARE CONTENT NODE VALIDATOR_DIR: engine-view's
-# --save-settings output, as .gltf and as .glb, after settings changes on every light, has 0
-# glTF-Validator errors.
+# --save-settings output after settings changes on every light has 0 glTF-Validator errors.
+# (The saved file keeps the loaded one's container; content/ has no .glb to start from.)
 here=$(cd "$(dirname "$0")" && pwd)
 node=$5 validator=$6
 # engine-view's test harness: Xvfb, a scratch copy of the showcase, run_view.
@@ -17,5 +17,4 @@ save
 quit
 SCRIPT
 run_view script.txt --save-settings saved.gltf > /dev/null
-run_view script.txt --save-settings saved.glb > /dev/null
-"$node" "$here/../validate.mjs" --validator "$validator" saved.gltf saved.glb
+"$node" "$here/../validate.mjs" --validator "$validator" saved.gltf
