@@ -109,13 +109,11 @@ EglDisplay openDisplay() {
     else
         note("surfaceless platform not offered (EGL_MESA_platform_surfaceless)");
 
-    if (platformBase && hasExtension(client, "EGL_EXT_platform_device") &&
-        hasExtension(client, "EGL_EXT_device_enumeration")) {
-        EGLDeviceEXT device = nullptr;
-        EGLint count = 0;
-        if (eglQueryDevicesEXT(1, &device, &count) && count > 0)
+    if (canEnumerateDevices()) {
+        const std::vector<EGLDeviceEXT> devices = queryDevices();
+        if (!devices.empty())
             candidates.push_back(
-                {"device", eglGetPlatformDisplayEXT(EGL_PLATFORM_DEVICE_EXT, device, nullptr)});
+                {"device", eglGetPlatformDisplayEXT(EGL_PLATFORM_DEVICE_EXT, devices.front(), nullptr)});
         else
             note("device platform: no EGL device");
     }
