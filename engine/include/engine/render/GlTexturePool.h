@@ -24,11 +24,11 @@ public:
     void endFrame();
     std::size_t textureCount() const { return textures_.size(); }
 
-    // Long enough that a description used every frame or every few frames (a woo light's
-    // first layer, drawn only on the frames its map is re-rendered) keeps its texture while
-    // it is in use; short enough that a settings change frees the old textures within a
-    // fraction of a second at interactive rates. Re-creating one costs an allocation, far
-    // less than the pass that fills it.
+    // Long enough that a description used every frame, or with gaps of a few frames, keeps
+    // its texture; short enough that a settings change frees the old textures within a
+    // fraction of a second at interactive rates. A texture idle for longer (a woo light's
+    // first layer while the light stands still and its map is cached) is made again when
+    // needed: an allocation, far less than the pass that fills it.
     static constexpr std::uint64_t kIdleFramesBeforeFree = 8;
 
 private:
