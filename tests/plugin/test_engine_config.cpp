@@ -22,7 +22,8 @@ TEST(EngineConfig, ParsesPluginsSettingsAndRenderer) {
     const auto config = engine::parseEngineConfig(
         R"({"plugin_dirs":["plugins"],"plugins":[{"library":"shadowmap_plugin",
             "settings":{"variant":"woo","resolution":1024}}],
-            "renderer":{"ambient":[0.1,0.2,0.3],"shade_cache":false,"check_gl_errors":true}})",
+            "renderer":{"ambient":[0.1,0.2,0.3],"shade_cache":false,"unrolled_light_sum":false,
+                        "check_gl_errors":true}})",
         "my/engine.json");
     ASSERT_EQ(config.plugins.size(), 1u);
     EXPECT_EQ(config.plugins[0].library, "shadowmap_plugin");
@@ -32,7 +33,9 @@ TEST(EngineConfig, ParsesPluginsSettingsAndRenderer) {
     EXPECT_FLOAT_EQ(config.renderer.ambient.y, 0.2f);
     EXPECT_FALSE(config.renderer.shadeCache);
     EXPECT_TRUE(config.renderer.checkGlErrors);
+    EXPECT_FALSE(config.renderer.unrolledLightSum);
     EXPECT_TRUE(engine::parseEngineConfig("{}", "my/engine.json").renderer.shadeCache);
+    EXPECT_TRUE(engine::parseEngineConfig("{}", "my/engine.json").renderer.unrolledLightSum);
 }
 
 TEST(EngineConfig, BadInputNamesFileAndKey) {
@@ -48,6 +51,8 @@ TEST(EngineConfig, BadInputNamesFileAndKey) {
     EXPECT_NE(configError(R"({"renderer":{"ambient":[1,2]}})").find("renderer.ambient"),
               std::string::npos);
     EXPECT_NE(configError(R"({"renderer":{"shade_cache":"yes"}})").find("renderer.shade_cache"),
+              std::string::npos);
+    EXPECT_NE(configError(R"({"renderer":{"unrolled_light_sum":0}})").find("renderer.unrolled_light_sum"),
               std::string::npos);
     EXPECT_NE(configError(R"({"renderer":{"check_gl_errors":1}})").find("renderer.check_gl_errors"),
               std::string::npos);

@@ -5,6 +5,7 @@
 // writer (tools/fuzz/make_seeds.cpp) build their files with it.
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
@@ -73,6 +74,22 @@ struct GltfBuilder {
     }
     int addFloats(const std::vector<float>& values, std::size_t components, const char* type) {
         return addAccessor(addView(values.data(), values.size() * sizeof(float)), kFloat, values.size() / components, type);
+    }
+    // POSITION data (x y z per vertex) with the min and max glTF requires on it.
+    int addPositions(const std::vector<float>& xyz) {
+        const int accessor = addFloats(xyz, 3, "VEC3");
+        setBounds(accessor, xyz);
+        return accessor;
+    }
+    // Per-component min and max of x y z values on a VEC3 accessor.
+    void setBounds(int accessor, const std::vector<float>& xyz) {
+        std::vector<float> low(xyz.begin(), xyz.begin() + 3), high = low;
+        for (std::size_t i = 0; i < xyz.size(); ++i) {
+            low[i % 3] = std::min(low[i % 3], xyz[i]);
+            high[i % 3] = std::max(high[i % 3], xyz[i]);
+        }
+        doc["accessors"][accessor]["min"] = low;
+        doc["accessors"][accessor]["max"] = high;
     }
     template <typename Index>
     int addIndices(const std::vector<Index>& indices) {

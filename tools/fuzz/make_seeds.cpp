@@ -50,7 +50,7 @@ const std::vector<float> kQuadPositions = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0};
 // One indexed triangle: the smallest scene that loads and draws.
 GltfBuilder triangle() {
     GltfBuilder b = seedBuilder();
-    const int positions = b.addFloats({0, 0, 0, 1, 0, 0, 0, 1, 0}, 3, "VEC3");
+    const int positions = b.addPositions({0, 0, 0, 1, 0, 0, 0, 1, 0});
     const int indices = b.addIndices(std::vector<std::uint8_t>{0, 1, 2});
     b.addMesh({{"attributes", {{"POSITION", positions}}}, {"indices", indices}});
     b.addNode({{"mesh", 0}});
@@ -62,10 +62,11 @@ GltfBuilder triangle() {
 // JPEG), a perspective camera on a TRS node.
 GltfBuilder texturedQuad(bool jpeg) {
     GltfBuilder b = seedBuilder();
-    const int positions = b.addFloats(kQuadPositions, 3, "VEC3");
+    const int positions = b.addPositions(kQuadPositions);
     const int normals = b.addFloats({0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1}, 3, "VEC3");
-    const std::vector<std::uint8_t> uv = {0, 255, 255, 255, 255, 0, 0, 0};
-    const int uvView = b.addView(uv.data(), uv.size());
+    // Two bytes of padding per vertex: glTF aligns every vertex attribute element to 4 bytes.
+    const std::vector<std::uint8_t> uv = {0, 255, 0, 0, 255, 255, 0, 0, 255, 0, 0, 0, 0, 0, 0, 0};
+    const int uvView = b.addView(uv.data(), uv.size(), /*stride=*/4);
     const int texcoords = b.addAccessor(uvView, kUnsignedByte, 4, "VEC2", /*normalized=*/true);
     const int indices = b.addIndices(std::vector<std::uint16_t>{0, 1, 2, 0, 2, 3});
     const std::vector<std::uint8_t> image = encodeImage(jpeg);
@@ -97,15 +98,16 @@ GltfBuilder texturedQuad(bool jpeg) {
 // from a file URI and one from a data URI, a second scene.
 GltfBuilder lightsAndHierarchy() {
     GltfBuilder b = seedBuilder();
-    const int positions = b.addFloats(kQuadPositions, 3, "VEC3");
+    const int positions = b.addPositions(kQuadPositions);
+    const int texcoords = b.addFloats({0, 0, 1, 0, 1, 1, 0, 1}, 2, "VEC2");  // the texture needs them
     const int indices = b.addIndices(std::vector<std::uint32_t>{0, 1, 2, 2, 3, 0});
     b.add("images", {{"uri", "tex.png"}, {"name", "file"}});
     b.add("images", {{"uri", "data:image/png;base64," + base64(encodeImage(false))}});
     b.add("textures", {{"source", 0}});
     b.add("textures", {{"source", 1}});
     b.add("materials", {{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 1}}}}}, {"alphaMode", "BLEND"}});
-    b.add("meshes", {{"primitives", {{{"attributes", {{"POSITION", positions}}}, {"indices", indices},
-                                      {"material", 0}}}}});
+    b.add("meshes", {{"primitives", {{{"attributes", {{"POSITION", positions}, {"TEXCOORD_0", texcoords}}},
+                                      {"indices", indices}, {"material", 0}}}}});
     b.doc["extensionsUsed"] = {"KHR_lights_punctual"};
     b.doc["extensions"]["KHR_lights_punctual"]["lights"] = {
         {{"name", "spot"}, {"type", "spot"}, {"color", {1, 0.9, 0.8}}, {"intensity", 100}, {"range", 20},
@@ -139,6 +141,7 @@ GltfBuilder primitiveModes() {
                                             1, 1, 0, 0, 0, 1, 0, 2, 0, 0, 0, 1};
     const int view = b.addView(interleaved.data(), interleaved.size() * sizeof(float), 24);
     const int positions = b.addAccessor(view, kFloat, 5, "VEC3");
+    b.setBounds(positions, {0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0, 0, 2, 0});
     const int normals = b.add("accessors", {{"bufferView", view}, {"byteOffset", 12}, {"componentType", kFloat},
                                             {"count", 5}, {"type", "VEC3"}});
     const int strip = b.addIndices(std::vector<std::uint16_t>{0, 1, 2, 3, 4});
@@ -158,7 +161,7 @@ GltfBuilder primitiveModes() {
 // on primitives and on a light, and a BLEND material's shadow_alpha_cutoff.
 GltfBuilder texturesColorsShadows() {
     GltfBuilder b = seedBuilder();
-    const int positions = b.addFloats(kQuadPositions, 3, "VEC3");
+    const int positions = b.addPositions(kQuadPositions);
     const std::vector<std::uint16_t> uv = {0, 0, 65535, 0, 65535, 65535, 0, 65535};
     const int uv0 = b.addAccessor(b.addView(uv.data(), uv.size() * 2), kUnsignedShort, 4, "VEC2", true);
     const int uv1 = b.addFloats({0, 0, 2, 0, 2, 2, 0, 2}, 2, "VEC2");
@@ -196,6 +199,7 @@ GltfBuilder texturesColorsShadows() {
 GltfBuilder zeroAccessor() {
     GltfBuilder b = triangle();
     b.doc["accessors"][0].erase("bufferView");
+    b.setBounds(0, {0, 0, 0});  // what the accessor now holds
     return b;
 }
 

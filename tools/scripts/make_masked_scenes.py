@@ -29,7 +29,7 @@ Minification (mipmaps) blurs the alpha and moves the iso-line further; that is w
 depth pass sees when a map texel covers several texture texels, and part of what the bench
 measures.
 
-Run from anywhere: python3 tools/scripts/make_masked_scenes.py
+Run from anywhere: python3 tools/scripts/make_masked_scenes.py [OUT_DIR]
 """
 import math
 import os
@@ -306,9 +306,11 @@ def canopy_scene(masked):
 
 
 def main():
+    # An optional output directory (the validation test writes to a scratch one).
+    out_dir = sys.argv[1] if len(sys.argv) > 1 else OUT_DIR
     for name, builder in [("masked_fence", fence_scene(True)), ("opaque_fence", fence_scene(False)),
                           ("masked_canopy", canopy_scene(True)), ("opaque_canopy", canopy_scene(False))]:
-        builder.write(os.path.join(OUT_DIR, name + ".gltf"), name + ".bin")
+        builder.write(os.path.join(out_dir, name + ".gltf"), name + ".bin")
     print("leaf twin: %d-gon, area matched; differs from the filtered mask in %.2f%% of the leaf's area"
           % (LEAF_POLYGON_SIDES, 100.0 * outline_mismatch()))
 

@@ -4,7 +4,7 @@
 A closed floor slab, a box resting on it (contact), an icosphere and a torus hovering,
 a thin plank on two posts (a thin caster), and a double-sided open canopy (an open
 caster), lit by one spot, one directional and one point light, each shadowed.
-Run from the repository root: python3 tools/scripts/make_showcase.py
+Run from the repository root: python3 tools/scripts/make_showcase.py [OUT_DIR]
 """
 import math
 import os
@@ -15,7 +15,8 @@ from gltf_builder import GltfBuilder, box, icosphere, quad, torus  # noqa: E402
 
 
 def main():
-    out_dir = os.path.join(os.path.dirname(__file__), "..", "..", "content", "scenes")
+    # An optional output directory (the validation test writes to a scratch one).
+    out_dir = sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file__), "..", "..", "content", "scenes")
     g = GltfBuilder()
     floor_mat = g.material("floor", (0.75, 0.75, 0.72), roughness=0.9)
     red = g.material("red", (0.8, 0.15, 0.1), roughness=0.4)

@@ -30,7 +30,7 @@ PluginConfig parsePlugin(const nlohmann::json& entry, const std::string& file,
 }
 
 RendererConfig parseRenderer(const nlohmann::json& node, const std::string& file) {
-    json::requireKnownKeys(node, {"ambient", "clear_color", "shade_cache", "check_gl_errors"}, file,
+    json::requireKnownKeys(node, {"ambient", "clear_color", "shade_cache", "unrolled_light_sum", "check_gl_errors"}, file,
                            "renderer");
     RendererConfig renderer;
     if (node.contains("ambient"))
@@ -40,6 +40,9 @@ RendererConfig parseRenderer(const nlohmann::json& node, const std::string& file
             glm::vec3(json::readVec3(node["clear_color"], file, "renderer.clear_color"));
     if (node.contains("shade_cache"))
         renderer.shadeCache = json::readBool(node["shade_cache"], file, "renderer.shade_cache");
+    if (node.contains("unrolled_light_sum"))
+        renderer.unrolledLightSum =
+            json::readBool(node["unrolled_light_sum"], file, "renderer.unrolled_light_sum");
     if (node.contains("check_gl_errors"))
         renderer.checkGlErrors = json::readBool(node["check_gl_errors"], file, "renderer.check_gl_errors");
     return renderer;

@@ -8,8 +8,14 @@
 
 #include <epoxy/egl.h>
 
+#include <cstdlib>
 #include <cstring>
+#include <iostream>
 #include <vector>
+
+#ifndef EGL_DRM_RENDER_NODE_FILE_EXT
+#define EGL_DRM_RENDER_NODE_FILE_EXT 0x3377  // EGL_EXT_device_drm_render_node (newer headers)
+#endif
 
 namespace engine {
 
@@ -52,6 +58,23 @@ bool hasExtension(const char* extensions, const char* name) {
     return false;
 }
 
+bool canEnumerateDevices() {
+    const char* client = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
+    return hasExtension(client, "EGL_EXT_platform_base") &&
+           hasExtension(client, "EGL_EXT_platform_device") &&
+           hasExtension(client, "EGL_EXT_device_enumeration");
+}
+
+std::vector<EGLDeviceEXT> queryDevices() {
+    if (!canEnumerateDevices()) return {};
+    EGLint count = 0;
+    if (!eglQueryDevicesEXT(0, nullptr, &count) || count <= 0) return {};
+    std::vector<EGLDeviceEXT> devices(static_cast<std::size_t>(count));
+    if (!eglQueryDevicesEXT(count, devices.data(), &count)) return {};
+    devices.resize(static_cast<std::size_t>(count));
+    return devices;
+}
+
 // An initialised EGLDisplay. It lives as long as the process and is never terminated:
 // - EGL displays are process-wide (the same native display gives the same handle), so
 //   eglTerminate would also destroy contexts that other code in the process made on it;
@@ -86,13 +109,11 @@ EglDisplay openDisplay() {
     else
         note("surfaceless platform not offered (EGL_MESA_platform_surfaceless)");
 
-    if (platformBase && hasExtension(client, "EGL_EXT_platform_device") &&
-        hasExtension(client, "EGL_EXT_device_enumeration")) {
-        EGLDeviceEXT device = nullptr;
-        EGLint count = 0;
-        if (eglQueryDevicesEXT(1, &device, &count) && count > 0)
+    if (canEnumerateDevices()) {
+        const std::vector<EGLDeviceEXT> devices = queryDevices();
+        if (!devices.empty())
             candidates.push_back(
-                {"device", eglGetPlatformDisplayEXT(EGL_PLATFORM_DEVICE_EXT, device, nullptr)});
+                {"device", eglGetPlatformDisplayEXT(EGL_PLATFORM_DEVICE_EXT, devices.front(), nullptr)});
         else
             note("device platform: no EGL device");
     }
@@ -121,10 +142,53 @@ EglDisplay openDisplay() {
     throw ContextError("EGL: no surfaceless display: " + reasons);
 }
 
+// The display of device `choice` (ENGINE_EGL_DEVICE, a decimal index into listEglDevices()).
+EglDisplay openChosenDevice(const std::string& choice) {
+    const std::vector<EglDeviceInfo> infos = listEglDevices();
+    const std::string prefix = "EGL: ENGINE_EGL_DEVICE=" + choice + ": ";
+    if (infos.empty())
+        throw ContextError(prefix + (canEnumerateDevices()
+                                         ? "EGL lists no device"
+                                         : "this EGL cannot enumerate devices (EGL_EXT_device_enumeration)"));
+    char* end = nullptr;
+    const long index = std::strtol(choice.c_str(), &end, 10);
+    if (*end != '\0' || index < 0 || index >= static_cast<long>(infos.size())) {
+        std::string known;
+        for (const EglDeviceInfo& info : infos)
+            known += (known.empty() ? "" : ", ") + std::to_string(info.index) + " = " + info.name;
+        throw ContextError(prefix + "no such device (the devices: " + known + "; or `list`)");
+    }
+    const EGLDeviceEXT device = queryDevices().at(static_cast<std::size_t>(index));
+    const std::string what = "ENGINE_EGL_DEVICE=" + choice + " (" + infos[index].name + ")";
+    const EGLDisplay display = eglGetPlatformDisplayEXT(EGL_PLATFORM_DEVICE_EXT, device, nullptr);
+    if (display == EGL_NO_DISPLAY)
+        throw ContextError("EGL: " + what + ": no display (" + lastEglError() + ")");
+    EGLint major = 0, minor = 0;
+    if (!eglInitialize(display, &major, &minor))
+        throw ContextError("EGL: " + what + ": eglInitialize failed (" + lastEglError() + ")");
+    if (!hasExtension(eglQueryString(display, EGL_EXTENSIONS), "EGL_KHR_surfaceless_context"))
+        throw ContextError("EGL: " + what + ": no EGL_KHR_surfaceless_context");
+    return {display, "device " + std::to_string(index) + " (" + infos[index].name + ")"};
+}
+
+// ENGINE_EGL_DEVICE (createEglContext in GlContext.h): the default display, or a chosen device.
+EglDisplay openConfiguredDisplay() {
+    const char* variable = std::getenv("ENGINE_EGL_DEVICE");
+    const std::string choice = variable ? variable : "";
+    if (choice.empty()) return openDisplay();
+    if (choice == "list") {
+        const std::vector<EglDeviceInfo> devices = listEglDevices();
+        std::cerr << (devices.empty() ? std::string("EGL devices: none listed\n") : describeEglDevices(devices))
+                  << std::flush;
+        return openDisplay();
+    }
+    return openChosenDevice(choice);
+}
+
 // Opened on first use. If opening throws, the next call tries again (static initialisation
 // is retried after an exception, and is thread-safe).
 const EglDisplay& processDisplay() {
-    static const EglDisplay display = openDisplay();
+    static const EglDisplay display = openConfiguredDisplay();
     return display;
 }
 
@@ -174,6 +238,34 @@ std::string describe(const ContextOptions& options) {
 }
 
 } // namespace
+
+std::vector<EglDeviceInfo> listEglDevices() {
+    std::vector<EglDeviceInfo> infos;
+    const std::vector<EGLDeviceEXT> devices = queryDevices();
+    for (std::size_t i = 0; i < devices.size(); ++i) {
+        EglDeviceInfo info;
+        info.index = static_cast<int>(i);
+        const char* extensions = eglQueryDeviceStringEXT(devices[i], EGL_EXTENSIONS);
+        info.extensions = extensions ? extensions : "";
+        info.software = hasExtension(extensions, "EGL_MESA_device_software");
+        const char* node = nullptr;
+        if (hasExtension(extensions, "EGL_EXT_device_drm_render_node"))
+            node = eglQueryDeviceStringEXT(devices[i], EGL_DRM_RENDER_NODE_FILE_EXT);
+        if (!node && hasExtension(extensions, "EGL_EXT_device_drm"))
+            node = eglQueryDeviceStringEXT(devices[i], EGL_DRM_DEVICE_FILE_EXT);
+        info.name = node ? node : info.software ? "software" : "unnamed";
+        infos.push_back(std::move(info));
+    }
+    return infos;
+}
+
+std::string describeEglDevices(const std::vector<EglDeviceInfo>& devices) {
+    std::string text;
+    for (const EglDeviceInfo& device : devices)
+        text += "EGL device " + std::to_string(device.index) + ": " + device.name +
+                (device.software ? " [software]" : "") + " (" + device.extensions + ")\n";
+    return text;
+}
 
 std::unique_ptr<GlContext> createEglContext(const ContextOptions& options) {
     const EglDisplay& display = processDisplay();

@@ -24,6 +24,7 @@ std::uint32_t GlTexturePool::acquire(const TextureDesc& desc) {
     for (Entry& entry : textures_)
         if (!entry.inUse && entry.desc == desc) {
             entry.inUse = true;
+            entry.lastAcquired = frame_;
             return entry.texture.id();
         }
     const GLenum format = internalFormatFor(desc.format);
@@ -31,7 +32,7 @@ std::uint32_t GlTexturePool::acquire(const TextureDesc& desc) {
                 desc.cube        ? gl::Texture::createCube(format, desc.width)
                 : desc.layers > 1 ? gl::Texture::create2DArray(format, desc.width, desc.height, desc.layers)
                                   : gl::Texture::create2D(format, desc.width, desc.height),
-                true};
+                true, frame_};
     // Complete for sampling without mipmaps; shadow lookups override this with samplers.
     entry.texture.setParameter(GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     entry.texture.setParameter(GL_TEXTURE_MAG_FILTER, GL_NEAREST);
@@ -50,6 +51,15 @@ void GlTexturePool::release(std::uint32_t handle, const TextureDesc& desc) {
             return;
         }
     assert(false && "released a texture the pool does not own");
+}
+
+void GlTexturePool::endFrame() {
+    // Deleting a texture also drops the framebuffers that attach it (gl::Texture's deleter,
+    // FramebufferCache.h), so the framebuffer caches shrink with the pool.
+    std::erase_if(textures_, [this](const Entry& entry) {
+        return !entry.inUse && frame_ - entry.lastAcquired >= kIdleFramesBeforeFree;
+    });
+    ++frame_;
 }
 
 } // namespace engine

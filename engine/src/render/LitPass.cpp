@@ -91,15 +91,22 @@ std::vector<unsigned> variantsInUse(const Scene& scene, const SceneGpu& gpu) {
 }
 
 // lit.frag's light defines: how many lights the pass shades, and FOR_EACH_LIGHT(F)
-// expanding to F(slot, type code) for each of them.
-std::string lightDefines(const Scene& scene, int lightCount) {
+// expanding to F(slot, type code) for each of them, unrolled with literal arguments, or
+// (RendererConfig::unrolledLightSum off) as one loop reading the types from a constant array.
+std::string lightDefines(const Scene& scene, int lightCount, bool unrolled) {
     std::string defines = "#define LIGHT_COUNT " + std::to_string(lightCount) + "\n";
     if (lightCount == 0) return defines;
-    defines += "#define FOR_EACH_LIGHT(F)";
+    std::string types;
     for (int slot = 0; slot < lightCount; ++slot) {
         const Light& light = scene.lights[scene.lightInstances[slot].light];
-        defines += " F(" + std::to_string(slot) + ", " + std::to_string(lightTypeCode(light.type)) + ")";
+        const std::string type = std::to_string(lightTypeCode(light.type));
+        types += (slot ? ", " : "") + type;
+        if (unrolled) defines += (slot ? " F(" : "#define FOR_EACH_LIGHT(F) F(") + std::to_string(slot) + ", " + type + ")";
     }
+    if (!unrolled)
+        defines += "const int kLightTypes[LIGHT_COUNT] = int[](" + types + ");\n"
+                   "#define FOR_EACH_LIGHT(F) for (int lightSlot = 0; lightSlot < LIGHT_COUNT; ++lightSlot) "
+                   "{ F(lightSlot, kLightTypes[lightSlot]) }";
     defines += "\n";
     return defines;
 }
@@ -220,7 +227,7 @@ void LitPass::addPass(Frame& frame, const std::string& name, ResourceHandle targ
     const LightVisibilityHook* shading = hook && evaluatesHook ? &*hook : nullptr;
     // The material variants the scene's primitives need.
     Variants programs{};
-    const std::string lights = lightDefines(frame.scene(), lightCount);
+    const std::string lights = lightDefines(frame.scene(), lightCount, config_.unrolledLightSum);
     for (const unsigned variant : variantsInUse(frame.scene(), frame.gpu()))
         programs[variant] = &programFor(shading, lights, output, loadShadesGlsl, variant);
     std::vector<float> dimming(kMaxLights, 0.0f);

@@ -109,6 +109,7 @@ FrameResult Renderer::renderFrame(const FrameRequest& request) {
     }
     graph.execute(pool_, options);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    pool_.endFrame();  // textures of an old setting or size are freed, not kept forever
     PassState afterFrame;  // tools drawing after the frame start from the defaults too
     afterFrame.viewportWidth = width;
     afterFrame.viewportHeight = height;

@@ -4,7 +4,8 @@
 //   "plugin_dirs": ["relative/or/absolute/dir", ...],     optional; relative to the config
 //   "plugins": [ {"library": "shadowmap_plugin", "settings": {...}} ],
 //   "renderer": {"ambient": [r,g,b], "clear_color": [r,g,b],          optional
-//                "shade_cache": true, "check_gl_errors": false}
+//                "shade_cache": true, "unrolled_light_sum": true,
+//                "check_gl_errors": false}
 // }
 // Unknown keys are errors (a typo must not silently change nothing). Plugins are searched
 // only in plugin_dirs and then in the build's plugin folder (ENGINE_DEFAULT_PLUGIN_DIR).
@@ -28,6 +29,11 @@ struct RendererConfig {
     // Reuse a light's per-pixel shade while camera, geometry and light are unchanged
     // (ShadeCache.h); off: every frame asks the visibility hook for every pixel.
     bool shadeCache = true;
+    // The lit shader sums the lights term by term, each with literal slot and light type;
+    // off: one loop over the lights with their types in a constant array. Unrolled is what
+    // llvmpipe runs fastest (lit.frag's header has the numbers); a GPU may prefer the loop
+    // (one shorter program per light count): measure there with this switch.
+    bool unrolledLightSum = true;
     // glGetError after every pass, and a GlError naming the pass whose commands raised the
     // flag. GL reports errors late and anonymously, so without it a bad call shows up, if
     // ever, far from its cause. On by default in builds without NDEBUG (Debug); it costs a

@@ -10,6 +10,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace engine {
 
@@ -53,7 +54,27 @@ public:
 
 // Headless: EGL with no surface at all (Mesa surfaceless platform, else the device
 // platform, else the default display). Throws ContextError naming the step that failed.
+//
+// The environment variable ENGINE_EGL_DEVICE chooses the device, once per process (the
+// display is opened on the first call):
+//   unset or empty  the default above (Mesa llvmpipe on a machine without a GPU driver)
+//   N               device N of listEglDevices(), through EGL_EXT_platform_device; a bad
+//                   index or a device that cannot give a surfaceless context is a
+//                   ContextError naming the devices there are
+//   list            writes listEglDevices() to stderr, then opens the default
 std::unique_ptr<GlContext> createEglContext(const ContextOptions& options = {});
+
+// An EGL device (EGL_EXT_device_enumeration), as ENGINE_EGL_DEVICE names it.
+struct EglDeviceInfo {
+    int index = 0;
+    std::string name;        // the DRM render node or device file, or "software"
+    bool software = false;   // EGL_MESA_device_software: a CPU rasterizer (llvmpipe)
+    std::string extensions;  // the device's EGL extensions
+};
+// Every EGL device in EGL's order; empty when EGL cannot enumerate devices.
+std::vector<EglDeviceInfo> listEglDevices();
+// One line per device: "EGL device N: NAME [software] (EXTENSIONS)".
+std::string describeEglDevices(const std::vector<EglDeviceInfo>& devices);
 
 // A GLFW window (default 1280×720) with a GL context; core profiles are forward compatible.
 // Throws ContextError with GLFW's own description on failure (e.g. no display).

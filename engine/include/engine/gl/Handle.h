@@ -11,6 +11,10 @@
 //
 // GL names belong to a context: an owner deletes its name in whatever context is current
 // when it dies. Destroy owners while their context is current (or one sharing with it).
+//
+// Every owned name is counted while it is owned (LiveObjects.h), for soaks and leak tests.
+#include "engine/gl/LiveObjects.h"
+
 #include <epoxy/gl.h>
 
 #include <string_view>
@@ -57,6 +61,7 @@ public:
 
     // Gives up ownership: returns the name, which the caller must now delete; *this is empty.
     [[nodiscard]] GLuint release() noexcept {
+        if (name_ != 0 && owned_) detail::countOwnedObjects(Traits::labelNamespace, -1);
         owned_ = false;
         info_ = Info{};
         return std::exchange(name_, 0u);
@@ -64,7 +69,10 @@ public:
 
     // Deletes the name (if owned) and leaves *this empty.
     void reset() noexcept {
-        if (name_ != 0 && owned_) Traits::destroy(name_);
+        if (name_ != 0 && owned_) {
+            Traits::destroy(name_);
+            detail::countOwnedObjects(Traits::labelNamespace, -1);
+        }
         name_ = 0;
         owned_ = false;
         info_ = Info{};
@@ -78,7 +86,9 @@ public:
 
 protected:
     Handle(GLuint name, Ownership ownership, Info info)
-        : name_(name), owned_(ownership == Ownership::Adopt), info_(std::move(info)) {}
+        : name_(name), owned_(ownership == Ownership::Adopt), info_(std::move(info)) {
+        if (name_ != 0 && owned_) detail::countOwnedObjects(Traits::labelNamespace, +1);
+    }
 
     const Info& info() const noexcept { return info_; }
     Info& info() noexcept { return info_; }
