@@ -208,11 +208,27 @@ TEST(ViewerState, KeysCycleTheSelectedLightsSettings) {
     state.toggleFilter();
     state.cycleDepthFormat();  // d24 -> d32f
     const nlohmann::json saved = state.savedShadow(1);
-    EXPECT_EQ(saved, nlohmann::json({{"variant", "standard"}, {"resolution", 512}, {"depth_format", "d32f"},
+    // The variant was never chosen for this light: it stays the config's.
+    EXPECT_EQ(saved, nlohmann::json({{"resolution", 512}, {"depth_format", "d32f"},
                                      {"filter", "nearest"}, {"dimming", 0.55}, {"near_plane", 0.5}}));
     EXPECT_TRUE(state.select("key"));
     EXPECT_FALSE(state.select("moon"));
     EXPECT_EQ(state.selected(), 0);
+}
+
+TEST(ViewerState, SavesOnlyWhatDiffersFromTheDefaults) {
+    // A light the file gave no settings: what the viewer set back to the defaults' value
+    // (the config's resolution, the built-in dimming and depth format) is left out, so a
+    // later config change still reaches it; the file's own keys stay as they are now.
+    engine::Scene scene = twoLights();
+    ViewerState state(scene, {{"variant", "standard"}, {"resolution", 1024}, {"cache_maps", true}});
+    state.set(0, "variant", "woo");
+    state.set(0, "resolution", 1024);
+    state.set(0, "dimming", 0.4);
+    state.set(0, "depth_format", "d24");
+    EXPECT_EQ(state.savedShadow(0), nlohmann::json({{"variant", "woo"}}));
+    state.set(1, "resolution", 1024);  // the file's key, now equal to the config's: kept
+    EXPECT_EQ(state.savedShadow(1), nlohmann::json({{"near_plane", 0.5}, {"resolution", 1024}}));
 }
 
 TEST(ViewerState, KeysCycleThroughWhatThePluginAccepts) {
