@@ -1,5 +1,6 @@
 // engine-view without a window: saving settings in place (every other byte kept), the
 // script grammar and its errors, and the per-light edits the keys make.
+#include "DepthImage.h"
 #include "JsonSpans.h"
 #include "OverlayText.h"
 #include "SaveSettings.h"
@@ -281,3 +282,28 @@ TEST(OverlayText, SaysWhereEachLightsShadeCameFrom) {
 }
 
 } // namespace engine_view
+
+// The cube strip's face labels (engine-render --shadow-map, the depth view): each face
+// carries its own name in its top-left corner, black on white, and nothing else changes but
+// the one-pixel seam between faces.
+TEST(DepthImage, CubeFacesAreLabelledInTheirCorners) {
+    constexpr int kFace = 64, kWidth = 6 * kFace, kHeight = 64;
+    std::vector<std::uint8_t> gray(kWidth * kHeight, 128);
+    labelCubeFaces(gray, kWidth, kHeight, kFace);
+    std::vector<std::vector<std::uint8_t>> corners;
+    for (int face = 0; face < 6; ++face) {
+        std::vector<std::uint8_t> corner;
+        int black = 0;
+        for (int y = 0; y < 12; ++y)
+            for (int x = 1; x < 20; ++x) {
+                corner.push_back(gray[y * kWidth + face * kFace + x]);
+                black += corner.back() == 0;
+            }
+        EXPECT_GT(black, 8) << kCubeFaceNames[face];  // a glyph stroke is 1-3 pixels: 2 glyphs have more
+        for (const std::vector<std::uint8_t>& other : corners) EXPECT_NE(corner, other) << kCubeFaceNames[face];
+        corners.push_back(corner);
+        // Below the label the depths are untouched (the seam column aside).
+        for (int y = 20; y < kHeight; ++y)
+            for (int x = 1; x < kFace; ++x) ASSERT_EQ(gray[y * kWidth + face * kFace + x], 128);
+    }
+}
