@@ -45,10 +45,13 @@ nlohmann::json shadowDefaults(const engine::EngineConfig& config) {
     return nlohmann::json::object();
 }
 
-void saveSettings(const ViewOptions& options, const ViewerState& state, const std::string& path) {
+// `fileLights`: how many glTF lights the file has; a --key-light added after them is the
+// viewer's, not the file's, and is not saved.
+void saveSettings(const ViewOptions& options, const ViewerState& state, const std::string& path, int fileLights) {
     std::map<int, nlohmann::json> shadows;
     for (std::size_t i = 0; i < state.lights().size(); ++i)
-        shadows[state.lights()[i].light] = state.savedShadow(static_cast<int>(i));
+        if (state.lights()[i].light < fileLights)
+            shadows[state.lights()[i].light] = state.savedShadow(static_cast<int>(i));
     saveSceneSettings(options.scene, path, shadows);
 }
 
@@ -90,6 +93,7 @@ int run(const ViewOptions& options, std::unique_ptr<engine::GlContext>& context,
     for (const std::string& warning : warnings) std::cerr << "warning: " << warning << "\n";
     // Before a window opens: a save that cannot succeed is found now, not after the tuning.
     if (!options.saveSettings.empty()) checkSaveTarget(options.scene, options.saveSettings);
+    const int fileLights = static_cast<int>(scene.lights.size());
     const tools::StagedScene staged = tools::stageScene(scene, options.scene, options.lighting);
     for (const std::string& note : staged.notes) std::printf("engine-view: %s\n", note.c_str());
     for (const std::string& warning : staged.warnings) std::cerr << "warning: " << warning << "\n";
@@ -160,7 +164,7 @@ int run(const ViewOptions& options, std::unique_ptr<engine::GlContext>& context,
             requests.savePath.clear();
             try {
                 if (path.empty()) throw engine::InputError("S: nowhere to save: start with --save-settings FILE.gltf");
-                saveSettings(options, state, path);
+                saveSettings(options, state, path, fileLights);
                 std::printf("engine-view: saved the lights' settings to %s\n", path.c_str());
                 requests.say("saved the lights' settings to " + path);
             } catch (const engine::InputError& error) {

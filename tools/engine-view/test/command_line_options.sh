@@ -32,6 +32,12 @@ screenshot viewer_set.png
 save
 quit
 SCRIPT
+# With --key-light too: the added light is the viewer's and is not saved into the file.
+run_view save.txt --light sun=woo --light-set point_light.resolution=512 --save-settings saved.gltf \
+  --key-light spot > /dev/null
+"$render" --config "$config" --scene showcase.gltf --width 160 --height 120 --light sun=woo \
+  --light-set point_light.resolution=512 --key-light spot --out render_set.png > /dev/null
+same viewer_set.png render_set.png
 run_view save.txt --light sun=woo --light-set point_light.resolution=512 --save-settings saved.gltf > /dev/null
 "$render" --config "$config" --scene showcase.gltf --width 160 --height 120 --light sun=woo \
   --light-set point_light.resolution=512 --out render_set.png > /dev/null
