@@ -7,7 +7,6 @@
 #include "engine/gltf/GltfLoader.h"
 #include "engine/render/CameraSetup.h"
 #include "engine/render/Renderer.h"
-#include "engine/scene/SceneEdit.h"
 #include "engine/util/Error.h"
 
 #include "shadowmap/ShadowSettings.h"
