@@ -11,7 +11,8 @@
 //               without shadows, 0 for a spot light whose frustum holds nothing the camera
 //               sees: every visible point is outside it)
 //   pointLight  eye-space light position, near (cube maps)
-//   pointFar    x: far (cube maps); 0 = infinite
+//   pointFar    x: far (cube maps); 0 = infinite; y: the cube lookup's texel bias,
+//               kCubeTexelBias * 2 / resolution (ShadowMapPlugin.cpp)
 //   eyeToWorld  R_V in its upper 3x3: cube lookups use world axes
 layout(std140, binding = 1) uniform ShadowData {
     mat4 eyePlanes[MAX_LIGHTS];

@@ -98,5 +98,13 @@ float shadowMapCube(int slot, vec3 toPoint, samplerCubeShadow map) {
     if (major < shadowData.pointLight[slot].w) return 1.0;
     float depth = cubeReferenceDepth(slot, major) - shadowData.params[slot].y;
     bool reversed = shadowData.params[slot].x > 0.5;
+    // Lowered by the depth a 45-degree surface spans across kCubeTexelBias texels here
+    // (ShadowMapPlugin.cpp says why): d(depth)/d(major) times a texel's width, 2 major / res
+    // (pointFar.y holds kCubeTexelBias * 2 / res), so the bias is a fixed part of a texel at
+    // every distance; the window depth grows with major as n f / ((f - n) major^2), or n / major^2
+    // with an infinite far, and falls (reversed Z) as fast.
+    float n = shadowData.pointLight[slot].w, f = shadowData.pointFar[slot].x;
+    float texelBias = (f <= 0.0 ? n / major : n * f / ((f - n) * major)) * shadowData.pointFar[slot].y;
+    depth += reversed ? texelBias : -texelBias;
     return texture(map, vec4(toPoint, reversed ? max(depth, 0.0) : min(depth, 1.0)));
 }

@@ -8,3 +8,13 @@
 #include <vector>
 
 std::vector<std::uint8_t> depthToGray(const engine::DepthReadback& map, int& width, int& height);
+
+// The names of a cube's faces in the strip's order (GL's: layer i is
+// GL_TEXTURE_CUBE_MAP_POSITIVE_X + i), as labelCubeFaces writes them.
+extern const char* const kCubeFaceNames[6];
+
+// Writes each face's name (+X, -X, +Y, -Y, +Z, -Z) into the top-left corner of its face
+// of a depthToGray strip, black on a white box with a black rule along the face's left
+// edge, so a person reading the picture knows which face is which. Only for pictures: the
+// labels cover depth texels, so nothing that measures the map reads a labelled strip.
+void labelCubeFaces(std::vector<std::uint8_t>& gray, int width, int height, int faceWidth);

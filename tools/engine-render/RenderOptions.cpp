@@ -16,9 +16,12 @@ const char* const kRenderUsage =
     "  [--shadow-mask NAME=MASK.png]... [--shadow-map NAME=MAP.png]...\n"
     "  [--shadow-compare NAME=VIEW.png]...  (green: r agrees with the map, red: shadowed)\n"
     "  [--frames N] [--stats STATS.json] [--graph-dot GRAPH.dot]\n"
-    "  [--key-light spot|point|directional] [--orbit-light NAME] [--orbit-camera]\n"
+    "  [--key-light spot|point|directional] [--ground]  (add a light placed from the bounds, printed;\n"
+    "                                    a ground under the model to receive its shadow)\n"
+    "  [--orbit-light NAME] [--orbit-camera]\n"
     "  [--truth]   (per light: map time, and acne/leak against ray-traced shadows)\n"
-    "  [--warmup N] (untimed frames first, default 1)\n"
+    "  [--warmup N] (untimed frames first: at least N, default 1, then until a frame compiles no\n"
+    "               new shader (up to 4 more), so no timed frame pays for compilation; 0: none)\n"
     "  [--set PLUGIN.KEY=JSON]...  (a plugin's config setting, e.g. shadowmap_plugin.cache_maps=false)\n"
     "  a light's setting: defaults < config and --set < the light's glTF extras < --light-set\n";
 
@@ -49,7 +52,7 @@ std::pair<std::string, std::string> parsePngAssignment(const std::string& flag, 
 RenderOptions parseRenderOptions(int argc, char** argv) {
     RenderOptions options;
     bool sawScene = false, sawOut = false;
-    options.help = tools::parseFlags(argc, argv, {"--orbit-camera", "--truth", "--list"},
+    options.help = tools::parseFlags(argc, argv, {"--orbit-camera", "--truth", "--list", tools::kGroundFlag},
                                      [&](const std::string& flag, const std::string& value) {
         if (flag == "--orbit-camera") options.orbitCamera = true;
         else if (flag == "--truth") options.truth = true;
@@ -70,7 +73,7 @@ RenderOptions parseRenderOptions(int argc, char** argv) {
         else if (flag == "--set") tools::addSettingOverride(options.pluginSettings, flag, value);
         else if (flag == "--stats") options.stats = value;
         else if (flag == "--graph-dot") options.graphDot = value;
-        else if (flag == "--key-light") options.keyLight = tools::parseLightType(flag, value);
+        else if (tools::parseSceneLightingFlag(options.lighting, flag, value)) {}
         else if (flag == "--orbit-light") options.orbitLight = value;
         else return false;
         return true;

@@ -1,6 +1,7 @@
 #pragma once
 // engine-render's command line (the contract the README's "Rendering a scene" documents).
 #include "LightOverrides.h"
+#include "SceneLighting.h"
 #include "SettingOverrides.h"
 
 #include "engine/scene/Scene.h"
@@ -22,10 +23,9 @@ struct RenderOptions {
     std::vector<std::pair<std::string, std::string>> shadowMaps;     // --shadow-map NAME=FILE
     std::vector<std::pair<std::string, std::string>> comparisons;    // --shadow-compare NAME=FILE
     int frames = 1;
-    int warmup = 1;  // untimed frames first: llvmpipe compiles shaders at their first draw
+    int warmup = 1;  // at least this many untimed frames first (Renderer::warmUp): llvmpipe compiles at first draw
     std::vector<tools::SettingOverride> pluginSettings;  // --set PLUGIN.KEY=JSON, each key once
-    // --key-light spot|point|directional: add a light from the bounds
-    std::optional<engine::Light::Type> keyLight;
+    tools::SceneLighting lighting;  // --key-light spot|point|directional, --ground
     std::string orbitLight;   // --orbit-light NAME: turn that light 2 degrees per frame
     bool orbitCamera = false; // --orbit-camera: turn the camera 2 degrees per frame
     bool truth = false;       // --truth: per-light error against ray-traced shadows

@@ -5,6 +5,7 @@
 #include "DepthImage.h"
 #include "LightOverrides.h"
 #include "RenderOptions.h"
+#include "SceneLighting.h"
 
 #include "ShadowEvaluation.h"
 
@@ -53,6 +54,10 @@ int lightSlot(const engine::Scene& scene, const std::string& sceneFile, const st
                                     " lights are rendered");
     return slot;
 }
+
+// Beyond --warmup, the most frames warm-up may add waiting for compilation to stop: the
+// plan changes once (computing -> fetching cached shade), so 2 would do; 4 leaves room.
+constexpr int kExtraWarmupFrames = 4;
 
 struct PassSummary {
     std::vector<double> wallMs;  // of the frames it ran
@@ -170,16 +175,13 @@ int run(const RenderOptions& options, std::unique_ptr<engine::GlContext>& contex
     std::vector<std::string> warnings;
     engine::Scene scene = engine::loadGltf(options.scene, &warnings);
     for (const std::string& warning : warnings) std::cerr << "warning: " << warning << "\n";
-    if (options.keyLight) engine::addKeyLight(scene, *options.keyLight);
+    const tools::StagedScene staged = tools::stageScene(scene, options.scene, options.lighting);
     if (options.list) {
         printCamerasAndLights(scene, options.scene);
         return 0;
     }
-    // Most sample files bring no light: say why the picture is ambient only, and what helps.
-    if (scene.lightInstances.empty())
-        std::cerr << "warning: " << options.scene
-                  << ": the scene has no lights: ambient only, no shadows (--key-light spot|point|directional "
-                     "adds one)\n";
+    for (const std::string& note : staged.notes) std::printf("%s\n", note.c_str());
+    for (const std::string& warning : staged.warnings) std::cerr << "warning: " << warning << "\n";
 
     engine::EngineConfig config = engine::loadEngineConfig(options.config);
     tools::applySettingOverrides(config, options.pluginSettings);
@@ -222,7 +224,10 @@ int run(const RenderOptions& options, std::unique_ptr<engine::GlContext>& contex
     engine::FrameResult last;
     nlohmann::json shadeCacheFrames = nlohmann::json::array();  // per timed frame
     int framesComputingShade = 0;  // timed frames whose lit pass recomputed a cacheable light
-    for (int frame = 0; frame < options.warmup; ++frame) renderer.renderFrame(request);
+    // Untimed: at least --warmup frames, then until a frame compiles nothing new (the shade
+    // cache's fetching programs appear in the second frame), so the first timed frame times
+    // rendering, not shader compilation. --warmup 0 times the cold start.
+    if (options.warmup > 0) renderer.warmUp(request, options.warmup, options.warmup + kExtraWarmupFrames);
     for (int frame = 0; frame < options.frames; ++frame) {
         if (frame > 0 && orbitingLight >= 0) engine::orbitNode(scene, orbitingLight, orbitCenter, kOrbitStep);
         if (frame > 0 && options.orbitCamera)
@@ -261,7 +266,8 @@ int run(const RenderOptions& options, std::unique_ptr<engine::GlContext>& contex
             throw engine::InputError("--shadow-map " + light + ": the light has no shadow map this frame "
                                      "(variant none, nothing in its frustum, or no shadow plugin)");
         int width = 0, height = 0;
-        const auto gray = depthToGray(found->second, width, height);
+        auto gray = depthToGray(found->second, width, height);
+        if (found->second.layers == 6) labelCubeFaces(gray, width, height, found->second.width);
         engine::writePngAtomically(file, width, height, 1, gray);
     }
 

@@ -12,6 +12,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include <unistd.h>
+
 namespace engine_view {
 
 namespace {
@@ -98,39 +100,77 @@ std::string replaceLightShadows(const std::string& json, const std::map<int, nlo
     return out;
 }
 
-void saveSceneSettings(const std::filesystem::path& scene, const std::filesystem::path& out,
-                       const std::map<int, nlohmann::json>& shadows) {
-    const std::string bytes = readFile(scene);
-    const bool glb = bytes.size() >= 20 && bytes.compare(0, 4, "glTF") == 0;
-    if (glb != hasExtension(out, ".glb"))
-        engine::throwInputError(out.string(), "", std::string("the scene is a ") + (glb ? ".glb" : ".gltf") +
-                                                     ": save it as one too (the file keeps its container)");
-    std::string json;
-    std::size_t jsonLength = 0;
-    if (glb) {
-        jsonLength = readU32(bytes, 12);
-        if (bytes.compare(16, 4, "JSON") != 0 || 20 + jsonLength > bytes.size())
-            engine::throwInputError(scene.string(), "GLB", "the first chunk is not a JSON chunk");
-        json = bytes.substr(20, jsonLength);
-    } else {
-        json = bytes;
-    }
+namespace {
 
-    const nlohmann::json document = nlohmann::json::parse(json, nullptr, false);
+// The scene as saveSceneSettings edits it: its bytes, container and JSON text.
+struct SceneFile {
+    std::string bytes;
+    bool glb = false;
+    std::string json;
+    std::size_t jsonLength = 0;  // .glb: the JSON chunk's length
+};
+
+SceneFile readScene(const std::filesystem::path& scene) {
+    SceneFile file;
+    file.bytes = readFile(scene);
+    file.glb = file.bytes.size() >= 20 && file.bytes.compare(0, 4, "glTF") == 0;
+    if (file.glb) {
+        file.jsonLength = readU32(file.bytes, 12);
+        if (file.bytes.compare(16, 4, "JSON") != 0 || 20 + file.jsonLength > file.bytes.size())
+            engine::throwInputError(scene.string(), "GLB", "the first chunk is not a JSON chunk");
+        file.json = file.bytes.substr(20, file.jsonLength);
+    } else {
+        file.json = file.bytes;
+    }
+    return file;
+}
+
+// Everything that would make saving `file` (loaded from `scene`) to `out` fail, short of
+// the write itself.
+void checkTarget(const std::filesystem::path& scene, const SceneFile& file, const std::filesystem::path& out) {
+    if (file.glb != hasExtension(out, ".glb"))
+        engine::throwInputError(out.string(), "", std::string("the scene is a ") + (file.glb ? ".glb" : ".gltf") +
+                                                     ": save it as one too (the file keeps its container)");
+    std::error_code error;
+    const std::filesystem::path folder = std::filesystem::absolute(out).parent_path();
+    if (std::filesystem::is_directory(out, error))
+        engine::throwInputError(out.string(), "", "is a directory, not a file to save the scene to");
+    if (!std::filesystem::is_directory(folder, error))
+        engine::throwInputError(out.string(), "", "its folder " + folder.string() + " does not exist");
+    // The file is written as a temporary beside it and renamed: the folder must be writable.
+    if (::access(folder.c_str(), W_OK) != 0)
+        engine::throwInputError(out.string(), "", "its folder " + folder.string() + " is not writable");
+
+    const nlohmann::json document = nlohmann::json::parse(file.json, nullptr, false);
     if (document.is_discarded()) engine::throwInputError(scene.string(), "", "the JSON no longer parses");
     const std::vector<std::string> uris = externalUris(document);
     if (!uris.empty()) {
-        std::error_code error;
-        const auto folder = [&](const std::filesystem::path& path) {
+        const auto canonicalFolder = [&](const std::filesystem::path& path) {
             return std::filesystem::weakly_canonical(std::filesystem::absolute(path).parent_path(), error);
         };
-        if (folder(scene) != folder(out))
+        if (canonicalFolder(scene) != canonicalFolder(out))
             engine::throwInputError(out.string(), "",
                                     "the scene refers to external files (" + uris.front() +
                                         (uris.size() > 1 ? ", ..." : "") + ") by relative URI: save it in the "
                                         "scene's folder (" + std::filesystem::absolute(scene).parent_path().string() +
                                         ") so they still resolve");
     }
+}
+
+} // namespace
+
+void checkSaveTarget(const std::filesystem::path& scene, const std::filesystem::path& out) {
+    checkTarget(scene, readScene(scene), out);
+}
+
+void saveSceneSettings(const std::filesystem::path& scene, const std::filesystem::path& out,
+                       const std::map<int, nlohmann::json>& shadows) {
+    const SceneFile file = readScene(scene);
+    checkTarget(scene, file, out);
+    const std::string& bytes = file.bytes;
+    const std::string& json = file.json;
+    const bool glb = file.glb;
+    const std::size_t jsonLength = file.jsonLength;
 
     std::string edited = replaceLightShadows(json, shadows, scene.string());
     if (!glb) {

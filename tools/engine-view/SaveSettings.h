@@ -21,6 +21,12 @@
 
 namespace engine_view {
 
+// Throws the InputError saveSceneSettings would throw before writing: `out` has the other
+// container, is a directory, its folder is missing or not writable, or the scene's external
+// files would not resolve from it. engine-view calls it at start, so a bad --save-settings
+// is one clear error then, not a surprise after an hour of tuning.
+void checkSaveTarget(const std::filesystem::path& scene, const std::filesystem::path& out);
+
 // `shadows`: glTF light index (KHR_lights_punctual.lights[i]) -> its new extras.shadow.
 void saveSceneSettings(const std::filesystem::path& scene, const std::filesystem::path& out,
                        const std::map<int, nlohmann::json>& shadows);

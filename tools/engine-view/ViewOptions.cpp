@@ -15,7 +15,12 @@ const char* const kViewUsage =
     "                            see the README), then quit\n"
     "  [--stay]                 (after the script, stay interactive instead of quitting)\n"
     "  [--screenshot OUT.png]   (the window after the first frame (after the script, if any), then quit)\n"
-    "  [--save-settings OUT.gltf|.glb]  (where S writes the scene with the lights' settings)\n"
+    "  [--save-settings OUT.gltf|.glb]  (where S writes the scene with the lights' settings;\n"
+    "                            checked at start: the folder must exist and be writable)\n"
+    "  [--light-set NAME.KEY=JSON]...  (a per-light setting, as if set by the script's `set`)\n"
+    "  [--light NAME=VARIANT]...        (--light-set NAME.variant=VARIANT)\n"
+    "  [--key-light spot|point|directional] [--ground]  (add a light placed from the bounds,\n"
+    "                            printed; a ground under the model to receive its shadow)\n"
     "keys: Tab light, V variant, R resolution, F depth format, P filter, [ ] offset units,\n"
     "      , . dimming, 1-9 glTF cameras, 0 framing camera, D debug view, O overlay,\n"
     "      S save settings, Esc quit; mouse: left orbit, right/middle pan, wheel zoom\n";
@@ -26,7 +31,7 @@ constexpr int kMaxSize = 16384;
 ViewOptions parseViewOptions(int argc, char** argv) {
     ViewOptions options;
     bool sawScene = false;
-    options.help = tools::parseFlags(argc, argv, {"--stay"}, [&](const std::string& flag, const std::string& value) {
+    options.help = tools::parseFlags(argc, argv, {"--stay", tools::kGroundFlag}, [&](const std::string& flag, const std::string& value) {
         if (flag == "--config") options.config = value;
         else if (flag == "--scene") { options.scene = value; sawScene = true; }
         else if (flag == "--camera") options.camera = value;
@@ -36,6 +41,9 @@ ViewOptions parseViewOptions(int argc, char** argv) {
         else if (flag == "--stay") options.stay = true;
         else if (flag == "--screenshot") options.screenshot = value;
         else if (flag == "--save-settings") options.saveSettings = value;
+        else if (flag == "--light") options.lightSettings.push_back(tools::parseLightVariant(flag, value));
+        else if (flag == "--light-set") options.lightSettings.push_back(tools::parseLightSetting(flag, value));
+        else if (tools::parseSceneLightingFlag(options.lighting, flag, value)) {}
         else return false;
         return true;
     });

@@ -1,6 +1,10 @@
 #pragma once
 // engine-view's command line.
+#include "LightOverrides.h"
+#include "SceneLighting.h"
+
 #include <string>
+#include <vector>
 
 namespace engine_view {
 
@@ -13,6 +17,8 @@ struct ViewOptions {
     bool stay = false;           // --stay: after the script, stay interactive (else quit)
     std::string screenshot;      // --screenshot OUT.png: the first frame's window, then quit
     std::string saveSettings;    // --save-settings OUT.gltf|.glb: where S (and `save`) write
+    std::vector<tools::LightOverride> lightSettings;  // --light-set NAME.KEY=JSON, --light NAME=VARIANT
+    tools::SceneLighting lighting;  // --key-light spot|point|directional, --ground
     bool help = false;
 };
 

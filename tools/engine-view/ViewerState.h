@@ -66,10 +66,11 @@ public:
     // shadowmap::ShadowSettings{}) <- config <- extras.shadow, with the polygon offset the
     // plugin reported when it is not explicit.
     nlohmann::json effective(int index) const;
-    // What --save-settings writes as the light's extras.shadow: the keys it already had
-    // (near_plane, reversed_z, ...), with variant, resolution, depth_format, filter and
-    // dimming always explicit (so the file means the same under any config), and
-    // polygon_offset only when explicit (its default depends on variant and filter).
+    // What --save-settings writes as the light's extras.shadow: the keys the loaded file
+    // already had (near_plane, reversed_z, ..., as they are now), and of the keys set here
+    // (keys, script, --light-set) only those whose value differs from the defaults
+    // (built-in <- config, compared through the settings API), so the saved file leaves
+    // everything nobody chose to the config.
     nlohmann::json savedShadow(int index) const;
 
 private:
@@ -79,6 +80,7 @@ private:
     nlohmann::json defaults_;
     std::vector<ViewedLight> lights_;
     std::vector<nlohmann::json> applied_;  // per scene.lights entry: extras last applied
+    std::vector<nlohmann::json> loaded_;   // per scene.lights entry: extras.shadow as loaded
     bool dirty_ = false;
     int selected_ = -1;
     DebugView view_ = DebugView::Shaded;

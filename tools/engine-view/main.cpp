@@ -14,11 +14,15 @@
 #include "ViewOptions.h"
 #include "ViewerState.h"
 
+#include "LightOverrides.h"
+#include "SceneLighting.h"
+
 #include "engine/config/EngineConfig.h"
 #include "engine/context/GlContext.h"
 #include "engine/gltf/GltfLoader.h"
 #include "engine/plugin/PluginHost.h"
 #include "engine/render/Renderer.h"
+#include "engine/scene/SceneNames.h"
 #include "engine/util/Error.h"
 #include "engine/util/ProcessSetup.h"
 
@@ -41,11 +45,39 @@ nlohmann::json shadowDefaults(const engine::EngineConfig& config) {
     return nlohmann::json::object();
 }
 
-void saveSettings(const ViewOptions& options, const ViewerState& state, const std::string& path) {
+// `fileLights`: how many glTF lights the file has; a --key-light added after them is the
+// viewer's, not the file's, and is not saved.
+void saveSettings(const ViewOptions& options, const ViewerState& state, const std::string& path, int fileLights) {
     std::map<int, nlohmann::json> shadows;
     for (std::size_t i = 0; i < state.lights().size(); ++i)
-        shadows[state.lights()[i].light] = state.savedShadow(static_cast<int>(i));
+        if (state.lights()[i].light < fileLights)
+            shadows[state.lights()[i].light] = state.savedShadow(static_cast<int>(i));
     saveSceneSettings(options.scene, path, shadows);
+}
+
+// --light-set / --light: resolved to the scene's lights like engine-render's (a name, else a
+// number from --list; a shared name sets every instance) and kept where the viewer keeps
+// every edit (the light's extras.shadow), so the keys change them further and S saves them.
+// Each is checked by the plugin now, so a bad one is an error naming it before the loop.
+void applyLightOptions(const ViewOptions& options, const engine::Scene& scene, ViewerState& state,
+                       engine::Renderer& renderer) {
+    const std::vector<tools::LightOverride> resolved =
+        tools::resolveLightOverrides(options.lightSettings, [&](const std::string& light) {
+            const int slot = engine::findLightInstanceByNameOrNumber(scene, light);
+            if (slot < 0 || state.find(engine::lightInstanceName(scene, slot)) < 0)
+                engine::throwInputError(options.scene, "light \"" + light + "\"",
+                                        "no such light (" + engine::describeLightInstances(scene) + ")");
+            return engine::lightInstanceName(scene, slot);
+        });
+    for (const tools::LightOverride& option : resolved) {
+        for (std::size_t i = 0; i < state.lights().size(); ++i)
+            if (state.lights()[i].name == option.light) state.set(static_cast<int>(i), option.key, option.value);
+        try {
+            state.apply(renderer);
+        } catch (const engine::InputError& error) {
+            throw engine::InputError(option.text + ": " + error.what());
+        }
+    }
 }
 
 // `context` and `host` live in main(), outside the try block that reports errors: an
@@ -59,6 +91,12 @@ int run(const ViewOptions& options, std::unique_ptr<engine::GlContext>& context,
     std::vector<std::string> warnings;
     engine::Scene scene = engine::loadGltf(options.scene, &warnings);
     for (const std::string& warning : warnings) std::cerr << "warning: " << warning << "\n";
+    // Before a window opens: a save that cannot succeed is found now, not after the tuning.
+    if (!options.saveSettings.empty()) checkSaveTarget(options.scene, options.saveSettings);
+    const int fileLights = static_cast<int>(scene.lights.size());
+    const tools::StagedScene staged = tools::stageScene(scene, options.scene, options.lighting);
+    for (const std::string& note : staged.notes) std::printf("engine-view: %s\n", note.c_str());
+    for (const std::string& warning : staged.warnings) std::cerr << "warning: " << warning << "\n";
 
     engine::ContextOptions contextOptions;
     contextOptions.width = options.width;
@@ -73,6 +111,7 @@ int run(const ViewOptions& options, std::unique_ptr<engine::GlContext>& context,
     std::printf("engine-view: %s on %s\n", options.scene.c_str(), context->rendererString().c_str());
 
     ViewerState state(scene, shadowDefaults(config));
+    applyLightOptions(options, scene, state, renderer);
     OrbitCamera camera(scene, options.scene, options.camera);
     LoopRequests requests;
     Controls controls(state, camera, requests);
@@ -125,7 +164,7 @@ int run(const ViewOptions& options, std::unique_ptr<engine::GlContext>& context,
             requests.savePath.clear();
             try {
                 if (path.empty()) throw engine::InputError("S: nowhere to save: start with --save-settings FILE.gltf");
-                saveSettings(options, state, path);
+                saveSettings(options, state, path, fileLights);
                 std::printf("engine-view: saved the lights' settings to %s\n", path.c_str());
                 requests.say("saved the lights' settings to " + path);
             } catch (const engine::InputError& error) {

@@ -1,5 +1,7 @@
 #include "BenchOptions.h"
 
+#include "SceneLighting.h"
+
 #include "CommandLine.h"
 #include "OptionValues.h"
 
@@ -55,7 +57,8 @@ const char* benchUsage() {
         "  [--camera NAME] [--width W --height H] [--frames N]\n"
         "  [--variants " + joined(knownVariants()) + "] [--resolutions 512,1024,2048,4096]\n"
         "  [--depth-formats " + joined(knownFormats()) + "] [--filters " + joined(knownFilters()) + "]\n"
-        "  [--key-light spot|point|directional|none]\n"
+        "  [--key-light spot|point|directional|none] [--ground]   (--ground: a ground under each scene\n"
+        "                       that receives shadows and casts none)\n"
         "\n"
         "Renders every scene with every combination of the listed settings applied to all of its\n"
         "lights, times each light's shadow passes (median wall time over N frames, each pass closed\n"
@@ -96,7 +99,7 @@ BenchOptions parseBenchOptions(int argc, char** argv) {
     // The plugin's own bounds; it checks the GL's GL_MAX_TEXTURE_SIZE when it renders.
     const shadowmap::SettingKey& resolution = shadowmap::settingKey("resolution");
     const int minResolution = static_cast<int>(*resolution.minimum), maxResolution = static_cast<int>(*resolution.maximum);
-    options.help = tools::parseFlags(argc, argv, [&](const std::string& flag, const std::string& value) {
+    options.help = tools::parseFlags(argc, argv, {tools::kGroundFlag}, [&](const std::string& flag, const std::string& value) {
         if (flag == "--config") options.config = value;
         else if (flag == "--scene") {
             options.defaultScenes = false;
@@ -110,6 +113,7 @@ BenchOptions parseBenchOptions(int argc, char** argv) {
         else if (flag == "--depth-formats") options.depthFormats = tools::parseNames(flag, value, knownFormats());
         else if (flag == "--filters") options.filters = tools::parseNames(flag, value, knownFilters());
         else if (flag == "--key-light") options.keyLight = parseKeyLight(flag, value);
+        else if (flag == tools::kGroundFlag) options.ground = true;
         else if (flag == "--out") options.out = value;
         else return false;
         return true;

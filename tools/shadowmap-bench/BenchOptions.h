@@ -28,6 +28,7 @@ struct BenchOptions {
     // Added to every scene that has no light (e.g. Debian's 2CylinderEngine.glb);
     // nullopt: --key-light none, such scenes are reported as an error.
     std::optional<engine::Light::Type> keyLight = engine::Light::Type::Spot;
+    bool ground = false;  // --ground: a receiving ground under every scene (tools/common/SceneLighting.h)
     std::string out;
     bool help = false;
 };

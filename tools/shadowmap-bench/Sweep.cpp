@@ -1,11 +1,12 @@
 #include "Sweep.h"
 
+#include "SceneLighting.h"
+
 #include "ShadowEvaluation.h"
 
 #include "engine/gltf/GltfLoader.h"
 #include "engine/render/CameraSetup.h"
 #include "engine/render/Renderer.h"
-#include "engine/scene/SceneEdit.h"
 #include "engine/util/Error.h"
 
 #include "shadowmap/ShadowSettings.h"
@@ -74,11 +75,15 @@ std::vector<BenchScene> loadBenchScenes(const BenchOptions& options) {
         std::vector<std::string> warnings;
         bench.scene = engine::loadGltf(path, &warnings);
         for (const std::string& warning : warnings) std::cerr << "warning: " << warning << "\n";
-        if (bench.scene.lightInstances.empty()) {
-            if (!options.keyLight)
-                engine::throwInputError(path, "", "the scene has no light (add one with --key-light)");
-            engine::addKeyLight(bench.scene, *options.keyLight);
-        }
+        if (bench.scene.lightInstances.empty() && !options.keyLight)
+            engine::throwInputError(path, "", "the scene has no light (add one with --key-light)");
+        // The same key light and ground as engine-render and engine-view give with the same
+        // options; the key light only where the scene has none (a sweep measures the scene's).
+        tools::SceneLighting lighting;
+        if (bench.scene.lightInstances.empty()) lighting.keyLight = options.keyLight;
+        lighting.ground = options.ground;
+        for (const std::string& note : tools::stageScene(bench.scene, path, lighting).notes)
+            std::cerr << "shadowmap-bench: " << bench.name << ": " << note << "\n";
         if (bench.scene.meshInstances.empty()) engine::throwInputError(path, "", "the scene has no mesh to shadow");
         bench.camera = engine::chooseCamera(bench.scene, options.camera, options.width, options.height, path);
         bench.shadowedLights = std::min<int>(bench.scene.lightInstances.size(), engine::kMaxLights);

@@ -58,6 +58,22 @@ void Renderer::reloadSettings() {
     for (RenderPlugin* plugin : plugins_) plugin->reloadSettings(*scene_);
 }
 
+int Renderer::warmUp(const FrameRequest& request, int minFrames, int maxFrames) {
+    FrameRequest untimed = request;
+    untimed.timing = false;
+    int frames = 0;
+    while (frames < maxFrames) {
+        const std::size_t compiled = litPass_->programCount();
+        renderFrame(untimed);
+        ++frames;
+        if (frames >= minFrames && litPass_->programCount() == compiled) break;
+    }
+    // Untimed frames are not waited for: without this the first timed pass's glFinish would
+    // wait for the warm-up frames' rasterizing still queued (llvmpipe runs it in threads).
+    glFinish();
+    return frames;
+}
+
 FrameResult Renderer::renderFrame(const FrameRequest& request) {
     const auto start = std::chrono::steady_clock::now();
     const int width = request.camera.width, height = request.camera.height;

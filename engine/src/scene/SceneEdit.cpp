@@ -54,4 +54,50 @@ int addKeyLight(Scene& scene, Light::Type type, const std::string& name) {
     return index;
 }
 
+int addGround(Scene& scene, const std::string& name) {
+    const Aabb bounds = scene.worldBounds.empty() ? Aabb{glm::dvec3(-1.0), glm::dvec3(1.0)}
+                                                  : scene.worldBounds;
+    const glm::dvec3 center = bounds.center();
+    const double radius = std::max(glm::length(bounds.extent()) * 0.5, 1e-6);
+    // 1e-3 radii below the lowest point: the model's underside does not z-fight with the
+    // ground, and the gap (0.1% of the model's size) is far below a texel of any map that
+    // covers the model, so its contact shadow still touches it.
+    const glm::dvec3 origin(center.x, bounds.min.y - 1e-3 * radius, center.z);
+    const float half = static_cast<float>(2.0 * radius);
+
+    Material material;
+    material.name = name;
+    material.baseColorFactor = glm::vec4(0.6f, 0.6f, 0.6f, 1.0f);
+    material.metallicFactor = 0.0f;
+    material.roughnessFactor = 0.9f;
+    scene.materials.push_back(material);
+
+    // Positions relative to the node (placed at `origin` in double): the float vertices stay
+    // small even for a model far from the world origin.
+    Primitive quad;
+    quad.positions = {{-half, 0.0f, -half}, {half, 0.0f, -half}, {half, 0.0f, half}, {-half, 0.0f, half}};
+    quad.normals.assign(4, glm::vec3(0.0f, 1.0f, 0.0f));
+    quad.indices = {0, 2, 1, 0, 3, 2};  // counter-clockwise seen from above (+Y)
+    quad.material = static_cast<int>(scene.materials.size()) - 1;
+    quad.castShadows = false;  // a receiver only: it shadows nothing and stays out of the maps
+    for (const glm::vec3& p : quad.positions) quad.bounds.extend(glm::dvec3(p));
+    Mesh mesh;
+    mesh.name = name;
+    mesh.bounds = quad.bounds;
+    mesh.primitives.push_back(std::move(quad));
+    mesh.closed = false;
+    scene.meshes.push_back(std::move(mesh));
+
+    Node node;
+    node.name = name;
+    node.mesh = static_cast<int>(scene.meshes.size()) - 1;
+    node.castShadows = false;
+    node.local = glm::translate(glm::dmat4(1.0), origin);
+    scene.nodes.push_back(node);
+    const int index = static_cast<int>(scene.nodes.size()) - 1;
+    scene.roots.push_back(index);
+    scene.updateWorldTransforms();
+    return index;
+}
+
 } // namespace engine

@@ -16,7 +16,7 @@ struct ShadowBlock {
     glm::mat4 eyePlanes[engine::kMaxLights];
     glm::vec4 params[engine::kMaxLights];
     glm::vec4 pointLight[engine::kMaxLights];
-    glm::vec4 pointFar[engine::kMaxLights];  // x only: a float array would have a 16-byte stride anyway
+    glm::vec4 pointFar[engine::kMaxLights];  // x: far, y: cube texel bias (a float array would have a 16-byte stride anyway)
     glm::mat4 eyeToWorld;
 };
 

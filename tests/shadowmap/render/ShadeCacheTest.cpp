@@ -70,6 +70,22 @@ TEST_F(ShadeCacheTest, AStaticSceneComputesEachShadeOnceThenFetchesIt) {
     }
 }
 
+// Renderer::warmUp for timing tools: the first frame compiles the programs that compute
+// the lights' shade, the second the ones that fetch it from the cache (a plan of its own),
+// the third compiles nothing and ends warm-up; a frame after it compiles nothing either, so
+// no timed frame pays for compilation. One warm-up frame (what engine-render did before)
+// left the fetching programs to the first timed frame.
+TEST_F(ShadeCacheTest, WarmUpRendersUntilAFrameCompilesNothingNew) {
+    Session session(boxTwoShadowedLightsAndOneWithout().builder.build());
+    EXPECT_EQ(session.renderer.warmUp(session.request, 1, 10), 3);
+    EXPECT_EQ(session.renderer.warmUp(session.request, 1, 10), 1);
+    EXPECT_EQ(slots(session.frame(), "fetched"), (std::vector<int>{0, 1}));
+    // At least minFrames, at most maxFrames, whatever compiles.
+    Session bounded(boxTwoShadowedLightsAndOneWithout().builder.build());
+    EXPECT_EQ(bounded.renderer.warmUp(bounded.request, 1, 2), 2);
+    EXPECT_EQ(bounded.renderer.warmUp(bounded.request, 3, 10), 3);
+}
+
 TEST_F(ShadeCacheTest, MovingOneLightRecomputesOnlyItsShade) {
     Lit lit = boxTwoShadowedLightsAndOneWithout();
     Session session(lit.builder.build());

@@ -1,5 +1,6 @@
 // engine-view without a window: saving settings in place (every other byte kept), the
 // script grammar and its errors, and the per-light edits the keys make.
+#include "DepthImage.h"
 #include "JsonSpans.h"
 #include "OverlayText.h"
 #include "SaveSettings.h"
@@ -208,11 +209,27 @@ TEST(ViewerState, KeysCycleTheSelectedLightsSettings) {
     state.toggleFilter();
     state.cycleDepthFormat();  // d24 -> d32f
     const nlohmann::json saved = state.savedShadow(1);
-    EXPECT_EQ(saved, nlohmann::json({{"variant", "standard"}, {"resolution", 512}, {"depth_format", "d32f"},
+    // The variant was never chosen for this light: it stays the config's.
+    EXPECT_EQ(saved, nlohmann::json({{"resolution", 512}, {"depth_format", "d32f"},
                                      {"filter", "nearest"}, {"dimming", 0.55}, {"near_plane", 0.5}}));
     EXPECT_TRUE(state.select("key"));
     EXPECT_FALSE(state.select("moon"));
     EXPECT_EQ(state.selected(), 0);
+}
+
+TEST(ViewerState, SavesOnlyWhatDiffersFromTheDefaults) {
+    // A light the file gave no settings: what the viewer set back to the defaults' value
+    // (the config's resolution, the built-in dimming and depth format) is left out, so a
+    // later config change still reaches it; the file's own keys stay as they are now.
+    engine::Scene scene = twoLights();
+    ViewerState state(scene, {{"variant", "standard"}, {"resolution", 1024}, {"cache_maps", true}});
+    state.set(0, "variant", "woo");
+    state.set(0, "resolution", 1024);
+    state.set(0, "dimming", 0.4);
+    state.set(0, "depth_format", "d24");
+    EXPECT_EQ(state.savedShadow(0), nlohmann::json({{"variant", "woo"}}));
+    state.set(1, "resolution", 1024);  // the file's key, now equal to the config's: kept
+    EXPECT_EQ(state.savedShadow(1), nlohmann::json({{"near_plane", 0.5}, {"resolution", 1024}}));
 }
 
 TEST(ViewerState, KeysCycleThroughWhatThePluginAccepts) {
@@ -265,3 +282,28 @@ TEST(OverlayText, SaysWhereEachLightsShadeCameFrom) {
 }
 
 } // namespace engine_view
+
+// The cube strip's face labels (engine-render --shadow-map, the depth view): each face
+// carries its own name in its top-left corner, black on white, and nothing else changes but
+// the one-pixel seam between faces.
+TEST(DepthImage, CubeFacesAreLabelledInTheirCorners) {
+    constexpr int kFace = 64, kWidth = 6 * kFace, kHeight = 64;
+    std::vector<std::uint8_t> gray(kWidth * kHeight, 128);
+    labelCubeFaces(gray, kWidth, kHeight, kFace);
+    std::vector<std::vector<std::uint8_t>> corners;
+    for (int face = 0; face < 6; ++face) {
+        std::vector<std::uint8_t> corner;
+        int black = 0;
+        for (int y = 0; y < 12; ++y)
+            for (int x = 1; x < 20; ++x) {
+                corner.push_back(gray[y * kWidth + face * kFace + x]);
+                black += corner.back() == 0;
+            }
+        EXPECT_GT(black, 8) << kCubeFaceNames[face];  // a glyph stroke is 1-3 pixels: 2 glyphs have more
+        for (const std::vector<std::uint8_t>& other : corners) EXPECT_NE(corner, other) << kCubeFaceNames[face];
+        corners.push_back(corner);
+        // Below the label the depths are untouched (the seam column aside).
+        for (int y = 20; y < kHeight; ++y)
+            for (int x = 1; x < kFace; ++x) ASSERT_EQ(gray[y * kWidth + face * kFace + x], 128);
+    }
+}

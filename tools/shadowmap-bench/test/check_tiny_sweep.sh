@@ -30,3 +30,25 @@ grep -q 'docs/metrics.md' "$out/summary.md" && [[ -f $content/../docs/metrics.md
   || { echo "summary.md does not cite docs/metrics.md for its error metrics"; exit 1; }
 [[ -s $out/time_vs_error.gp ]] || { echo "time_vs_error.gp missing or empty"; exit 1; }
 echo "ok: $rows rows"
+
+# A scene without lights gets the key light engine-render and engine-view place (spot by
+# default), and --ground their ground; the placement is printed.
+cp "$content/scenes/showcase.gltf" "$content/scenes/showcase.bin" "$out/"
+python3 - "$out/showcase.gltf" "$out/dark.gltf" <<'PY'
+import json, sys
+scene = json.load(open(sys.argv[1]))
+del scene["extensions"]["KHR_lights_punctual"]
+scene["extensionsUsed"] = [e for e in scene.get("extensionsUsed", []) if e != "KHR_lights_punctual"]
+for node in scene["nodes"]:
+    node.get("extensions", {}).pop("KHR_lights_punctual", None)
+json.dump(scene, open(sys.argv[2], "w"))
+PY
+"$bench" --config "$content/engine.json" --scene "$out/dark.gltf" --ground \
+  --variants standard --resolutions 256 --depth-formats d24 --filters pcf \
+  --width 64 --height 48 --frames 1 --out "$out/dark" 2> "$out/dark.log"
+grep -q 'shadowmap-bench: dark: key light: spot "key_light" at (' "$out/dark.log" \
+  && grep -q 'shadowmap-bench: dark: ground: (' "$out/dark.log" \
+  || { echo "no key light or ground placement printed: $(cat "$out/dark.log")"; exit 1; }
+rows=$(tail -n +2 "$out/dark/results.csv" | wc -l)
+[[ $rows -eq 1 ]] || { echo "expected 1 row (the key light), got $rows"; exit 1; }
+echo "ok: a light-less scene swept with the key light and a ground"

@@ -37,6 +37,9 @@ public:
     // Adds a pass drawing light `slot`'s view into `target` (an imported RGBA8 texture).
     void addLightViewTo(Frame& frame, int slot, LightView view, ResourceHandle target);
 
+    // How many lit programs have been compiled so far (Renderer::warmUp waits for it to stop growing).
+    std::size_t programCount() const { return programs_.size(); }
+
 private:
     enum class Output { Color, ShadowMask, Comparison };  // lit.frag's views
     void addPass(Frame& frame, const std::string& name, ResourceHandle target, Output output,

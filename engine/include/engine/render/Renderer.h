@@ -73,6 +73,16 @@ public:
 
     FrameResult renderFrame(const FrameRequest& request);
 
+    // Renders `request` untimed until a frame compiles no lit program it has not compiled
+    // before (at least `minFrames`, at most `maxFrames` frames); returns the frames rendered.
+    // Timed frames after it pay for no compilation: the first frame compiles (and llvmpipe
+    // JIT-compiles at first draw) the lit pass's programs for the scene's materials and
+    // lights, the shadow plugins' depth programs and the requested masks' and comparisons'
+    // views; the second, once the shade cache holds still lights' shade, the programs that
+    // fetch it instead of computing it; a cached shadow map is cached from then on. Ends with
+    // glFinish, so no timed frame waits for warm-up work still queued.
+    int warmUp(const FrameRequest& request, int minFrames, int maxFrames);
+
     // The scene's GPU copy (for tools that draw it their own way, e.g. a surface capture).
     const SceneGpu& gpu() const { return *gpu_; }
 

@@ -19,4 +19,11 @@ glm::dmat4 orbitTransform(const glm::dmat4& transform, const glm::dvec3& center,
 // the new node and recomposes the world transforms.
 int addKeyLight(Scene& scene, Light::Type type, const std::string& name = "key_light");
 
+// Adds a ground that receives shadows but casts none: a square in the world XZ plane (glTF's
+// up is +Y) just below the bottom of the scene's bounds, centred under them, 4 radii wide,
+// in a grey material of its own, so an isolated model shows where its shadow falls. Call it
+// after addKeyLight: the light is placed from the model's bounds, not the ground's. Returns
+// the new node and recomposes the world transforms.
+int addGround(Scene& scene, const std::string& name = "ground");
+
 } // namespace engine
