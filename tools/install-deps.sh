@@ -18,6 +18,11 @@ packages=(
   # glTF loader fuzzing (tools/fuzz/run.sh): clang, and libFuzzer's runtime
   # (libclang_rt.fuzzer-x86_64.a), which Debian 12 ships in libclang-rt-14-dev.
   clang libclang-rt-14-dev
+  # Compressed glTF: the loader decodes KHR_draco_mesh_compression with libdraco and
+  # EXT_meshopt_compression with libmeshoptimizer (engine/src/gltf/Gltf*Decoder.cpp, also
+  # linked by tools/fuzz); tests/unit/test_gltf_compressed.cpp and the shadow-mask test make
+  # their meshopt files with gltfpack.
+  libdraco-dev libmeshoptimizer-dev gltfpack
 )
 
 missing=()
