@@ -13,7 +13,7 @@
 #include "GltfJsonDocument.h"
 #include "GltfLights.h"
 #include "GltfMeshoptDecoder.h"
-#include "GltfMeshoptFallback.h"
+#include "GltfCompressionPlaceholders.h"
 #include "GltfParse.h"
 #include "GltfPreflight.h"
 #include "GltfValidation.h"
@@ -35,12 +35,12 @@ gltf::LoadContext makeContext(const std::filesystem::path& path, std::vector<std
     return context;
 }
 
-// tinygltf cannot read an EXT_meshopt_compression fallback buffer without data: it parses
-// a copy of the file where such buffers are placeholders (GltfMeshoptFallback.h).
-gltf::ParsedGltf parseAllowingFallbackBuffers(const gltf::LoadContext& context, const nlohmann::json& document,
+// tinygltf refuses parts of compressed files that the extensions allow: it parses a copy
+// of the file with placeholders there (GltfCompressionPlaceholders.h).
+gltf::ParsedGltf parseWithCompressionPlaceholders(const gltf::LoadContext& context, const nlohmann::json& document,
                                               const gltf::GltfContainer& container,
                                               std::span<const std::uint8_t> fileBytes) {
-    const std::vector<std::uint8_t> rewritten = gltf::withPlaceholderFallbackBuffers(document, container);
+    const std::vector<std::uint8_t> rewritten = gltf::withCompressionPlaceholders(document, container);
     if (rewritten.empty()) return gltf::parseWithTinygltf(context, container, fileBytes);
     const gltf::GltfContainer rewrittenContainer =
         container.binary ? gltf::splitGlb(context, rewritten) : gltf::wholeFileAsJson(rewritten);
@@ -66,7 +66,7 @@ Scene loadGltf(const std::filesystem::path& path, std::vector<std::string>* warn
 
     // Lights come from our own parse; tinygltf 2.7.0 parses them too but checks nothing.
     std::vector<Light> lights = gltf::readPunctualLights(context, document);
-    gltf::ParsedGltf parsed = parseAllowingFallbackBuffers(context, document, container, fileBytes);
+    gltf::ParsedGltf parsed = parseWithCompressionPlaceholders(context, document, container, fileBytes);
     gltf::decodeMeshoptBufferViews(context, document, parsed.model);
     gltf::validateBufferViews(context, parsed.model);
     gltf::validateReferences(context, parsed.model, lights.size());

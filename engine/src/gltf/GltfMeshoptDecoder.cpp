@@ -1,7 +1,7 @@
 #include "GltfMeshoptDecoder.h"
 
 #include "GltfJsonFields.h"
-#include "GltfMeshoptFallback.h"
+#include "GltfCompressionPlaceholders.h"
 
 #include <meshoptimizer.h>
 

@@ -1,7 +1,7 @@
 #include "GltfPreflight.h"
 
 #include "GltfFileAccess.h"
-#include "GltfMeshoptFallback.h"
+#include "GltfCompressionPlaceholders.h"
 #include "GltfPropertyTypes.h"
 #include "GltfValidation.h"
 
@@ -103,7 +103,7 @@ void checkBuffer(const LoadContext& context, const nlohmann::json& buffer, std::
                                  std::to_string(context.options.maxFileBytes));
 
     const auto uri = buffer.find("uri");
-    if (isDatalessFallbackBuffer(buffer)) return;  // no bytes to check: see GltfMeshoptFallback.h
+    if (isDatalessFallbackBuffer(buffer)) return;  // no bytes to check: see GltfCompressionPlaceholders.h
     if (uri == buffer.end()) {
         if (!container.binary) context.fail(object, "has no uri (only a GLB's first buffer may omit it)");
         if (index != 0) context.fail(object, "has no uri, but only buffers[0] may refer to the GLB BIN chunk");
