@@ -4,6 +4,7 @@
 // is one clear InputError. The plain and the Draco 2CylinderEngine come from Debian's
 // assimp-testmodels; the meshopt copies are made here with Debian's gltfpack.
 #include "gltf_test_support.h"
+#include "compressed_seeds.h"  // tools/fuzz/: small Draco and meshopt files
 #include "../support/AssimpTestModels.h"
 
 #include "engine/gltf/GltfLoader.h"
@@ -391,6 +392,60 @@ TEST(GltfCompressedBadInput, UncompressedViewIntoTheDatalessFallbackBuffer) {
         document["bufferViews"][0].erase("extensions");
     });
     expectLoadError(file, {"bufferViews[0]", "fallback buffer without data, but is not compressed"});
+}
+
+} // namespace
+
+// --- small files with known contents, from the fuzz seeds' generators --------------------
+
+namespace {
+
+// The meshopt seed: a unit quad (after the node's dequantizing scale) in z = 0, normals +z
+// through the OCTAHEDRAL filter, uv (0,0) (1,0) (1,1) (0,1) through the EXPONENTIAL filter,
+// the same triangles once from a TRIANGLES stream and once from an INDICES stream.
+TEST(GltfCompressedKnownContents, MeshoptQuadDecodesEveryModeAndFilter) {
+    TempDir dir;
+    gltf_writer::writeBytes(dir / "quad.glb", compressed_seeds::meshoptQuad().glbBytes());
+    const engine::Scene scene = engine::loadGltf(dir / "quad.glb");
+    ASSERT_EQ(scene.meshes.size(), 1u);
+    ASSERT_EQ(scene.meshes[0].primitives.size(), 2u);
+    const std::vector<glm::dvec3> corners = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+    const std::vector<glm::vec2> uvs = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+    for (const engine::Primitive& primitive : scene.meshes[0].primitives) {
+        EXPECT_EQ(primitive.indices, (std::vector<std::uint32_t>{0, 1, 2, 0, 2, 3}));
+        ASSERT_EQ(primitive.positions.size(), 4u);
+        for (std::size_t v = 0; v < 4; ++v) {
+            const glm::dvec3 world = glm::dvec3(scene.meshInstances[0].world * glm::dvec4(glm::dvec3(primitive.positions[v]), 1.0));
+            // 1023 * (1/1023) in float: exact to ~1e-7.
+            EXPECT_LT(glm::length(world - corners[v]), 1e-6) << "vertex " << v;
+            // 8-bit octahedral +z decodes to exactly (0, 0, 127) / 127.
+            EXPECT_LT(glm::length(primitive.normals[v] - glm::vec3(0, 0, 1)), 1e-6) << "vertex " << v;
+            // 15-bit mantissas hold 0 and 1 exactly.
+            EXPECT_EQ(primitive.texcoords[v], uvs[v]) << "vertex " << v;
+        }
+    }
+    EXPECT_NEAR(scene.worldBounds.max.x, 1.0, 1e-6);
+}
+
+// The Draco seed: a split-vertex unit cube, 12 triangles, positions quantized to 11 bits
+// over the unit cube (step 1/2047: corners 0 and 1 are exact), 8-bit normals.
+TEST(GltfCompressedKnownContents, DracoCubeDecodesToTheCube) {
+    TempDir dir;
+    gltf_writer::writeBytes(dir / "cube.glb", compressed_seeds::dracoCube().glbBytes());
+    const engine::Scene scene = engine::loadGltf(dir / "cube.glb");
+    ASSERT_EQ(scene.meshes.size(), 1u);
+    const engine::Primitive& primitive = scene.meshes[0].primitives.at(0);
+    EXPECT_EQ(primitive.triangleCount(), 12u);
+    for (std::size_t i = 0; i < primitive.indices.size(); ++i) {
+        const glm::vec3& p = primitive.positions.at(primitive.indices[i]);
+        for (int axis = 0; axis < 3; ++axis) EXPECT_TRUE(p[axis] == 0.0f || p[axis] == 1.0f) << "corner " << i;
+        // 8-bit normals of axis directions: within one quantization step of the axis.
+        const glm::vec3& n = primitive.normals.at(primitive.indices[i]);
+        EXPECT_GT(std::max({std::abs(n.x), std::abs(n.y), std::abs(n.z)}), 0.99f) << "corner " << i;
+    }
+    EXPECT_TRUE(scene.meshes[0].closed);  // the split vertices weld by position
+    EXPECT_EQ(scene.worldBounds.min, glm::dvec3(0.0));
+    EXPECT_EQ(scene.worldBounds.max, glm::dvec3(1.0));
 }
 
 } // namespace

@@ -44,10 +44,10 @@ int addMeshoptView(GltfBuilder& b, const std::vector<unsigned char>& encoded, st
     return view;
 }
 
-template <typename T>
-std::vector<unsigned char> encodeVertices(const std::vector<T>& vertices) {
-    std::vector<unsigned char> out(meshopt_encodeVertexBufferBound(vertices.size(), sizeof(T)));
-    out.resize(meshopt_encodeVertexBuffer(out.data(), out.size(), vertices.data(), vertices.size(), sizeof(T)));
+// `count` vertices of `stride` bytes (a multiple of 4, as the codec requires).
+std::vector<unsigned char> encodeVertices(const void* vertices, std::size_t count, std::size_t stride) {
+    std::vector<unsigned char> out(meshopt_encodeVertexBufferBound(count, stride));
+    out.resize(meshopt_encodeVertexBuffer(out.data(), out.size(), vertices, count, stride));
     return out;
 }
 
@@ -104,8 +104,8 @@ GltfBuilder dracoCube() {
 GltfBuilder meshoptQuad() {
     struct Position { std::uint16_t x, y, z, pad; };
     const std::vector<Position> positions = {{0, 0, 0, 0}, {1023, 0, 0, 0}, {1023, 1023, 0, 0}, {0, 1023, 0, 0}};
-    // Octahedral normals: +z for all four vertices.
-    const std::vector<float> unitZ = {0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1};
+    // Octahedral normals: +z for all four vertices (x, y, z, w: the filter keeps w).
+    const std::vector<float> unitZ = {0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0};
     std::vector<std::int8_t> normals(16);
     meshopt_encodeFilterOct(normals.data(), 4, 4, 8, unitZ.data());
     const std::vector<float> uv = {0, 0, 1, 0, 1, 1, 0, 1};
@@ -121,9 +121,9 @@ GltfBuilder meshoptQuad() {
     GltfBuilder b;
     b.doc["asset"]["generator"] = "tools/fuzz/make_seeds";
     std::size_t decoded = 0;
-    const int positionView = addMeshoptView(b, encodeVertices(positions), decoded, 4, 8, "ATTRIBUTES", nullptr);
-    const int normalView = addMeshoptView(b, encodeVertices(normals), decoded, 4, 4, "ATTRIBUTES", "OCTAHEDRAL");
-    const int uvView = addMeshoptView(b, encodeVertices(uvExp), decoded, 4, 8, "ATTRIBUTES", "EXPONENTIAL");
+    const int positionView = addMeshoptView(b, encodeVertices(positions.data(), 4, 8), decoded, 4, 8, "ATTRIBUTES", nullptr);
+    const int normalView = addMeshoptView(b, encodeVertices(normals.data(), 4, 4), decoded, 4, 4, "ATTRIBUTES", "OCTAHEDRAL");
+    const int uvView = addMeshoptView(b, encodeVertices(uvExp.data(), 4, 8), decoded, 4, 8, "ATTRIBUTES", "EXPONENTIAL");
     const int indexView = addMeshoptView(b, indexStream, decoded, 6, 2, "TRIANGLES", nullptr);
     const int sequenceView = addMeshoptView(b, sequenceStream, decoded, 6, 2, "INDICES", nullptr);
     const int positionAccessor = b.addAccessor(positionView, kUnsignedShort, 4, "VEC3");
