@@ -104,10 +104,11 @@ GltfBuilder dracoCube() {
 GltfBuilder meshoptQuad() {
     struct Position { std::uint16_t x, y, z, pad; };
     const std::vector<Position> positions = {{0, 0, 0, 0}, {1023, 0, 0, 0}, {1023, 1023, 0, 0}, {0, 1023, 0, 0}};
-    // Octahedral normals: +z for all four vertices (x, y, z, w: the filter keeps w).
-    const std::vector<float> unitZ = {0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0};
+    // Octahedral normals (x, y, z, w: the filter keeps w), not +z alone: +z's encoding reads
+    // as +z even undecoded.
+    const std::vector<float> unitNormals = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0.6f, 0, -0.8f, 0};
     std::vector<std::int8_t> normals(16);
-    meshopt_encodeFilterOct(normals.data(), 4, 4, 8, unitZ.data());
+    meshopt_encodeFilterOct(normals.data(), 4, 4, 8, unitNormals.data());
     const std::vector<float> uv = {0, 0, 1, 0, 1, 1, 0, 1};
     std::vector<std::uint32_t> uvExp(8);
     meshopt_encodeFilterExp(uvExp.data(), 4, 8, 15, uv.data());

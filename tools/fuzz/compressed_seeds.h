@@ -11,8 +11,8 @@ namespace compressed_seeds {
 gltf_writer::GltfBuilder dracoCube();
 
 // A two-triangle quad under EXT_meshopt_compression and KHR_mesh_quantization: positions
-// UNSIGNED_SHORT (ATTRIBUTES, dequantized by the node's scale), normals BYTE normalized
-// (ATTRIBUTES + OCTAHEDRAL), texture coordinates FLOAT (ATTRIBUTES + EXPONENTIAL),
+// UNSIGNED_SHORT (ATTRIBUTES, dequantized by the node's scale), normals +x, +y, +z and
+// (0.6, 0, -0.8) as BYTE normalized (ATTRIBUTES + OCTAHEDRAL), texture coordinates FLOAT (ATTRIBUTES + EXPONENTIAL),
 // indices as TRIANGLES and as INDICES; every decoded view lives in a fallback buffer
 // without data, as gltfpack writes it.
 gltf_writer::GltfBuilder meshoptQuad();
