@@ -22,13 +22,14 @@ struct DracoPrimitive {
     std::map<std::string, std::uint32_t> attributes;
 };
 
-DracoPrimitive readExtension(const JsonFields& fields, const tinygltf::Model& model) {
+// `fileViews`: how many bufferViews the file has (decoded primitives append more, which no
+// file may name).
+DracoPrimitive readExtension(const JsonFields& fields, std::size_t fileViews) {
     DracoPrimitive draco;
     const std::optional<std::uint64_t> view = fields.index("bufferView");
     if (!view) fields.fail("bufferView", "is missing");
-    if (*view >= model.bufferViews.size())
-        fields.fail("bufferView", std::to_string(*view) + " does not exist (there are " +
-                                      std::to_string(model.bufferViews.size()) + ")");
+    if (*view >= fileViews)
+        fields.fail("bufferView", std::to_string(*view) + " does not exist (there are " + std::to_string(fileViews) + ")");
     draco.bufferView = static_cast<std::size_t>(*view);
     const nlohmann::json* attributes = fields.find("attributes");
     if (!attributes || !attributes->is_object()) fields.fail("attributes", "is missing or not an object");
@@ -169,13 +170,14 @@ private:
 } // namespace
 
 void decodeDracoPrimitives(const LoadContext& context, const nlohmann::json& document, tinygltf::Model& model) {
+    const std::size_t fileViews = model.bufferViews.size();
     for (std::size_t m = 0; m < model.meshes.size(); ++m) {
         const nlohmann::json& meshJson = arrayElement(document, "meshes", m);
         for (std::size_t p = 0; p < model.meshes[m].primitives.size(); ++p) {
             const std::string object = indexedNamed("meshes", m, model.meshes[m].name) + "." + indexed("primitives", p);
             const JsonFields fields(context, object, arrayElement(meshJson, "primitives", p), "");
             if (const std::optional<JsonFields> extension = fields.extension(kExtension)) {
-                const DracoPrimitive draco = readExtension(*extension, model);
+                const DracoPrimitive draco = readExtension(*extension, fileViews);
                 PrimitiveDecoder(context, model, model.meshes[m].primitives[p], object).decode(draco);
             }
         }

@@ -43,12 +43,13 @@ std::uint64_t requiredIndex(const JsonFields& fields, const char* key) {
     return *value;
 }
 
-CompressedView readExtension(const LoadContext& context, const JsonFields& fields, const tinygltf::Model& model) {
+// `fileBuffers`: how many buffers the file has (decoded views append more, which no file
+// may name).
+CompressedView readExtension(const LoadContext& context, const JsonFields& fields, std::size_t fileBuffers) {
     CompressedView view;
     const std::uint64_t buffer = requiredIndex(fields, "buffer");
-    if (buffer >= model.buffers.size())
-        fields.fail("buffer", std::to_string(buffer) + " does not exist (there are " +
-                                  std::to_string(model.buffers.size()) + ")");
+    if (buffer >= fileBuffers)
+        fields.fail("buffer", std::to_string(buffer) + " does not exist (there are " + std::to_string(fileBuffers) + ")");
     view.buffer = static_cast<std::size_t>(buffer);
     view.byteOffset = fields.index("byteOffset").value_or(0);
     view.byteLength = requiredIndex(fields, "byteLength");
@@ -141,6 +142,7 @@ std::vector<std::uint8_t> decode(const LoadContext& context, const std::string& 
 } // namespace
 
 void decodeMeshoptBufferViews(const LoadContext& context, const nlohmann::json& document, tinygltf::Model& model) {
+    const std::size_t fileBuffers = model.buffers.size();
     for (std::size_t i = 0; i < model.bufferViews.size(); ++i) {
         tinygltf::BufferView& target = model.bufferViews[i];
         const std::string object = indexed("bufferViews", i);
@@ -154,7 +156,7 @@ void decodeMeshoptBufferViews(const LoadContext& context, const nlohmann::json& 
                                          ", an EXT_meshopt_compression fallback buffer without data, but is not compressed");
             continue;
         }
-        const CompressedView view = readExtension(context, *fields, model);
+        const CompressedView view = readExtension(context, *fields, fileBuffers);
         const std::uint64_t decodedBytes = view.count * view.byteStride;  // both capped: no overflow
         if (decodedBytes > context.options.maxFileBytes)
             fields->fail("count", "decodes to " + std::to_string(decodedBytes) + " bytes, more than the limit of " +
