@@ -22,6 +22,11 @@ packages=(
   # glTF-Validator; npm installs it, at the version tools/validate-gltf/package-lock.json
   # pins, into the build folder (CMake target gltf_validator).
   nodejs npm
+  # Compressed glTF: the loader decodes KHR_draco_mesh_compression with libdraco and
+  # EXT_meshopt_compression with libmeshoptimizer (engine/src/gltf/Gltf*Decoder.cpp, also
+  # linked by tools/fuzz); tests/unit/test_gltf_compressed.cpp and the shadow-mask test make
+  # their meshopt files with gltfpack.
+  libdraco-dev libmeshoptimizer-dev gltfpack
 )
 
 missing=()

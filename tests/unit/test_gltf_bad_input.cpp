@@ -159,9 +159,11 @@ const std::vector<BadInputCase<QuadEdit>> kQuadEdits = {
      {"deep.glb", "JSON", "nesting deeper than 64 levels"}},
     {"UnsupportedAssetVersion", set("/asset/version", "1.0"),
      {"old.gltf", "asset", "version '1.0' is not supported"}},
-    {"UnsupportedRequiredExtension", set("/extensionsRequired", {"KHR_lights_punctual", "KHR_draco_mesh_compression"}),
-     {"draco.gltf", "extensionsRequired", "'KHR_draco_mesh_compression' is not supported",
-      "(supported: KHR_lights_punctual, KHR_texture_transform, KHR_lights_shadows)"}},
+    // An extension the engine has no decoder library for (WebP images).
+    {"UnsupportedRequiredExtension", set("/extensionsRequired", {"KHR_lights_punctual", "EXT_texture_webp"}),
+     {"webp.gltf", "extensionsRequired", "'EXT_texture_webp' is not supported",
+      "(supported: KHR_lights_punctual, KHR_texture_transform, KHR_lights_shadows, KHR_draco_mesh_compression, "
+      "EXT_meshopt_compression, KHR_mesh_quantization)"}},
     {"TinygltfErrorsArePassedOn", set("/accessors/0/type", "VEC5"),
      {"vec5.gltf", "tinygltf", "VEC5"}},
     // tinygltf 2.7.0 throws std::out_of_range here.
@@ -333,9 +335,10 @@ const std::vector<BadInputCase<QuadEdit>> kQuadEdits = {
     // TEXCOORD_1, COLOR_0
     {"Texcoord1OfTheWrongCount", floatAttribute("TEXCOORD_1", {0, 0, 1, 0, 1, 1}, 2, "VEC2"),
      {"uv1.gltf", "meshes[0].primitives[0]", "TEXCOORD_1 has 3 elements, POSITION has 4"}},
-    {"Texcoord1OfIntegersNotNormalized", rawAttribute("TEXCOORD_1", {0, 0, 1, 0, 1, 1, 0, 1}, kUnsignedByte, "VEC2", false),
+    // KHR_mesh_quantization allows 8- and 16-bit texture coordinates, normalized or not; not 32-bit.
+    {"Texcoord1OfUnsignedInt", rawAttribute("TEXCOORD_1", std::vector<std::uint8_t>(32, 0), kUnsignedInt, "VEC2", false),
      {"uv1.gltf", "accessors[2]", "used as TEXCOORD_1 of meshes[0].primitives[0]",
-      "must be VEC2 of FLOAT or normalized UNSIGNED_BYTE/UNSIGNED_SHORT, but is VEC2 of UNSIGNED_BYTE"}},
+      "must be VEC2 of FLOAT or (UNSIGNED_)BYTE/(UNSIGNED_)SHORT, but is VEC2 of UNSIGNED_INT"}},
     {"Texcoord1WithNaN", floatAttribute("TEXCOORD_1", {0, 0, 1, 0, 1, kNaN, 0, 1}, 2, "VEC2"),
      {"uv1.gltf", "accessors[2]", "TEXCOORD_1", "element 2", "not a finite number"}},
     {"Color0OfVec2", floatAttribute("COLOR_0", {1, 1, 1, 1, 1, 1, 1, 1}, 2, "VEC2"),

@@ -8,8 +8,10 @@
 //     a bufferView and a file URI ('tex.png', also next to the fuzzed file), materials,
 //     both camera types, KHR_lights_punctual, node hierarchies with TRS and matrices;
 //     samplers, TEXCOORD_1, KHR_texture_transform, COLOR_0, KHR_lights_shadows and
-//     shadow_alpha_cutoff.
+//     shadow_alpha_cutoff; Draco and meshopt-compressed, quantized meshes
+//     (compressed_seeds.h).
 // Small on purpose: libFuzzer mutates short inputs much faster.
+#include "compressed_seeds.h"
 #include "gltf_writer.h"  // tests/unit/: the loader tests' glTF writer
 
 #include <stb_image_write.h>
@@ -233,6 +235,9 @@ int main(int argc, char** argv) {
         gltf(zeroAccessor(), "zeros.gltf");
         gltf(texturesColorsShadows(), "textures-colors-shadows.gltf");
         glb(texturesColorsShadows(), "textures-colors-shadows.glb");
+        gltf(compressed_seeds::dracoCube(), "draco-cube.gltf");
+        glb(compressed_seeds::dracoCube(), "draco-cube.glb");
+        glb(compressed_seeds::meshoptQuad(), "meshopt-quad.glb");
     } catch (const std::exception& error) {
         std::fprintf(stderr, "make_seeds: %s\n", error.what());
         return 1;

@@ -2,6 +2,7 @@
 
 #include "GltfValidation.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 
@@ -37,10 +38,13 @@ const char* componentTypeName(int componentType) {
 bool componentsFit(const tinygltf::Accessor& accessor, AccessorUse::Components wanted) {
     const int type = accessor.componentType;
     const bool unsignedSmall = type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE || type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT;
+    const bool signedSmall = type == TINYGLTF_COMPONENT_TYPE_BYTE || type == TINYGLTF_COMPONENT_TYPE_SHORT;
+    const bool isFloat = type == TINYGLTF_COMPONENT_TYPE_FLOAT;
     switch (wanted) {
-    case AccessorUse::Components::Float: return type == TINYGLTF_COMPONENT_TYPE_FLOAT;
-    case AccessorUse::Components::FloatOrNormalized:
-        return type == TINYGLTF_COMPONENT_TYPE_FLOAT || (unsignedSmall && accessor.normalized);
+    case AccessorUse::Components::Float: return isFloat;
+    case AccessorUse::Components::FloatOrNormalized: return isFloat || (unsignedSmall && accessor.normalized);
+    case AccessorUse::Components::FloatOrSignedNormalized: return isFloat || (signedSmall && accessor.normalized);
+    case AccessorUse::Components::Quantized: return isFloat || unsignedSmall || signedSmall;
     case AccessorUse::Components::UnsignedInteger:
         return (unsignedSmall || type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT) && !accessor.normalized;
     }
@@ -51,6 +55,8 @@ const char* describeWanted(AccessorUse::Components wanted) {
     switch (wanted) {
     case AccessorUse::Components::Float: return "FLOAT";
     case AccessorUse::Components::FloatOrNormalized: return "FLOAT or normalized UNSIGNED_BYTE/UNSIGNED_SHORT";
+    case AccessorUse::Components::FloatOrSignedNormalized: return "FLOAT or normalized BYTE/SHORT";
+    case AccessorUse::Components::Quantized: return "FLOAT or (UNSIGNED_)BYTE/(UNSIGNED_)SHORT";
     case AccessorUse::Components::UnsignedInteger: return "UNSIGNED_BYTE/SHORT/INT (not normalized)";
     }
     return "";
@@ -93,10 +99,25 @@ T load(const std::uint8_t* bytes) {
     return value;
 }
 
-float componentAsFloat(const std::uint8_t* bytes, int componentType) {
+// glTF 2.0 3.11: normalized unsigned c / MAX, normalized signed max(c / MAX, -1).
+float componentAsFloat(const std::uint8_t* bytes, int componentType, bool normalized) {
     switch (componentType) {
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return load<std::uint8_t>(bytes) / 255.0f;
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return load<std::uint16_t>(bytes) / 65535.0f;
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: {
+        const float value = load<std::uint8_t>(bytes);
+        return normalized ? value / 255.0f : value;
+    }
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
+        const float value = load<std::uint16_t>(bytes);
+        return normalized ? value / 65535.0f : value;
+    }
+    case TINYGLTF_COMPONENT_TYPE_BYTE: {
+        const float value = load<std::int8_t>(bytes);
+        return normalized ? std::max(value / 127.0f, -1.0f) : value;
+    }
+    case TINYGLTF_COMPONENT_TYPE_SHORT: {
+        const float value = load<std::int16_t>(bytes);
+        return normalized ? std::max(value / 32767.0f, -1.0f) : value;
+    }
     default: return load<float>(bytes);
     }
 }
@@ -119,7 +140,7 @@ std::vector<float> readFloatComponents(const LoadContext& context, const tinyglt
     std::vector<float> values(accessor.count * components);
     forEachElement(model, accessor, [&](std::size_t element, const std::uint8_t* bytes) {
         for (std::size_t c = 0; c < components; ++c) {
-            const float value = componentAsFloat(bytes + c * bytesPerComponent, accessor.componentType);
+            const float value = componentAsFloat(bytes + c * bytesPerComponent, accessor.componentType, accessor.normalized);
             if (!std::isfinite(value))
                 context.fail(indexed("accessors", accessorIndex),
                              "used as " + use.usedAs + ", element " + std::to_string(element) + " holds " +

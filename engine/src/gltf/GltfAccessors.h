@@ -15,7 +15,12 @@ namespace engine::gltf {
 struct AccessorUse {
     enum class Components {
         Float,              // FLOAT only (positions, normals)
-        FloatOrNormalized,  // FLOAT, or normalized UNSIGNED_BYTE/SHORT (texture coordinates)
+        FloatOrNormalized,  // FLOAT, or normalized UNSIGNED_BYTE/SHORT (colors)
+        // KHR_mesh_quantization: FLOAT, or BYTE/SHORT normalized (normals)
+        FloatOrSignedNormalized,
+        // KHR_mesh_quantization: FLOAT, or any 8/16-bit integer, normalized or not
+        // (positions, texture coordinates); the node transform dequantizes.
+        Quantized,
         UnsignedInteger,    // UNSIGNED_BYTE/SHORT/INT, not normalized (indices)
     };
     std::string usedAs;  // "POSITION of meshes[0].primitives[1]", for messages
@@ -25,7 +30,8 @@ struct AccessorUse {
 };
 
 // All components of the accessor (count x components per element), as float: normalized
-// integers map to [0, 1]. Refuses an accessor whose type does not fit `use`, and any value
+// unsigned integers map to [0, 1], normalized signed ones to [-1, 1] (glTF: max(c / MAX, -1)),
+// integers that are not normalized keep their value. Refuses an accessor whose type does not fit `use`, and any value
 // that is not finite. With an alternativeType, the caller asks the accessor which it is. The accessor must have passed validateBinaryLayout.
 std::vector<float> readFloatComponents(const LoadContext& context, const tinygltf::Model& model,
                                        int accessorIndex, const AccessorUse& use);

@@ -89,6 +89,26 @@ GltfContainer splitGlb(const LoadContext& context, std::span<const std::uint8_t>
     return container;
 }
 
+std::vector<std::uint8_t> joinGlb(std::string_view json, std::span<const std::uint8_t> bin) {
+    std::vector<std::uint8_t> bytes(kHeaderBytes);
+    const auto appendU32 = [&bytes](std::uint32_t value) {
+        for (int shift = 0; shift < 32; shift += 8) bytes.push_back(static_cast<std::uint8_t>(value >> shift));
+    };
+    const auto appendChunk = [&](std::uint32_t type, const std::uint8_t* data, std::size_t size, std::uint8_t pad) {
+        const std::size_t padded = (size + 3) / 4 * 4;
+        appendU32(static_cast<std::uint32_t>(padded));
+        appendU32(type);
+        bytes.insert(bytes.end(), data, data + size);
+        bytes.insert(bytes.end(), padded - size, pad);
+    };
+    appendChunk(kJsonChunkType, reinterpret_cast<const std::uint8_t*>(json.data()), json.size(), ' ');
+    if (!bin.empty()) appendChunk(kBinChunkType, bin.data(), bin.size(), 0);
+    const std::uint32_t header[3] = {kGlbMagic, 2, static_cast<std::uint32_t>(bytes.size())};
+    for (int i = 0; i < 3; ++i)
+        for (int b = 0; b < 4; ++b) bytes[i * 4 + b] = static_cast<std::uint8_t>(header[i] >> (8 * b));
+    return bytes;
+}
+
 GltfContainer wholeFileAsJson(std::span<const std::uint8_t> bytes) {
     GltfContainer container;
     container.json = {reinterpret_cast<const char*>(bytes.data()), bytes.size()};

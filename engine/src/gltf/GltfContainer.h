@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <span>
 #include <string_view>
+#include <vector>
 
 namespace engine::gltf {
 
@@ -22,6 +23,10 @@ bool hasGlbMagic(std::span<const std::uint8_t> fileBytes);
 // Splits a GLB file into its chunks after checking magic, version 2, the header length
 // against the file size, and every chunk length against what is left of the file.
 GltfContainer splitGlb(const LoadContext& context, std::span<const std::uint8_t> fileBytes);
+
+// The GLB file of `json` and `bin` (BIN chunk left out when empty), each chunk padded as
+// the spec asks: JSON with spaces, BIN with zeros.
+std::vector<std::uint8_t> joinGlb(std::string_view json, std::span<const std::uint8_t> bin);
 
 // A .gltf file: all of it is JSON text.
 GltfContainer wholeFileAsJson(std::span<const std::uint8_t> fileBytes);

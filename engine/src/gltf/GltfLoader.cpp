@@ -1,14 +1,19 @@
 // loadGltf: the order of the stages is the safety argument. Nothing reaches tinygltf
 // before the container layout, the JSON nesting depth, every URI and every buffer length
-// have been checked; nothing reads buffer bytes before the structural validation.
+// have been checked; nothing reads buffer bytes before the structural validation. The
+// decoders of compressed data (meshopt views, Draco primitives) sit in between: each checks
+// what it reads, and what they produce goes through the whole validation like any file.
 #include "engine/gltf/GltfLoader.h"
 
 #include "GltfContainer.h"
 #include "GltfContext.h"
 #include "GltfConvert.h"
+#include "GltfDracoDecoder.h"
 #include "GltfFileAccess.h"
 #include "GltfJsonDocument.h"
 #include "GltfLights.h"
+#include "GltfMeshoptDecoder.h"
+#include "GltfCompressionPlaceholders.h"
 #include "GltfParse.h"
 #include "GltfPreflight.h"
 #include "GltfValidation.h"
@@ -30,6 +35,18 @@ gltf::LoadContext makeContext(const std::filesystem::path& path, std::vector<std
     return context;
 }
 
+// tinygltf refuses parts of compressed files that the extensions allow: it parses a copy
+// of the file with placeholders there (GltfCompressionPlaceholders.h).
+gltf::ParsedGltf parseWithCompressionPlaceholders(const gltf::LoadContext& context, const nlohmann::json& document,
+                                              const gltf::GltfContainer& container,
+                                              std::span<const std::uint8_t> fileBytes) {
+    const std::vector<std::uint8_t> rewritten = gltf::withCompressionPlaceholders(document, container);
+    if (rewritten.empty()) return gltf::parseWithTinygltf(context, container, fileBytes);
+    const gltf::GltfContainer rewrittenContainer =
+        container.binary ? gltf::splitGlb(context, rewritten) : gltf::wholeFileAsJson(rewritten);
+    return gltf::parseWithTinygltf(context, rewrittenContainer, rewritten);
+}
+
 } // namespace
 
 Scene loadGltf(const std::filesystem::path& path, std::vector<std::string>* warnings,
@@ -49,7 +66,11 @@ Scene loadGltf(const std::filesystem::path& path, std::vector<std::string>* warn
 
     // Lights come from our own parse; tinygltf 2.7.0 parses them too but checks nothing.
     std::vector<Light> lights = gltf::readPunctualLights(context, document);
-    const gltf::ParsedGltf parsed = gltf::parseWithTinygltf(context, container, fileBytes);
+    gltf::ParsedGltf parsed = parseWithCompressionPlaceholders(context, document, container, fileBytes);
+    gltf::decodeMeshoptBufferViews(context, document, parsed.model);
+    gltf::validateBufferViews(context, parsed.model);
+    gltf::validateReferences(context, parsed.model, lights.size());
+    gltf::decodeDracoPrimitives(context, document, parsed.model);
     gltf::validateModel(context, parsed.model, lights.size());
     return gltf::convertToScene(context, parsed, document, std::move(lights));
 }

@@ -50,12 +50,15 @@ public:
 
         Primitive primitive;
         primitive.material = source.material;
-        primitive.positions = readFloatVectors<3>(context_, model_, *positionAccessor, vectorUse("POSITION", TINYGLTF_TYPE_VEC3));
+        primitive.positions = readFloatVectors<3>(
+            context_, model_, *positionAccessor, vectorUse("POSITION", TINYGLTF_TYPE_VEC3, AccessorUse::Components::Quantized));
         const std::size_t vertexCount = primitive.positions.size();
         if (vertexCount > std::numeric_limits<std::uint32_t>::max())
             context_.fail(object_, "has more vertices than 32-bit indices can address");
         if (const auto normals = attribute(source, "NORMAL")) {
-            primitive.normals = readFloatVectors<3>(context_, model_, *normals, vectorUse("NORMAL", TINYGLTF_TYPE_VEC3));
+            primitive.normals = readFloatVectors<3>(
+                context_, model_, *normals,
+                vectorUse("NORMAL", TINYGLTF_TYPE_VEC3, AccessorUse::Components::FloatOrSignedNormalized));
             requireVertexCount("NORMAL", primitive.normals.size(), vertexCount);
         }
         primitive.texcoords = readTexcoords(source, "TEXCOORD_0", vertexCount);
@@ -81,8 +84,11 @@ public:
     }
 
 private:
-    AccessorUse vectorUse(const char* semantic, int type) const {
-        return {std::string(semantic) + " of " + object_, type, AccessorUse::Components::Float};
+    // Positions, normals and texture coordinates take the KHR_mesh_quantization types too;
+    // they are read whether or not the file declares the extension, as the values mean
+    // the same either way.
+    AccessorUse vectorUse(const char* semantic, int type, AccessorUse::Components components) const {
+        return {std::string(semantic) + " of " + object_, type, components};
     }
 
     // TEXCOORD_n: FLOAT or normalized unsigned, one per vertex; empty when absent.
@@ -90,8 +96,7 @@ private:
                                          std::size_t vertexCount) const {
         const std::optional<int> accessor = attribute(source, semantic);
         if (!accessor) return {};
-        AccessorUse use = vectorUse(semantic, TINYGLTF_TYPE_VEC2);
-        use.components = AccessorUse::Components::FloatOrNormalized;
+        const AccessorUse use = vectorUse(semantic, TINYGLTF_TYPE_VEC2, AccessorUse::Components::Quantized);
         std::vector<glm::vec2> texcoords = readFloatVectors<2>(context_, model_, *accessor, use);
         requireVertexCount(semantic, texcoords.size(), vertexCount);
         return texcoords;
@@ -101,9 +106,8 @@ private:
     std::vector<glm::vec4> readColors(const tinygltf::Primitive& source, std::size_t vertexCount) const {
         const std::optional<int> accessor = attribute(source, "COLOR_0");
         if (!accessor) return {};
-        AccessorUse use = vectorUse("COLOR_0", TINYGLTF_TYPE_VEC3);
+        AccessorUse use = vectorUse("COLOR_0", TINYGLTF_TYPE_VEC3, AccessorUse::Components::FloatOrNormalized);
         use.alternativeType = TINYGLTF_TYPE_VEC4;
-        use.components = AccessorUse::Components::FloatOrNormalized;
         std::vector<glm::vec4> colors;
         if (model_.accessors[*accessor].type == TINYGLTF_TYPE_VEC3) {
             for (const glm::vec3& rgb : readFloatVectors<3>(context_, model_, *accessor, use))

@@ -1,6 +1,7 @@
 #include "GltfPreflight.h"
 
 #include "GltfFileAccess.h"
+#include "GltfCompressionPlaceholders.h"
 #include "GltfPropertyTypes.h"
 #include "GltfValidation.h"
 
@@ -11,7 +12,9 @@ namespace engine::gltf {
 
 namespace {
 
-constexpr std::array kSupportedExtensions{"KHR_lights_punctual", "KHR_texture_transform", "KHR_lights_shadows"};
+constexpr std::array kSupportedExtensions{"KHR_lights_punctual",        "KHR_texture_transform",
+                                          "KHR_lights_shadows",         "KHR_draco_mesh_compression",
+                                          "EXT_meshopt_compression",    "KHR_mesh_quantization"};
 
 // "KHR_lights_punctual, KHR_texture_transform, ...": the list refusals quote.
 std::string supportedExtensionList() {
@@ -100,6 +103,7 @@ void checkBuffer(const LoadContext& context, const nlohmann::json& buffer, std::
                                  std::to_string(context.options.maxFileBytes));
 
     const auto uri = buffer.find("uri");
+    if (isDatalessFallbackBuffer(buffer)) return;  // no bytes to check: see GltfCompressionPlaceholders.h
     if (uri == buffer.end()) {
         if (!container.binary) context.fail(object, "has no uri (only a GLB's first buffer may omit it)");
         if (index != 0) context.fail(object, "has no uri, but only buffers[0] may refer to the GLB BIN chunk");

@@ -20,23 +20,6 @@ std::string runsPast(const std::string& container, std::uint64_t needed, std::ui
            std::to_string(has) + ")";
 }
 
-void validateBufferViews(const LoadContext& context, const tinygltf::Model& model) {
-    for (std::size_t i = 0; i < model.bufferViews.size(); ++i) {
-        const tinygltf::BufferView& view = model.bufferViews[i];
-        const std::string object = indexed("bufferViews", i);
-        if (view.buffer < 0 || static_cast<std::size_t>(view.buffer) >= model.buffers.size())
-            context.fail(object, "buffer " + std::to_string(view.buffer) + " does not exist");
-        if (view.byteLength == 0) context.fail(object, "byteLength is 0 (glTF requires at least 1)");
-        const std::uint64_t bufferBytes = model.buffers[view.buffer].data.size();
-        std::uint64_t end = 0;
-        if (__builtin_add_overflow(std::uint64_t{view.byteOffset}, std::uint64_t{view.byteLength}, &end))
-            context.fail(object, "byteOffset + byteLength overflows 64 bits");
-        if (end > bufferBytes) context.fail(object, runsPast(indexed("buffers", view.buffer), end, bufferBytes));
-        if (const std::string problem = byteStrideProblem(view.byteStride); !problem.empty())
-            context.fail(object, problem);
-    }
-}
-
 void validateAccessor(const LoadContext& context, const tinygltf::Model& model, std::size_t index) {
     const tinygltf::Accessor& accessor = model.accessors[index];
     const std::string object = indexed("accessors", index);
@@ -167,6 +150,23 @@ std::size_t componentsPerElement(int type) {
     case TINYGLTF_TYPE_MAT3: return 9;
     case TINYGLTF_TYPE_MAT4: return 16;
     default: return 0;
+    }
+}
+
+void validateBufferViews(const LoadContext& context, const tinygltf::Model& model) {
+    for (std::size_t i = 0; i < model.bufferViews.size(); ++i) {
+        const tinygltf::BufferView& view = model.bufferViews[i];
+        const std::string object = indexed("bufferViews", i);
+        if (view.buffer < 0 || static_cast<std::size_t>(view.buffer) >= model.buffers.size())
+            context.fail(object, "buffer " + std::to_string(view.buffer) + " does not exist");
+        if (view.byteLength == 0) context.fail(object, "byteLength is 0 (glTF requires at least 1)");
+        const std::uint64_t bufferBytes = model.buffers[view.buffer].data.size();
+        std::uint64_t end = 0;
+        if (__builtin_add_overflow(std::uint64_t{view.byteOffset}, std::uint64_t{view.byteLength}, &end))
+            context.fail(object, "byteOffset + byteLength overflows 64 bits");
+        if (end > bufferBytes) context.fail(object, runsPast(indexed("buffers", view.buffer), end, bufferBytes));
+        if (const std::string problem = byteStrideProblem(view.byteStride); !problem.empty())
+            context.fail(object, problem);
     }
 }
 

@@ -20,6 +20,8 @@ std::string byteStrideProblem(std::uint64_t byteStride);
 // Everything below, in an order where each check may rely on the ones before.
 void validateModel(const LoadContext& context, const tinygltf::Model& model, std::size_t lightCount);
 
+// Every view inside its buffer (64-bit, overflow-checked), strides in range.
+void validateBufferViews(const LoadContext& context, const tinygltf::Model& model);
 // Buffers, views and accessors: every byte an accessor may read lies inside its view and
 // every view inside its buffer (64-bit, overflow-checked); strides and counts in range.
 void validateBinaryLayout(const LoadContext& context, const tinygltf::Model& model);
