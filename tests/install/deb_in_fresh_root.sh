@@ -59,6 +59,8 @@ chroot "$root" /usr/bin/env -i HOME=/root PATH=/usr/local/sbin:/usr/local/bin:/u
     engine-render --scene \$data/scenes/showcase.gltf --out default-config.png --width 320 --height 240
     engine-render --config \$data/engine.json --scene \$data/scenes/showcase.gltf --out t.png --width 320 --height 240 --truth
     ls -l x.png default-config.png t.png
+    shadowmap-bench --scene \$data/scenes/showcase.gltf --variants standard --resolutions 512 --depth-formats d24 --filters pcf --frames 1 --width 160 --height 120 --out bench
+    head -3 bench/results.csv
     echo '{\"plugins\": [{\"library\": \"no_such_plugin\"}]}' > missing.json
     if ENGINE_PLUGIN_PATH=/opt/a:/opt/b engine-render --config missing.json --scene \$data/scenes/showcase.gltf --out y.png; then exit 1; fi
   "
