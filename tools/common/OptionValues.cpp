@@ -1,5 +1,8 @@
 #include "OptionValues.h"
 
+#include "engine/config/EngineConfig.h"
+#include "engine/util/Error.h"
+
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
@@ -73,6 +76,14 @@ engine::Light::Type parseLightType(const std::string& flag, const std::string& t
     if (text == "point") return engine::Light::Type::Point;
     if (text == "directional") return engine::Light::Type::Directional;
     throw std::invalid_argument(flag + ": \"" + text + "\" is not spot, point or directional");
+}
+
+std::string defaultConfigPath() {
+    try {
+        return engine::findDefaultEngineConfig().string();
+    } catch (const engine::InputError& error) {
+        throw std::invalid_argument(std::string("no --config given and ") + error.what());
+    }
 }
 
 } // namespace tools

@@ -31,4 +31,8 @@ std::pair<std::string, std::string> parseAssignment(const std::string& flag, con
 // --key-light's light types: spot, point or directional.
 engine::Light::Type parseLightType(const std::string& flag, const std::string& text);
 
+// --config's value when the flag is absent: engine::findDefaultEngineConfig (a checkout's
+// content/engine.json, else the installed one), its "none found" error as a flag error.
+std::string defaultConfigPath();
+
 } // namespace tools

@@ -81,5 +81,6 @@ RenderOptions parseRenderOptions(int argc, char** argv) {
     if (options.help) return options;
     if (!sawScene) throw std::invalid_argument("--scene is required");
     if (!sawOut && !options.list) throw std::invalid_argument("--out is required");
+    if (options.config.empty()) options.config = tools::defaultConfigPath();
     return options;
 }

@@ -12,7 +12,7 @@
 #include <vector>
 
 struct RenderOptions {
-    std::string config = "content/engine.json";
+    std::string config;  // empty: tools::defaultConfigPath()
     std::string scene;
     std::string out;
     int width = 1280, height = 720;

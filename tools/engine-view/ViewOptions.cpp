@@ -49,6 +49,7 @@ ViewOptions parseViewOptions(int argc, char** argv) {
     });
     if (options.help) return options;
     if (!sawScene) throw std::invalid_argument("--scene is required");
+    if (options.config.empty()) options.config = tools::defaultConfigPath();
     return options;
 }
 

@@ -9,7 +9,7 @@
 namespace engine_view {
 
 struct ViewOptions {
-    std::string config = "content/engine.json";
+    std::string config;  // empty: tools::defaultConfigPath()
     std::string scene;
     std::string camera;          // empty: first glTF camera, else a framing one
     int width = 1280, height = 720;  // the window's initial size (the image follows resizes)

@@ -5,7 +5,10 @@
 #include "CommandLine.h"
 #include "OptionValues.h"
 
+#include "engine/util/InstallLayout.h"
 #include "shadowmap/ShadowSettings.h"
+
+#include <filesystem>
 
 #include <stdexcept>
 
@@ -30,6 +33,14 @@ std::vector<std::string> knownVariants() {
 }
 std::vector<std::string> knownFormats() { return shadowmap::settingKey("depth_format").choices; }
 std::vector<std::string> knownFilters() { return shadowmap::settingKey("filter").choices; }
+
+// The source tree's content/ while it exists (a build), else the install's
+// share/shadow-engine, which holds the same engine.json and scenes/.
+std::string contentDir() {
+    std::error_code error;
+    if (std::filesystem::is_directory(BENCH_CONTENT_DIR, error)) return BENCH_CONTENT_DIR;
+    return engine::installedDataDir().string();
+}
 
 std::string joined(const std::vector<std::string>& items) {
     std::string text;
@@ -70,7 +81,7 @@ const char* benchUsage() {
         "  DIR/time_vs_error.gp and .png  (one panel per scene; the png needs gnuplot)\n"
         "\n"
         "Defaults (the default sweep: 324 rows, about 6 minutes on 2 cores):\n"
-        "  --config   <source>/content/engine.json\n"
+        "  --config   <source>/content/engine.json (installed: <prefix>/share/shadow-engine/engine.json)\n"
         "  --scene    <source>/content/scenes/showcase.gltf and, when assimp-testmodels is\n"
         "             installed, /usr/share/assimp/models/glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb;\n"
         "             and the alpha-masked scenes with their opaque twins, masked_fence, opaque_fence,\n"
@@ -87,7 +98,7 @@ const char* benchUsage() {
 
 BenchOptions parseBenchOptions(int argc, char** argv) {
     BenchOptions options;
-    options.config = std::string(BENCH_CONTENT_DIR) + "/engine.json";
+    options.config = contentDir() + "/engine.json";
     options.width = kDefaultWidth;
     options.height = kDefaultHeight;
     options.frames = kDefaultFrames;
@@ -121,7 +132,7 @@ BenchOptions parseBenchOptions(int argc, char** argv) {
     if (options.help) return options;
     if (options.out.empty()) throw std::invalid_argument("--out is required");
     if (options.defaultScenes) {
-        const std::string scenes = std::string(BENCH_CONTENT_DIR) + "/scenes/";
+        const std::string scenes = contentDir() + "/scenes/";
         options.scenes = {scenes + "showcase.gltf", kEngineModel};
         for (const char* name : {"masked_fence", "opaque_fence", "masked_canopy", "opaque_canopy"})
             options.maskedScenes.push_back(scenes + name + ".gltf");

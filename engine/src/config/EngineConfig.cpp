@@ -1,6 +1,7 @@
 #include "engine/config/EngineConfig.h"
 
 #include "engine/util/Error.h"
+#include "engine/util/InstallLayout.h"
 #include "engine/util/JsonRead.h"
 
 #include <fstream>
@@ -87,6 +88,20 @@ EngineConfig loadEngineConfig(const std::filesystem::path& path) {
     std::ostringstream text;
     text << in.rdbuf();
     return parseEngineConfig(text.str(), path);
+}
+
+std::vector<std::filesystem::path> defaultEngineConfigCandidates() {
+    return {std::filesystem::path("content") / "engine.json", installedDataDir() / "engine.json"};
+}
+
+std::filesystem::path findDefaultEngineConfig() {
+    std::string tried;
+    for (const auto& candidate : defaultEngineConfigCandidates()) {
+        std::error_code error;
+        if (std::filesystem::is_regular_file(candidate, error)) return candidate;
+        tried += (tried.empty() ? "" : ", ") + candidate.string();
+    }
+    throwInputError("", "engine config", "no default engine.json found (tried " + tried + ")");
 }
 
 } // namespace engine

@@ -1,12 +1,15 @@
 #include "engine/plugin/PluginHost.h"
 
 #include "engine/util/Error.h"
+#include "engine/util/InstallLayout.h"
 
 #include <engine_plugin/PluginAbi.h>
 
 #include <dlfcn.h>
 #include <sys/stat.h>
 
+#include <algorithm>
+#include <cstdlib>
 #include <cstring>
 
 namespace engine {
@@ -61,7 +64,31 @@ PluginHost::~PluginHost() {
 
 std::vector<std::filesystem::path> PluginHost::searchDirectories(const EngineConfig& config) {
     std::vector<std::filesystem::path> dirs = config.pluginDirs;
-    dirs.emplace_back(ENGINE_DEFAULT_PLUGIN_DIR);
+    for (const auto& dir : environmentPluginDirs()) dirs.push_back(dir);
+    dirs.push_back(installedPluginDir());
+    if (const auto buildDir = buildTreePluginDir()) dirs.push_back(*buildDir);
+    // A folder named twice (ENGINE_PLUGIN_PATH set to the installed one) is searched once,
+    // at its first place, so the list in a "not found" error has no repeats.
+    std::vector<std::filesystem::path> unique;
+    for (const auto& dir : dirs)
+        if (std::find(unique.begin(), unique.end(), dir.lexically_normal()) == unique.end())
+            unique.push_back(dir.lexically_normal());
+    return unique;
+}
+
+std::vector<std::filesystem::path> PluginHost::environmentPluginDirs() {
+    std::vector<std::filesystem::path> dirs;
+    const char* value = std::getenv("ENGINE_PLUGIN_PATH");
+    if (!value) return dirs;
+    // Colon-separated like PATH; empty entries mean nothing (not the current folder, which
+    // would make the loaded code depend on where the user happens to stand).
+    const std::string list = value;
+    std::size_t begin = 0;
+    while (begin <= list.size()) {
+        const std::size_t end = std::min(list.find(':', begin), list.size());
+        if (end > begin) dirs.emplace_back(list.substr(begin, end - begin));
+        begin = end + 1;
+    }
     return dirs;
 }
 
@@ -133,6 +160,12 @@ std::vector<RenderPlugin*> PluginHost::renderPlugins(const std::string& library)
     for (const auto& loaded : libraries_)
         if (loaded->library == library)
             for (const auto& plugin : loaded->registry.renderPlugins()) out.push_back(plugin.get());
+    return out;
+}
+
+std::vector<std::filesystem::path> PluginHost::loadedFiles() const {
+    std::vector<std::filesystem::path> out;
+    for (const auto& library : libraries_) out.push_back(library->path);
     return out;
 }
 

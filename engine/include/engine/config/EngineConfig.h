@@ -7,8 +7,8 @@
 //                "shade_cache": true, "unrolled_light_sum": true,
 //                "check_gl_errors": false}
 // }
-// Unknown keys are errors (a typo must not silently change nothing). Plugins are searched
-// only in plugin_dirs and then in the build's plugin folder (ENGINE_DEFAULT_PLUGIN_DIR).
+// Unknown keys are errors (a typo must not silently change nothing). Where plugins are
+// searched: PluginHost::searchDirectories (plugin_dirs first).
 #include <glm/glm.hpp>
 #include <nlohmann/json.hpp>
 
@@ -55,5 +55,12 @@ struct EngineConfig {
 // Throws InputError("config.json: plugins[0].library: ...") on bad input.
 EngineConfig loadEngineConfig(const std::filesystem::path& path);
 EngineConfig parseEngineConfig(const std::string& jsonText, const std::filesystem::path& path);
+
+// The config a program uses when the user names none, first that exists:
+//   1. content/engine.json under the current folder (a source checkout);
+//   2. <datadir>/shadow-engine/engine.json of the install the running libengine belongs to.
+// Throws InputError listing every path tried when neither exists.
+std::vector<std::filesystem::path> defaultEngineConfigCandidates();
+std::filesystem::path findDefaultEngineConfig();
 
 } // namespace engine

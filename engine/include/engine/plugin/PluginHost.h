@@ -28,9 +28,19 @@ public:
     // The render plugins that the library of that name (as the config names it) registered.
     std::vector<RenderPlugin*> renderPlugins(const std::string& library) const;
     std::vector<std::string> loadedNames() const;
+    // The file each loaded library came from (canonical), in load order.
+    std::vector<std::filesystem::path> loadedFiles() const;
 
-    // Where plugins are looked for: the config's dirs, then the build's plugin folder.
+    // Where plugins are looked for, first match wins (README "Installing"):
+    //   1. the config's plugin_dirs (a relative one is relative to the config file);
+    //   2. ENGINE_PLUGIN_PATH, colon-separated, in its order;
+    //   3. the installed plugin folder, <libdir>/shadow-engine/plugins beside the running
+    //      libengine.so (util/InstallLayout.h);
+    //   4. the build tree's plugin folder, only while libengine runs from that build tree.
+    // A plugin found nowhere is an error listing every folder of this list.
     static std::vector<std::filesystem::path> searchDirectories(const EngineConfig& config);
+    // Step 2 alone: ENGINE_PLUGIN_PATH split at ':', empty entries dropped.
+    static std::vector<std::filesystem::path> environmentPluginDirs();
 
 private:
     struct LoadedLibrary;
