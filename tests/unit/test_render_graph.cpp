@@ -1,6 +1,7 @@
 // Render graph core without GL: a fake allocator and passes that log what happens, so
 // ordering, culling, lifetimes and errors are checked as plain sequences of events.
 #include "engine/graph/RenderGraph.h"
+#include "graph_test_support.h"
 
 #include <gtest/gtest.h>
 
@@ -11,6 +12,7 @@
 #include <vector>
 
 using namespace engine;
+using engine::test::expectGraphError;
 
 namespace {
 
@@ -30,19 +32,6 @@ struct FakeAllocator : ResourceAllocator {
         log.push_back("release " + std::to_string(handle));
     }
 };
-
-// Catches a GraphError and checks its message names every piece in `parts`.
-template <class F>
-void expectGraphError(F&& action, const std::vector<std::string>& parts) {
-    try {
-        action();
-        ADD_FAILURE() << "expected a GraphError";
-    } catch (const GraphError& error) {
-        const std::string message = error.what();
-        for (const std::string& part : parts)
-            EXPECT_NE(message.find(part), std::string::npos) << "'" << part << "' missing from: " << message;
-    }
-}
 
 const PassReport& reportOf(const RenderGraph& graph, const std::string& name) {
     for (const PassReport& report : graph.reports())

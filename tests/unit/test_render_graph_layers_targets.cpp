@@ -2,6 +2,7 @@
 // declares, which the executor binds between the pass's state and the pass: checked as logs
 // of events, without GL.
 #include "engine/graph/RenderGraph.h"
+#include "graph_test_support.h"
 
 #include <gtest/gtest.h>
 
@@ -9,6 +10,7 @@
 #include <vector>
 
 using namespace engine;
+using engine::test::expectGraphError;
 
 namespace {
 
@@ -21,18 +23,6 @@ struct CountingAllocator : ResourceAllocator {
     std::uint32_t acquire(const TextureDesc&) override { return next++; }
     void release(std::uint32_t, const TextureDesc&) override {}
 };
-
-template <class F>
-void expectGraphError(F&& action, const std::vector<std::string>& parts) {
-    try {
-        action();
-        ADD_FAILURE() << "expected a GraphError";
-    } catch (const GraphError& error) {
-        const std::string message = error.what();
-        for (const std::string& part : parts)
-            EXPECT_NE(message.find(part), std::string::npos) << "'" << part << "' missing from: " << message;
-    }
-}
 
 std::string face(int f) { return "face" + std::to_string(f); }
 

@@ -63,15 +63,7 @@ echo "ok: $(tail -1 err.txt)"
 
 # A scene without lights: warned about; --key-light and --ground: engine-render's light and
 # ground (the same printed placement, the same frame).
-python3 - showcase.gltf dark.gltf <<'PY'
-import json, sys
-scene = json.load(open(sys.argv[1]))
-del scene["extensions"]["KHR_lights_punctual"]
-scene["extensionsUsed"] = [e for e in scene.get("extensionsUsed", []) if e != "KHR_lights_punctual"]
-for node in scene["nodes"]:
-    node.get("extensions", {}).pop("KHR_lights_punctual", None)
-json.dump(scene, open(sys.argv[2], "w"))
-PY
+python3 "$(dirname "$0")/../../scripts/remove_lights.py" showcase.gltf dark.gltf
 cat > shot.txt <<'SCRIPT'
 overlay off
 frames 2

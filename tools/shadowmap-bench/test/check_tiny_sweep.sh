@@ -34,15 +34,7 @@ echo "ok: $rows rows"
 # A scene without lights gets the key light engine-render and engine-view place (spot by
 # default), and --ground their ground; the placement is printed.
 cp "$content/scenes/showcase.gltf" "$content/scenes/showcase.bin" "$out/"
-python3 - "$out/showcase.gltf" "$out/dark.gltf" <<'PY'
-import json, sys
-scene = json.load(open(sys.argv[1]))
-del scene["extensions"]["KHR_lights_punctual"]
-scene["extensionsUsed"] = [e for e in scene.get("extensionsUsed", []) if e != "KHR_lights_punctual"]
-for node in scene["nodes"]:
-    node.get("extensions", {}).pop("KHR_lights_punctual", None)
-json.dump(scene, open(sys.argv[2], "w"))
-PY
+python3 "$(dirname "$0")/../../scripts/remove_lights.py" "$out/showcase.gltf" "$out/dark.gltf"
 "$bench" --config "$content/engine.json" --scene "$out/dark.gltf" --ground \
   --variants standard --resolutions 256 --depth-formats d24 --filters pcf \
   --width 64 --height 48 --frames 1 --out "$out/dark" 2> "$out/dark.log"
