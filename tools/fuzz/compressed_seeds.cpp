@@ -86,6 +86,12 @@ GltfBuilder dracoCube() {
     b.doc["asset"]["generator"] = "tools/fuzz/make_seeds";
     const int view = b.addView(encoded.data(), encoded.size());
     const int positions = b.add("accessors", {{"componentType", kFloat}, {"count", roundTrip->num_points()}, {"type", "VEC3"}});
+    // POSITION bounds are required. Draco's quantization keeps the range's ends exact, so the
+    // corners' bounds are the decoded ones.
+    std::vector<float> corners;
+    for (const Face& f : kCubeFaces)
+        for (const std::array<float, 3>& corner : f.corners) corners.insert(corners.end(), corner.begin(), corner.end());
+    b.setBounds(positions, corners);
     const int normals = b.add("accessors", {{"componentType", kFloat}, {"count", roundTrip->num_points()}, {"type", "VEC3"}});
     const int indices = b.add("accessors", {{"componentType", kUnsignedShort}, {"count", roundTrip->num_faces() * 3}, {"type", "SCALAR"}});
     const json draco = {{"bufferView", view},
@@ -128,6 +134,9 @@ GltfBuilder meshoptQuad() {
     const int indexView = addMeshoptView(b, indexStream, decoded, 6, 2, "TRIANGLES", nullptr);
     const int sequenceView = addMeshoptView(b, sequenceStream, decoded, 6, 2, "INDICES", nullptr);
     const int positionAccessor = b.addAccessor(positionView, kUnsignedShort, 4, "VEC3");
+    std::vector<float> xyz;
+    for (const Position& p : positions) xyz.insert(xyz.end(), {float(p.x), float(p.y), float(p.z)});
+    b.setBounds(positionAccessor, xyz);
     const int normalAccessor = b.addAccessor(normalView, 5120 /* BYTE */, 4, "VEC3", /*normalized=*/true);
     const int uvAccessor = b.addAccessor(uvView, kFloat, 4, "VEC2");
     const json attributes = {{"POSITION", positionAccessor}, {"NORMAL", normalAccessor}, {"TEXCOORD_0", uvAccessor}};
