@@ -81,6 +81,7 @@ RenderOptions parseRenderOptions(int argc, char** argv) {
     if (options.help) return options;
     if (!sawScene) throw std::invalid_argument("--scene is required");
     if (!sawOut && !options.list) throw std::invalid_argument("--out is required");
-    if (options.config.empty()) options.config = tools::defaultConfigPath();
+    // --list reads only the scene: it needs no config, found or not.
+    if (options.config.empty() && !options.list) options.config = tools::defaultConfigPath();
     return options;
 }
