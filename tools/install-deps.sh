@@ -19,9 +19,8 @@ packages=(
   # (libclang_rt.fuzzer-x86_64.a), which Debian 12 ships in libclang-rt-14-dev.
   clang libclang-rt-14-dev
   # glTF validation (tools/validate-gltf, CTest GltfValidate.*): node runs the Khronos
-  # glTF-Validator; npm installs it, at the version tools/validate-gltf/package-lock.json
-  # pins, into the build folder (CMake target gltf_validator).
-  nodejs npm
+  # glTF-Validator, vendored in tools/validate-gltf/vendor (nothing is fetched from npm).
+  nodejs
   # Compressed glTF: the loader decodes KHR_draco_mesh_compression with libdraco and
   # EXT_meshopt_compression with libmeshoptimizer (engine/src/gltf/Gltf*Decoder.cpp, also
   # linked by tools/fuzz); tests/unit/test_gltf_compressed.cpp and the shadow-mask test make
@@ -31,9 +30,6 @@ packages=(
 
 missing=()
 for p in "${packages[@]}"; do
-  # A nodejs from NodeSource bundles npm and conflicts with Debian's npm package: any npm
-  # on the PATH will do.
-  [ "$p" = npm ] && command -v npm > /dev/null && continue
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
 

@@ -1,11 +1,24 @@
 #!/usr/bin/env bash
-# install.sh DIR: installs the Khronos glTF-Validator at the version package-lock.json pins
-# (name, version and sha512) into DIR/node_modules. `npm ci` installs exactly the lock file,
-# never a newer release, so a validator update is a reviewed change of package-lock.json.
-# Needs node and npm (tools/install-deps.sh) and the npm registry, or npm's cache.
+# install.sh: refreshes vendor/node_modules/gltf-validator, the Khronos glTF-Validator as
+# published on npm, at the version package-lock.json pins, checked against its sha512.
+# A maintainer's tool, run when the pin changes; builds and tests never fetch anything:
+# the package is one JavaScript file with no dependencies (Apache-2.0, vendor/.../LICENSE),
+# and a fresh machine behind a proxy it does not trust cannot reach the registry.
+# Needs node and npm and the npm registry.
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
-dir=${1:?usage: install.sh DIR}
-mkdir -p "$dir"
-cp "$here/package.json" "$here/package-lock.json" "$dir/"
-npm ci --prefix "$dir" --no-audit --no-fund --ignore-scripts --loglevel=error
+version=$(node -p "require('$here/package-lock.json').packages['node_modules/gltf-validator'].version")
+integrity=$(node -p "require('$here/package-lock.json').packages['node_modules/gltf-validator'].integrity")
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+(cd "$work" && npm pack "gltf-validator@$version" --loglevel=error > /dev/null)
+tarball=$work/gltf-validator-$version.tgz
+actual="sha512-$(openssl dgst -sha512 -binary "$tarball" | base64 -w0)"
+if [ "$actual" != "$integrity" ]; then
+  echo "install.sh: gltf-validator $version has $actual, the lock file says $integrity" >&2
+  exit 1
+fi
+target=$here/vendor/node_modules/gltf-validator
+rm -rf "$target" && mkdir -p "$target"
+tar -xzf "$tarball" -C "$target" --strip-components=1
+echo "install.sh: vendored gltf-validator $version ($integrity)"

@@ -4,8 +4,8 @@
 // and each file ends with a count line, so a CTest log says what is wrong and where.
 //
 // usage: node validate.mjs --validator DIR [--max-warnings N] FILE_OR_DIR...
-//   --validator DIR   the npm prefix that holds node_modules/gltf-validator (a pinned install the
-//                     build owns: tools/validate-gltf/install.sh)
+//   --validator DIR   the folder that holds node_modules/gltf-validator (tools/validate-gltf/vendor:
+//                     the pinned package, refreshed by tools/validate-gltf/install.sh)
 //   FILE_OR_DIR       a .gltf/.glb file, or a directory searched recursively for them
 //   --max-warnings N  also fail when a file has more than N warnings (default: warnings only reported)
 import fs from 'node:fs';
@@ -88,7 +88,7 @@ async function main() {
     try {
         validator = require('gltf-validator');
     } catch (error) {
-        console.error(`validate.mjs: no gltf-validator under ${options.validatorDir}/node_modules (run tools/validate-gltf/install.sh): ${error.message}`);
+        console.error(`validate.mjs: no gltf-validator under ${options.validatorDir}/node_modules (tools/validate-gltf/install.sh vendors it): ${error.message}`);
         process.exit(2);
     }
 
