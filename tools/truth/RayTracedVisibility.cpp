@@ -51,7 +51,7 @@ double maxAbs(const glm::dvec3& v) {
     return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
 }
 
-constexpr int kTile = 4;  // 4x4 pixels = one 16-ray packet: neighbours trace coherently
+constexpr int kTile = 4;  // 4x4 rays = one 16-ray packet
 
 // Embree's occlusion filter for an alpha-tested caster: a hit where the material's alpha
 // is below its shadow cutoff is no hit, and the ray goes on through the hole.
@@ -178,53 +178,66 @@ double RayTracedVisibility::rayOffset(const glm::dvec3& p, const glm::dvec3& cam
                      kUlps * maxAbs(p - origin_)});
 }
 
-std::vector<std::uint8_t> RayTracedVisibility::visibility(const engine::Scene& scene,
-                                                          int lightInstance,
-                                                          const SurfaceBuffer& surfaces) const {
-    const engine::LightInstance& placed = lightAt(scene, lightInstance);
-    const bool directional = scene.lights.at(placed.light).type == engine::Light::Type::Directional;
-    const glm::dvec3 lightPosition = placed.position();
-    const glm::dvec3 towardLight = -placed.direction();  // directional: same for every ray
+namespace {
 
-    const int width = surfaces.width, height = surfaces.height;
-    std::vector<std::uint8_t> visible(surfaces.pixelCount(), 0);
-    const int tilesX = (width + kTile - 1) / kTile, tilesY = (height + kTile - 1) / kTile;
-    const int tileCount = tilesX * tilesY;
-    std::atomic<int> nextTile{0};
+// Where the shadow ray of one surface point goes: toward a directional light's fixed
+// direction, or to a positional light, stopping just short of it.
+class ShadowRayAim {
+public:
+    ShadowRayAim(const engine::Scene& scene, const engine::LightInstance& placed)
+        : directional_(scene.lights.at(placed.light).type == engine::Light::Type::Directional),
+          lightPosition_(placed.position()), towardLight_(-placed.direction()) {}
 
-    auto traceTiles = [&] {
+    // False when the start sits on the light itself: no ray, the light counts as visible.
+    bool aim(const glm::dvec3& start, glm::dvec3& direction, double& tfar) const {
+        direction = towardLight_;
+        tfar = std::numeric_limits<double>::infinity();
+        if (directional_) return true;
+        const double distance = glm::length(lightPosition_ - start);
+        if (!(distance > 0.0)) return false;
+        direction = (lightPosition_ - start) / distance;
+        // Geometry exactly at the light (a lamp housing) must not count as blocking it.
+        tfar = distance * (1.0 - 1e-6);
+        return true;
+    }
+
+private:
+    bool directional_;
+    glm::dvec3 lightPosition_, towardLight_;
+};
+
+// One shadow ray's start, or the verdict when no ray is needed.
+struct RayStart {
+    enum class Kind { None, Visible, Trace } kind = Kind::None;
+    glm::dvec3 start{0.0};
+};
+
+// Traces `packetCount` packets of 16 shadow rays on all hardware threads. `startOf(packet,
+// lane)` gives each ray's start; `record(packet, lane, visible)` receives every lane that
+// was not None, on the thread that traced its packet.
+template <class StartOf, class Record>
+void traceShadowPackets(RTCScene scene, const glm::dvec3& embreeOrigin, const ShadowRayAim& aim,
+                        std::size_t packetCount, StartOf startOf, Record record) {
+    std::atomic<std::size_t> nextPacket{0};
+    auto tracePackets = [&] {
         RTCIntersectContext context;
         rtcInitIntersectContext(&context);
         context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
         RTCRay16 rays;  // 64-byte aligned by its declaration
         alignas(64) int valid[16];
-        std::size_t pixelOf[16];
-        for (int tile; (tile = nextTile.fetch_add(1, std::memory_order_relaxed)) < tileCount;) {
-            const int x0 = (tile % tilesX) * kTile, y0 = (tile / tilesX) * kTile;
+        for (std::size_t packet; (packet = nextPacket.fetch_add(1, std::memory_order_relaxed)) < packetCount;) {
             bool any = false;
             for (int lane = 0; lane < 16; ++lane) {
                 valid[lane] = 0;
-                const int x = x0 + lane % kTile, y = y0 + lane / kTile;
-                if (x >= width || y >= height) continue;
-                const std::size_t i = static_cast<std::size_t>(y) * width + x;
-                if (!surfaces.covered[i]) continue;
-                const glm::dvec3& p = surfaces.worldPosition[i];
-                const glm::dvec3 start =
-                    p + surfaces.worldNormal[i] * rayOffset(p, surfaces.cameraPosition);
-                glm::dvec3 direction = towardLight;
-                double tfar = std::numeric_limits<double>::infinity();
-                if (!directional) {
-                    const double distance = glm::length(lightPosition - start);
-                    if (!(distance > 0.0)) {  // the light sits on the surface: call it visible
-                        visible[i] = 1;
-                        continue;
-                    }
-                    direction = (lightPosition - start) / distance;
-                    // Stop just short of the light: geometry exactly at the light (a lamp
-                    // housing) must not count as blocking it.
-                    tfar = distance * (1.0 - 1e-6);
+                const RayStart ray = startOf(packet, lane);
+                if (ray.kind == RayStart::Kind::None) continue;
+                glm::dvec3 direction;
+                double tfar = 0.0;
+                if (ray.kind == RayStart::Kind::Visible || !aim.aim(ray.start, direction, tfar)) {
+                    record(packet, lane, true);
+                    continue;
                 }
-                const glm::vec3 origin(start - origin_);
+                const glm::vec3 origin(ray.start - embreeOrigin);
                 rays.org_x[lane] = origin.x;
                 rays.org_y[lane] = origin.y;
                 rays.org_z[lane] = origin.z;
@@ -237,24 +250,99 @@ std::vector<std::uint8_t> RayTracedVisibility::visibility(const engine::Scene& s
                 rays.mask[lane] = ~0u;
                 rays.id[lane] = static_cast<unsigned>(lane);
                 rays.flags[lane] = 0;
-                pixelOf[lane] = i;
                 valid[lane] = -1;
                 any = true;
             }
             if (!any) continue;
-            rtcOccluded16(valid, embree_->scene, &context, &rays);
+            rtcOccluded16(valid, scene, &context, &rays);
             // Embree marks an occluded ray by setting its tfar to -inf.
             for (int lane = 0; lane < 16; ++lane)
-                if (valid[lane]) visible[pixelOf[lane]] = rays.tfar[lane] >= 0.0f ? 1 : 0;
+                if (valid[lane]) record(packet, lane, rays.tfar[lane] >= 0.0f);
         }
     };
-
     const unsigned threadCount = std::max(1u, std::thread::hardware_concurrency());
     std::vector<std::thread> threads;
-    for (unsigned t = 1; t < threadCount; ++t) threads.emplace_back(traceTiles);
-    traceTiles();
+    for (unsigned t = 1; t < threadCount; ++t) threads.emplace_back(tracePackets);
+    tracePackets();
     for (std::thread& thread : threads) thread.join();
+}
+
+// The world point where the camera ray through window position (x, y) (pixels, top row
+// first, pixel centres at +0.5) meets the plane through `p` with normal `n`; `p` itself when
+// the ray runs along the plane.
+glm::dvec3 footprintPoint(const engine::FrameCamera& camera, const glm::dmat4& clipToEye,
+                          double x, double y, const glm::dvec3& p, const glm::dvec3& n) {
+    const double ndcX = 2.0 * x / camera.width - 1.0;
+    const double ndcY = 1.0 - 2.0 * y / camera.height;
+    auto worldAt = [&](double ndcZ) {
+        const glm::dvec4 eye = clipToEye * glm::dvec4(ndcX, ndcY, ndcZ, 1.0);
+        return glm::dvec3(camera.eyeToWorld * (eye / eye.w));
+    };
+    const glm::dvec3 near = worldAt(-1.0), far = worldAt(1.0);
+    const glm::dvec3 along = far - near;
+    const double denominator = glm::dot(along, n);
+    if (std::abs(denominator) <= 1e-12 * glm::length(along)) return p;
+    return near + along * (glm::dot(p - near, n) / denominator);
+}
+
+} // namespace
+
+std::vector<std::uint8_t> RayTracedVisibility::visibility(const engine::Scene& scene,
+                                                          int lightInstance,
+                                                          const SurfaceBuffer& surfaces) const {
+    const ShadowRayAim aim(scene, lightAt(scene, lightInstance));
+    const int width = surfaces.width, height = surfaces.height;
+    std::vector<std::uint8_t> visible(surfaces.pixelCount(), 0);
+    // One packet = a 4x4 pixel tile, so neighbours trace coherently.
+    const int tilesX = (width + kTile - 1) / kTile, tilesY = (height + kTile - 1) / kTile;
+    auto pixelOf = [&](std::size_t tile, int lane) -> std::ptrdiff_t {
+        const int x = static_cast<int>(tile % tilesX) * kTile + lane % kTile;
+        const int y = static_cast<int>(tile / tilesX) * kTile + lane / kTile;
+        if (x >= width || y >= height) return -1;
+        return static_cast<std::ptrdiff_t>(y) * width + x;
+    };
+    traceShadowPackets(
+        embree_->scene, origin_, aim, static_cast<std::size_t>(tilesX) * tilesY,
+        [&](std::size_t tile, int lane) {
+            const std::ptrdiff_t i = pixelOf(tile, lane);
+            if (i < 0 || !surfaces.covered[i]) return RayStart{};
+            const glm::dvec3& p = surfaces.worldPosition[i];
+            return RayStart{RayStart::Kind::Trace,
+                            p + surfaces.worldNormal[i] * rayOffset(p, surfaces.cameraPosition)};
+        },
+        [&](std::size_t tile, int lane, bool lit) { visible[pixelOf(tile, lane)] = lit ? 1 : 0; });
     return visible;
+}
+
+std::vector<float> RayTracedVisibility::litFraction(const engine::Scene& scene, int lightInstance,
+                                                    const SurfaceBuffer& surfaces) const {
+    const ShadowRayAim aim(scene, lightAt(scene, lightInstance));
+    const engine::FrameCamera& camera = surfaces.camera;
+    if (camera.width != surfaces.width || camera.height != surfaces.height)
+        throw std::invalid_argument("ray-traced truth: the surface buffer's camera is " +
+                                    std::to_string(camera.width) + "x" + std::to_string(camera.height) +
+                                    ", its pixels " + std::to_string(surfaces.width) + "x" +
+                                    std::to_string(surfaces.height));
+    const glm::dmat4 clipToEye = glm::inverse(camera.projection);
+    // One packet = one pixel's 4x4 stratified samples (sample centres at (k + 0.5) / 4).
+    std::vector<std::uint8_t> litSamples(surfaces.pixelCount(), 0);
+    traceShadowPackets(
+        embree_->scene, origin_, aim, surfaces.pixelCount(),
+        [&](std::size_t i, int lane) {
+            if (!surfaces.covered[i]) return RayStart{};
+            const double x = static_cast<double>(i % surfaces.width) + (lane % kTile + 0.5) / kTile;
+            const double y = static_cast<double>(i / surfaces.width) + (lane / kTile + 0.5) / kTile;
+            const glm::dvec3& n = surfaces.worldNormal[i];
+            const glm::dvec3 p = footprintPoint(camera, clipToEye, x, y, surfaces.worldPosition[i], n);
+            return RayStart{RayStart::Kind::Trace, p + n * rayOffset(p, surfaces.cameraPosition)};
+        },
+        [&](std::size_t i, int, bool lit) {
+            if (lit) ++litSamples[i];  // a pixel is one packet, traced by one thread
+        });
+    std::vector<float> fraction(surfaces.pixelCount(), 0.0f);
+    for (std::size_t i = 0; i < fraction.size(); ++i)
+        fraction[i] = static_cast<float>(litSamples[i]) / (kTile * kTile);
+    return fraction;
 }
 
 std::vector<std::uint8_t> visibility(const engine::Scene& scene, int lightInstance,

@@ -43,6 +43,16 @@ public:
     std::vector<std::uint8_t> visibility(const engine::Scene& scene, int lightInstance,
                                          const SurfaceBuffer& surfaces) const;
 
+    // Per pixel of `surfaces`: the fraction in [0,1] of the pixel's footprint from which light
+    // `lightInstance` is visible, from 4x4 stratified shadow rays per covered pixel (0 where
+    // not covered). The footprint is where the camera rays through the pixel's area meet the
+    // plane of the surface seen at its centre (its captured point and normal), so a pixel
+    // spanning two surfaces is sampled as if its centre's surface went on. This is the truth
+    // a filtered shade (PCF) approximates; a binary one is `visibility`. Throws
+    // std::invalid_argument for a bad light index or a camera that does not match the pixels.
+    std::vector<float> litFraction(const engine::Scene& scene, int lightInstance,
+                                   const SurfaceBuffer& surfaces) const;
+
     // How far a ray origin is pushed off the surface along its normal, at world point p for a
     // capture made from cameraPosition (see the .cpp for why each term is there).
     double rayOffset(const glm::dvec3& p, const glm::dvec3& cameraPosition) const;

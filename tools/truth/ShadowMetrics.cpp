@@ -30,22 +30,23 @@ std::vector<std::uint8_t> truthEdges(int width, int height, std::span<const std:
     return edges;
 }
 
-ShadowErrors shadowErrors(int width, int height, std::span<const std::uint8_t> truth,
-                          std::span<const float> shade, std::span<const std::uint8_t> evaluation,
-                          std::span<const std::uint8_t> covered) {
-    const std::size_t count = static_cast<std::size_t>(width) * height;
-    if (shade.size() != count || evaluation.size() != count)
-        throw std::invalid_argument("shadowErrors: image sizes differ from width*height");
-    const std::vector<std::uint8_t> edges = truthEdges(width, height, truth, covered);
+namespace {
 
+// The metrics with a truth in [0,1] per pixel (the lit fraction): acne is where the shade is
+// darker than the truth, leak where it is brighter. For a binary truth these are exactly the
+// definitions of docs/metrics.md.
+ShadowErrors errorsAgainst(std::size_t count, std::span<const float> litFraction,
+                           std::span<const float> shade, std::span<const std::uint8_t> evaluation,
+                           std::span<const std::uint8_t> edges) {
     // Sums in double: a 4K image has 8 M pixels, float sums would lose the small errors.
     double acne = 0.0, leak = 0.0, acneNoEdge = 0.0, leakNoEdge = 0.0;
     ShadowErrors errors;
     for (std::size_t i = 0; i < count; ++i) {
         if (!evaluation[i]) continue;
         const double s = std::clamp(static_cast<double>(shade[i]), 0.0, 1.0);
-        const double a = truth[i] ? 1.0 - s : 0.0;
-        const double l = truth[i] ? 0.0 : s;
+        const double t = std::clamp(static_cast<double>(litFraction[i]), 0.0, 1.0);
+        const double a = std::max(t - s, 0.0);
+        const double l = std::max(s - t, 0.0);
         acne += a;
         leak += l;
         ++errors.evaluated;
@@ -65,6 +66,32 @@ ShadowErrors shadowErrors(int width, int height, std::span<const std::uint8_t> t
         errors.errorNoEdge = errors.acneNoEdge + errors.leakNoEdge;
     }
     return errors;
+}
+
+} // namespace
+
+ShadowErrors shadowErrors(int width, int height, std::span<const std::uint8_t> truth,
+                          std::span<const float> shade, std::span<const std::uint8_t> evaluation,
+                          std::span<const std::uint8_t> covered) {
+    const std::size_t count = static_cast<std::size_t>(width) * height;
+    if (shade.size() != count || evaluation.size() != count)
+        throw std::invalid_argument("shadowErrors: image sizes differ from width*height");
+    const std::vector<std::uint8_t> edges = truthEdges(width, height, truth, covered);
+    std::vector<float> litFraction(count);
+    std::transform(truth.begin(), truth.end(), litFraction.begin(),
+                   [](std::uint8_t lit) { return lit ? 1.0f : 0.0f; });
+    return errorsAgainst(count, litFraction, shade, evaluation, edges);
+}
+
+ShadowErrors areaShadowErrors(int width, int height, std::span<const float> litFraction,
+                              std::span<const std::uint8_t> truth, std::span<const float> shade,
+                              std::span<const std::uint8_t> evaluation,
+                              std::span<const std::uint8_t> covered) {
+    const std::size_t count = static_cast<std::size_t>(width) * height;
+    if (litFraction.size() != count || shade.size() != count || evaluation.size() != count)
+        throw std::invalid_argument("areaShadowErrors: image sizes differ from width*height");
+    return errorsAgainst(count, litFraction, shade, evaluation,
+                         truthEdges(width, height, truth, covered));
 }
 
 std::vector<float> shadeFromMask8(std::span<const std::uint8_t> mask) {

@@ -31,6 +31,17 @@ ShadowErrors shadowErrors(int width, int height, std::span<const std::uint8_t> t
                           std::span<const float> shade, std::span<const std::uint8_t> evaluation,
                           std::span<const std::uint8_t> covered);
 
+// The same metrics against the area truth (RayTracedVisibility::litFraction: the lit fraction
+// t of each pixel's footprint), the truth a filtered shade s approximates:
+//   acne = sum over E of max(t - s, 0) / |E|,   leak = sum over E of max(s - t, 0) / |E|
+// (for t in {0,1} these are the binary definitions above). "NoEdge" leaves out the pixels
+// next to an edge of the binary `truth`, as above; the full figures are the ones that judge
+// a filter, whose whole difference is at edges.
+ShadowErrors areaShadowErrors(int width, int height, std::span<const float> litFraction,
+                              std::span<const std::uint8_t> truth, std::span<const float> shade,
+                              std::span<const std::uint8_t> evaluation,
+                              std::span<const std::uint8_t> covered);
+
 // An 8-bit shadow mask (engine-render --shadow-mask: 255 = lit, 0 = shadowed) as shade.
 std::vector<float> shadeFromMask8(std::span<const std::uint8_t> mask);
 

@@ -166,6 +166,7 @@ SurfaceBuffer SurfaceCapture::capture(const engine::Scene& scene, const engine::
     out.width = width;
     out.height = height;
     out.cameraPosition = camera.position();
+    out.camera = camera;
     const std::size_t count = out.pixelCount();
     out.worldPosition.assign(count, glm::dvec3(0.0));
     out.worldNormal.assign(count, glm::dvec3(0.0));

@@ -27,6 +27,7 @@ namespace truth {
 struct SurfaceBuffer {
     int width = 0, height = 0;
     glm::dvec3 cameraPosition{0.0};  // world; the capture's precision scales with distance to it
+    engine::FrameCamera camera;      // the view captured: gives each pixel's footprint
     std::vector<glm::dvec3> worldPosition;  // (0,0,0) where not covered
     // Unit geometric (face) normal, turned to face the camera: for single-sided geometry that
     // is its winding normal, for a double-sided back face the flipped one.

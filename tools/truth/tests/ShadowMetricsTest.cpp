@@ -111,5 +111,34 @@ TEST(ShadowMetrics, MismatchedSizesAreRejected) {
     EXPECT_THROW(truthEdges(2, 2, Bytes(4, 1), Bytes(5, 1)), std::invalid_argument);
 }
 
+TEST(ShadowMetrics, AreaErrorsAreTheDistanceToTheLitFraction) {
+    // A half-lit pixel shaded 0.5 (what 2x2 PCF gives on an edge) is right; a quarter-lit one
+    // shaded fully lit leaks 0.75; a fully lit one shaded 0.25 has acne 0.75.
+    const std::vector<float> fraction{0.5f, 0.25f, 1.0f};
+    const std::vector<float> shade{0.5f, 1.0f, 0.25f};
+    const ShadowErrors e =
+        areaShadowErrors(3, 1, fraction, Bytes{1, 0, 1}, shade, Bytes(3, 1), Bytes(3, 1));
+    EXPECT_EQ(e.evaluated, 3u);
+    EXPECT_DOUBLE_EQ(e.acne, 0.75 / 3);
+    EXPECT_DOUBLE_EQ(e.leak, 0.75 / 3);
+    // The edge pixels come from the binary truth: all three touch its 1|0|1 boundary.
+    EXPECT_EQ(e.evaluatedNoEdge, 0u);
+}
+
+TEST(ShadowMetrics, AreaErrorsOfABinaryFractionAreTheBinaryErrors) {
+    const Bytes truth{1, 1, 0, 0, 1, 0};
+    const std::vector<float> fraction{1, 1, 0, 0, 1, 0};
+    const std::vector<float> shade{1.0f, 0.5f, 0.0f, 0.25f, 0.9f, 0.6f};
+    const Bytes evaluation{1, 1, 1, 1, 0, 1};
+    const ShadowErrors binary = shadowErrors(3, 2, truth, shade, evaluation, Bytes(6, 1));
+    const ShadowErrors area = areaShadowErrors(3, 2, fraction, truth, shade, evaluation, Bytes(6, 1));
+    EXPECT_DOUBLE_EQ(area.acne, binary.acne);
+    EXPECT_DOUBLE_EQ(area.leak, binary.leak);
+    EXPECT_DOUBLE_EQ(area.errorNoEdge, binary.errorNoEdge);
+    EXPECT_EQ(area.evaluated, binary.evaluated);
+    EXPECT_THROW(areaShadowErrors(3, 2, std::vector<float>(5), truth, shade, evaluation, Bytes(6, 1)),
+                 std::invalid_argument);
+}
+
 } // namespace
 } // namespace truth
