@@ -56,6 +56,10 @@ ViewResult ShadowEvaluator::evaluate(const engine::FrameCamera& camera, int fram
         const auto evaluationSet = truth::evaluationSet(scene_, out.slot, surfaces);
         out.errors = truth::shadowErrors(camera.width, camera.height, truthImage, shade, evaluationSet,
                                          surfaces.covered);
+        if (areaTruth_)
+            out.areaErrors = truth::areaShadowErrors(camera.width, camera.height,
+                                                     visibility_.litFraction(scene_, out.slot, surfaces),
+                                                     truthImage, shade, evaluationSet, surfaces.covered);
         result.lights.push_back(std::move(out));
     }
     return result;

@@ -23,6 +23,9 @@ struct LightResult {
     double shadowMs = 0.0;    // median wall time of its shadow passes, over frames they ran
     int framesRendered = 0;   // frames in which its map was rendered (not cached)
     truth::ShadowErrors errors;
+    // Against the area truth (lit fraction of each pixel), when the evaluator computes it;
+    // evaluated == 0 otherwise. The figure that judges a filtered (PCF) shade.
+    truth::ShadowErrors areaErrors;
     std::size_t nonFinitePixels = 0;  // NaN/Inf anywhere in its shade (must stay 0)
 };
 
@@ -38,6 +41,9 @@ class ShadowEvaluator {
 public:
     ShadowEvaluator(engine::Renderer& renderer, const engine::Scene& scene);
 
+    // Also score every light against the area truth (16 shadow rays per pixel instead of 1).
+    void setAreaTruth(bool enabled) { areaTruth_ = enabled; }
+
     // Renders `frames` timed frames of `camera` (0: none, errors only), then evaluates every
     // light that has a shadow (variant other than none).
     ViewResult evaluate(const engine::FrameCamera& camera, int frames);
@@ -47,6 +53,7 @@ private:
     const engine::Scene& scene_;
     truth::SurfaceCapture capture_;
     truth::RayTracedVisibility visibility_;
+    bool areaTruth_ = false;
 };
 
 } // namespace evaluation

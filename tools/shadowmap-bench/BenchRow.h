@@ -23,8 +23,12 @@ struct BenchRow {
     ShadowSetting setting;
     double shadowMs = 0.0;  // median wall time of the light's shadow passes
     double frameMs = 0.0;   // median wall time of the whole frame (all lights)
-    // Percent of the evaluation set (docs/metrics.md).
+    // Percent of the evaluation set (docs/metrics.md), against the one-ray-per-pixel truth.
     double acne = 0.0, leak = 0.0, error = 0.0, errorNoEdge = 0.0;
+    // The same against the area truth (lit fraction of each pixel's footprint): the figure
+    // settings are ranked by, since it does not count a filter's partial shade at an edge as
+    // error when the edge really crosses the pixel.
+    double areaAcne = 0.0, areaLeak = 0.0, areaError = 0.0;
 };
 
 } // namespace shadowmap_bench

@@ -17,15 +17,15 @@ std::vector<LightRows> groupByLight(const std::vector<BenchRow>& rows) {
 }
 
 std::vector<BenchRow> paretoFront(const std::vector<BenchRow>& rows) {
-    // Sorted by time (then error), a row is on the front iff its error is below every
+    // Sorted by time (then area error), a row is on the front iff its error is below every
     // error seen before it: the earlier rows are all at least as fast.
     std::vector<BenchRow> sorted = rows;
     std::stable_sort(sorted.begin(), sorted.end(), [](const BenchRow& a, const BenchRow& b) {
-        return a.shadowMs != b.shadowMs ? a.shadowMs < b.shadowMs : a.error < b.error;
+        return a.shadowMs != b.shadowMs ? a.shadowMs < b.shadowMs : a.areaError < b.areaError;
     });
     std::vector<BenchRow> front;
     for (const BenchRow& row : sorted)
-        if (front.empty() || row.error < front.back().error) front.push_back(row);
+        if (front.empty() || row.areaError < front.back().areaError) front.push_back(row);
     return front;
 }
 
@@ -33,7 +33,8 @@ std::optional<BenchRow> mostAccurateWithin(const std::vector<BenchRow>& rows, do
     std::optional<BenchRow> best;
     for (const BenchRow& row : rows) {
         if (row.shadowMs > budgetMs) continue;
-        if (!best || row.error < best->error || (row.error == best->error && row.shadowMs < best->shadowMs))
+        if (!best || row.areaError < best->areaError ||
+            (row.areaError == best->areaError && row.shadowMs < best->shadowMs))
             best = row;
     }
     return best;

@@ -1,6 +1,8 @@
 #pragma once
 // Choosing settings from measured rows: the Pareto front of shadow time against error, and
-// the most accurate setting within a time budget. Pure CPU, no I/O.
+// the most accurate setting within a time budget. "Error" here is the area error
+// (BenchRow::areaError), so a filter is judged by how well it shades partly lit pixels.
+// Pure CPU, no I/O.
 #include "BenchRow.h"
 
 #include <optional>

@@ -24,14 +24,15 @@ std::string number(double value, int decimals) {
 } // namespace
 
 std::string resultsCsv(const std::vector<BenchRow>& rows) {
-    std::string csv = "scene,light,variant,resolution,depth_format,filter,shadow_ms,frame_ms,acne,leak,error,error_noedge\n";
+    std::string csv = "scene,light,variant,resolution,depth_format,filter,shadow_ms,frame_ms,acne,leak,error,error_noedge,area_acne,area_leak,area_error\n";
     for (const BenchRow& row : rows) {
         // Microseconds for times, 1e-4 % for errors (one pixel of a 1280x720 view is 1.1e-4 %).
         csv += csvField(row.scene) + "," + csvField(row.light) + "," + row.setting.variant + "," +
                std::to_string(row.setting.resolution) + "," + row.setting.depthFormat + "," +
                row.setting.filter + "," + number(row.shadowMs, 3) + "," + number(row.frameMs, 3) + "," +
                number(row.acne, 4) + "," + number(row.leak, 4) + "," + number(row.error, 4) + "," +
-               number(row.errorNoEdge, 4) + "\n";
+               number(row.errorNoEdge, 4) + "," + number(row.areaAcne, 4) + "," +
+               number(row.areaLeak, 4) + "," + number(row.areaError, 4) + "\n";
     }
     return csv;
 }

@@ -31,7 +31,7 @@ std::string budgetName(double budgetMs) {
 // "woo 2048 d24 pcf (0.08 %)", or a dash when nothing fits the budget.
 std::string bestCell(const std::vector<BenchRow>& rows, double budgetMs) {
     const auto best = mostAccurateWithin(rows, budgetMs);
-    return best ? concat({best->setting.label(), " (", format("%.3f", best->error), " %)"}) : "—";
+    return best ? concat({best->setting.label(), " (", format("%.3f", best->areaError), " %)"}) : "—";
 }
 
 std::string atAGlance(const std::vector<LightRows>& lights) {
@@ -55,21 +55,22 @@ std::string atAGlance(const std::vector<LightRows>& lights) {
 std::string rowCells(const BenchRow& row) {
     return concat({" ", row.setting.label(), " | ", format("%.2f", row.shadowMs), " | ",
                    format("%.3f", row.acne), " | ", format("%.3f", row.leak), " | ",
-                   format("%.3f", row.error), " | ", format("%.3f", row.errorNoEdge), " |"});
+                   format("%.3f", row.error), " | ", format("%.3f", row.errorNoEdge), " | ",
+                   format("%.3f", row.areaError), " |"});
 }
 
 std::string lightSection(const LightRows& light) {
     std::string text = concat({"## ", light.scene, " / ", light.light, "\n\n"});
     text += "Most accurate setting within a budget of shadow time:\n\n";
-    text += "| budget | setting | shadow ms | acne % | leak % | error % | error off edges % |\n";
-    text += "|---|---|---|---|---|---|---|\n";
+    text += "| budget | setting | shadow ms | acne % | leak % | error % | error off edges % | area error % |\n";
+    text += "|---|---|---|---|---|---|---|---|\n";
     for (double budget : kTimeBudgetsMs) {
         const auto best = mostAccurateWithin(light.rows, budget);
-        text += concat({"| ", budgetName(budget), " |", best ? rowCells(*best) : " — (nothing this fast) | | | | | |", "\n"});
+        text += concat({"| ", budgetName(budget), " |", best ? rowCells(*best) : " — (nothing this fast) | | | | | | |", "\n"});
     }
     text += "\nPareto front (no other setting is both faster and more accurate), fastest first:\n\n";
-    text += "| setting | shadow ms | acne % | leak % | error % | error off edges % |\n";
-    text += "|---|---|---|---|---|---|\n";
+    text += "| setting | shadow ms | acne % | leak % | error % | error off edges % | area error % |\n";
+    text += "|---|---|---|---|---|---|---|\n";
     for (const BenchRow& row : paretoFront(light.rows)) text += concat({"|", rowCells(row), "\n"});
     return text + "\n";
 }
@@ -84,10 +85,13 @@ std::string summaryMarkdown(const std::vector<BenchRow>& rows, const SweepDescri
     text += " timed frame(s) per setting, each setting applied to every light of the scene. "
             "Shadow ms: median wall time of the light's shadow passes, each closed by glFinish. "
             "Errors: percent of the light's evaluation set against Embree ray-traced shadows "
-            "(docs/metrics.md); \"off edges\" leaves out pixels within 1 px of a true shadow edge.\n\n";
+            "(docs/metrics.md); \"off edges\" leaves out pixels within 1 px of a true shadow edge. "
+            "\"Area error\" scores the shade against the lit fraction of each pixel (16 shadow rays "
+            "over its footprint), so a filter's partial shade where an edge really crosses a pixel "
+            "is not counted as error; settings are ranked by it.\n\n";
     text += concat({"Machine: ", sweep.cpuModel, ", ", std::to_string(sweep.cores), " cores; ", sweep.glRenderer,
                     ", ", sweep.glVersion, ". Sweep wall time: ", format("%.0f", sweep.seconds), " s.\n\n"});
-    text += "Most accurate setting (error %) within each budget of shadow time per frame:\n\n";
+    text += "Most accurate setting (area error %) within each budget of shadow time per frame:\n\n";
     text += atAGlance(lights) + "\n";
     for (const LightRows& light : lights) text += lightSection(light);
     return text;

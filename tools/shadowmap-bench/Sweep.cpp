@@ -48,6 +48,9 @@ BenchRow makeRow(const BenchScene& scene, const ShadowSetting& setting, double f
     row.leak = 100.0 * light.errors.leak;
     row.error = 100.0 * light.errors.error;
     row.errorNoEdge = 100.0 * light.errors.errorNoEdge;
+    row.areaAcne = 100.0 * light.areaErrors.acne;
+    row.areaLeak = 100.0 * light.areaErrors.leak;
+    row.areaError = 100.0 * light.areaErrors.error;
     return row;
 }
 
@@ -130,6 +133,7 @@ std::vector<BenchRow> runSweep(std::vector<BenchScene>& scenes, const engine::Re
     for (BenchScene& scene : scenes) {
         // The evaluator builds the scene's Embree BVH once; settings change no geometry.
         evaluation::ShadowEvaluator evaluator(renderer, scene.scene);
+        evaluator.setAreaTruth(true);
         for (std::size_t index = 0; index < scene.settings.size(); ++index) {
             const ShadowSetting& setting = scene.settings[index];
             applyToEveryLight(scene.scene, setting);
@@ -138,9 +142,11 @@ std::vector<BenchRow> runSweep(std::vector<BenchScene>& scenes, const engine::Re
             // settings changed, and the geometry stays on the GPU.
             if (index == 0) renderer.setScene(scene.scene);
             else renderer.reloadSettings();
-            // Untimed: llvmpipe compiles shaders at their first draw, and new maps are allocated.
+            // Untimed until nothing new compiles: llvmpipe compiles shaders at their first
+            // draw, and new maps are allocated. Four frames past the first are more than the
+            // two warm-up ever needs (the shade cache's fetching programs come in the second).
             warmup.camera = scene.camera;
-            renderer.renderFrame(warmup);
+            renderer.warmUp(warmup, 1, 5);
             const evaluation::ViewResult view = evaluator.evaluate(scene.camera, frames);
             for (const evaluation::LightResult& light : view.lights) {
                 rows.push_back(makeRow(scene, setting, view.frameMs, light));
