@@ -18,6 +18,9 @@
 #include "GltfPreflight.h"
 #include "GltfValidation.h"
 
+#include "engine/render/Frame.h"
+#include "engine/scene/SceneNames.h"
+
 namespace engine {
 
 namespace {
@@ -72,7 +75,10 @@ Scene loadGltf(const std::filesystem::path& path, std::vector<std::string>* warn
     gltf::validateReferences(context, parsed.model, lights.size());
     gltf::decodeDracoPrimitives(context, document, parsed.model);
     gltf::validateModel(context, parsed.model, lights.size());
-    return gltf::convertToScene(context, parsed, document, std::move(lights));
+    Scene scene = gltf::convertToScene(context, parsed, document, std::move(lights));
+    if (const std::string dropped = lightsPastTheLimit(scene, kMaxLights); !dropped.empty())
+        context.warn("", dropped);
+    return scene;
 }
 
 } // namespace engine

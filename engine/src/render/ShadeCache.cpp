@@ -9,6 +9,10 @@ namespace engine {
 
 namespace {
 constexpr int kChannelsPerLayer = 4;
+// The lit pass writes the layers as extra colour outputs beside the image: GL 4.5
+// guarantees 8 draw buffers, so at most 7 layers, 28 cached lights; lights past them are
+// evaluated every frame (Inline).
+constexpr int kMaxLayers = 7;
 const char* const kComponents[kChannelsPerLayer] = {"x", "y", "z", "w"};
 
 // A GLSL float literal that reads back as exactly `value`.
@@ -90,7 +94,8 @@ ShadeCache::Plan ShadeCache::plan(std::uint64_t viewKey, const LightVisibilityHo
         if (const auto constant = hook.constantShades.find(slot); constant != hook.constantShades.end()) {
             plan.sources[slot] = Source::Constant;
             plan.constants[slot] = constant->second;
-        } else if (slot < static_cast<int>(shadeKeys.size()) && shadeKeys[slot] != 0) {
+        } else if (slot < static_cast<int>(shadeKeys.size()) && shadeKeys[slot] != 0 &&
+                   cached < kMaxLayers * kChannelsPerLayer) {
             plan.channels[slot] = cached++;
         }
     }

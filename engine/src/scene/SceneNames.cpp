@@ -75,6 +75,18 @@ std::string describeLightInstances(const Scene& scene) {
                              [&](int i) { return lightInstanceName(scene, i); });
 }
 
+std::string lightsPastTheLimit(const Scene& scene, int limit) {
+    const int count = static_cast<int>(scene.lightInstances.size());
+    if (count <= limit) return "";
+    constexpr int kListed = 10;
+    std::string text = "the scene has " + std::to_string(count) + " lights; only the first " +
+                       std::to_string(limit) + " are rendered, not: ";
+    for (int i = limit; i < std::min(count, limit + kListed); ++i)
+        text += (i > limit ? ", " : "") + std::to_string(i + 1) + " " + lightInstanceName(scene, i);
+    if (count - limit > kListed) text += ", ...";
+    return text;
+}
+
 std::string describeCameraInstances(const Scene& scene) {
     return describeInstances(scene.cameraInstances.size(), "cameras",
                              [&](int i) { return cameraInstanceName(scene, i); });

@@ -445,9 +445,10 @@ engine::LightVisibilityHook ShadowMapPlugin::makeHook(const engine::Frame& frame
         if (cacheMaps_) shadeKeys[light.slot] = shadeKey.value();
         units.emplace_back(kFirstUnit + light.slot, light.map.id());
         // The comparison view reads the same map's raw depth on a second unit, through a
-        // sampler object with comparison off (when the GL has units to spare).
-        const int rawUnit = kFirstUnit + engine::kMaxLights + light.slot;
-        const bool debuggable = rawUnit < maxTextureUnits_;
+        // sampler object with comparison off, when the GL has units to spare: counted down
+        // from the last unit, above every light's comparing unit.
+        const int rawUnit = maxTextureUnits_ - 1 - light.slot;
+        const bool debuggable = rawUnit >= kFirstUnit + static_cast<int>(lights_.size());
         if (debuggable) rawUnits.emplace_back(rawUnit, light.map.id());
         const bool cube = plan.kind == MapKind::Cube;
         lookups.push_back({light.slot, kFirstUnit + light.slot, cube, debuggable ? rawUnit : -1});

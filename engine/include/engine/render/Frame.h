@@ -21,8 +21,13 @@ class SceneGpu;
 namespace gl { class Program; }
 
 // The lit pass handles the first kMaxLights entries of Scene::lightInstances; a light's
-// "slot" is its index there.
-constexpr int kMaxLights = 16;
+// "slot" is its index there. A loaded scene with more says so (lightsPastTheLimit). Why 32:
+// the lit pass's light block is 64 bytes per light and the shadow plugin's about 112, so
+// both stay far inside the 16 KiB every GL 4.5 implementation gives a uniform block, with
+// room for per-light plugin data (cascades); and a light a visibility hook shadows needs a
+// texture unit, of which llvmpipe has 32 (GL 4.5 guarantees 16), so more slots than units
+// would buy only unshadowed lights.
+constexpr int kMaxLights = 32;
 // Texture units 0..kFirstPluginTextureUnit-1 belong to the engine's materials.
 constexpr int kFirstPluginTextureUnit = 4;
 // Uniform block binding 0 is the lit pass's lights; a visibility hook's blocks start here.

@@ -6,7 +6,8 @@
 // Frame.h) stay the same, that light's shade at every pixel is what an earlier frame
 // computed, so the lit pass reads it back instead: one texelFetch per four lights.
 //
-// Storage: an RGBA32F 2D array, four lights per layer, exact floats (a frame that reads the
+// Storage: an RGBA32F 2D array, four lights per layer (at most 7 layers: the first 28
+// cacheable lights; the others are evaluated every frame), exact floats (a frame that reads the
 // cache shades exactly like the frame that filled it). When some light's shade is stale,
 // the lit pass computes it and writes every layer of a second array through extra color
 // outputs (stale lights computed, fresh ones copied from the first array); then the two

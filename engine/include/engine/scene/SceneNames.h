@@ -26,6 +26,10 @@ int findCameraInstanceByNameOrNumber(const Scene& scene, const std::string& text
 // For messages about a name that matched nothing: "the scene's lights: 1 spot_light,
 // 2 sun" (at most 10, then "..."), or "the scene has no lights".
 std::string describeLightInstances(const Scene& scene);
+
+// "the scene has 34 lights; only the first 32 are rendered, not: 33 lamp_33, 34 lamp_34" (at most 10
+// names, then "..."), or "" when the scene has at most `limit`.
+std::string lightsPastTheLimit(const Scene& scene, int limit);
 std::string describeCameraInstances(const Scene& scene);
 
 } // namespace engine
