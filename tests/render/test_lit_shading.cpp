@@ -13,12 +13,14 @@
 
 #include "../support/MetallicRoughnessBrdf.h"
 #include "../support/TestScenes.h"
+#include "engine/scene/Shapes.h"
 #include "engine/render/Renderer.h"
 #include "engine/scene/Scene.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <cmath>
+#include <algorithm>
 #include <functional>
 
 namespace {
@@ -186,10 +188,10 @@ engine::Primitive spherePrimitive(double radius) {
 
 class LitShading : public engine::test::GlTest {
 protected:
-    std::vector<std::uint8_t> render(engine::Scene& scene) {
+    std::vector<std::uint8_t> render(engine::Scene& scene, const glm::dvec3& ambient = kAmbient) {
         scene.updateWorldTransforms();
         engine::RendererConfig config;
-        config.ambient = glm::vec3(kAmbient);
+        config.ambient = glm::vec3(ambient);
         engine::Renderer renderer(config, {});
         renderer.setScene(scene);
         engine::FrameRequest request;
@@ -372,4 +374,53 @@ TEST_F(LitShading, NoLightsRendersAmbientOnly) {
     // The plane covers the whole view: every pixel has the same ambient colour.
     for (int i = 0; i < kSize * kSize; ++i)
         ASSERT_EQ(pixels[i * 4 + 1], pixels[(kSize / 2 * kSize + kSize / 2) * 4 + 1]) << "pixel " << i;
+}
+
+TEST_F(LitShading, SrgbTextureThroughLinearShadingRoundTrips) {
+    // The linear workflow end to end: a base color texture stored sRGB (GL_SRGB8_ALPHA8,
+    // decoded on sampling), shaded in linear (ambient 1, no light: color = base color) and
+    // encoded again by the sRGB target must give back every texel byte. A 16 x 16 texture
+    // holds all 256 values in each channel (red row-major, green reversed, blue
+    // scrambled); nearest filtering, and only pixels whose centre lies in a texel's middle
+    // half, so no two texels mix. Tolerance 0: measured 0 on llvmpipe; an 8-bit value
+    // decoded to float and encoded back lands on itself unless a step is lost, and a
+    // missing decode or encode moves mid-grey by ~50 values.
+    constexpr int kTexels = 16;
+    constexpr double kHalf = 0.9;  // the quad spans 0.9 / 0.928 of the view: ~2.9 pixels a texel
+    engine::Scene scene = planeScene(1.0f);
+    scene.meshes[0].primitives = {engine::texturedQuadPrimitive({-kHalf, -kHalf}, {kHalf, kHalf}, 0)};
+    scene.meshes[0].bounds = scene.meshes[0].primitives[0].bounds;
+    engine::Image image;
+    image.width = image.height = kTexels;
+    const auto texelValue = [](int index, int channel) {
+        return static_cast<std::uint8_t>(channel == 0 ? index : channel == 1 ? 255 - index : (index * 7 + 3) % 256);
+    };
+    for (int index = 0; index < kTexels * kTexels; ++index)
+        image.rgba8.insert(image.rgba8.end(), {texelValue(index, 0), texelValue(index, 1), texelValue(index, 2), 255});
+    scene.images.push_back(image);
+    engine::Material& material = scene.materials[0];
+    material.baseColorFactor = glm::vec4(1.0f);
+    material.baseColorTexture.image = 0;
+    material.baseColorTexture.sampler.minFilter = material.baseColorTexture.sampler.magFilter = 0x2600;  // GL_NEAREST
+    const auto pixels = render(scene, glm::dvec3(1.0));
+
+    std::vector<bool> seen(kTexels * kTexels, false);
+    int worst = 0;
+    for (int y = 0; y < kSize; ++y)
+        for (int x = 0; x < kSize; ++x) {
+            const glm::dvec3 p = surfacePoint(camera(), x, y);
+            // glTF UVs: v grows downward, image row 0 on top.
+            const glm::dvec2 texel = glm::dvec2(p.x + kHalf, kHalf - p.y) / (2.0 * kHalf) * double(kTexels);
+            const glm::dvec2 within = texel - glm::floor(texel);
+            if (glm::any(glm::lessThan(texel, glm::dvec2(0.0))) ||
+                glm::any(glm::greaterThanEqual(texel, glm::dvec2(kTexels))) ||
+                glm::any(glm::greaterThan(glm::abs(within - 0.5), glm::dvec2(0.25))))
+                continue;
+            const int index = int(texel.y) * kTexels + int(texel.x);
+            seen[index] = true;
+            for (int c = 0; c < 3; ++c)
+                worst = std::max(worst, std::abs(int(pixels[(y * kSize + x) * 4 + c]) - int(texelValue(index, c))));
+        }
+    EXPECT_EQ(std::count(seen.begin(), seen.end(), true), kTexels * kTexels) << "every texel checked";
+    EXPECT_EQ(worst, 0);
 }
