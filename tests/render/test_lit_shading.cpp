@@ -424,3 +424,15 @@ TEST_F(LitShading, SrgbTextureThroughLinearShadingRoundTrips) {
     EXPECT_EQ(std::count(seen.begin(), seen.end(), true), kTexels * kTexels) << "every texel checked";
     EXPECT_EQ(worst, 0);
 }
+
+TEST_F(LitShading, EmissiveAddsToAmbientWithoutLights) {
+    // color = emissive + ambient x base color. The emissive factor is above 1 in one
+    // channel, as KHR_materials_emissive_strength allows (the loader folds the strength
+    // in): that channel clamps to white. Tolerance 1/255: 8-bit rounding of the encode.
+    engine::Scene scene = planeScene(0.5f);
+    scene.materials[0].emissiveFactor = glm::vec3(0.3f, 0.05f, 2.0f);
+    const auto pixels = render(scene);
+    const glm::dvec3 expected = glm::dvec3(0.3, 0.05, 2.0) + kAmbient * kAlbedo;
+    for (int c = 0; c < 3; ++c)
+        EXPECT_NEAR(pixels[(kSize / 2 * kSize + kSize / 2) * 4 + c], 255.0 * srgbEncode(expected[c]), 1.0) << "channel " << c;
+}
