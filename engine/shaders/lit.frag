@@ -1,9 +1,14 @@
-// Lit pass, fragment stage: ambient + per-light Lambert diffuse and normalized Blinn-Phong
-// specular from the glTF metallic/roughness factors, spot cone falloff and range
-// attenuation as KHR_lights_punctual recommends, and the ambient-retaining modulate with
-// the plugin's per-light visibility term (shadowed regions keep ambient and dimmed diffuse):
+// Lit pass, fragment stage: ambient + per-light glTF 2.0 metallic-roughness BRDF (the
+// specification's Appendix B: GGX distribution, height-correlated Smith-GGX visibility,
+// Schlick Fresnel, Lambert diffuse weighted by (1 - F) and (1 - metallic)), spot cone
+// falloff and range attenuation as KHR_lights_punctual recommends, and the
+// ambient-retaining modulate with the plugin's per-light visibility term (shadowed regions
+// keep ambient and dimmed diffuse):
 //   diffuseShade = d + (1 - d) * shade
 //   color = emissive + ambient * albedo + sum(diffuseShade * diffuse + shade * specular)
+// Light units: a light's color x intensity is taken as the irradiance it brings (lux for
+// directional lights, candela / d^2 for the others) and the result is written as linear
+// radiance with exposure 1 and no tone mapping; the sRGB target encodes it and clamps at 1.
 // The engine prepends "#version 450 core", MAX_LIGHTS, LIGHT_COUNT (the scene's lights)
 // and FOR_EACH_LIGHT(F), which expands to F(slot, type) for every light, both literal
 // numbers: the sum is written out term by term, never looped, so each term indexes the
@@ -76,8 +81,8 @@ float rangeWindow(float distance, float range) {
 // One light's term of the sum above. Called with literal slot and type (FOR_EACH_LIGHT):
 // each call keeps only its own type's code (no cone for a point light, no distance for a
 // directional one) and reads uniforms at constant indices.
-vec3 lightContribution(int slot, int type, float shade, vec3 N, vec3 V, vec3 diffuseColor, vec3 f0,
-                       float shininess) {
+vec3 lightContribution(int slot, int type, float shade, vec3 N, vec3 V, float NdotV, vec3 diffuseColor,
+                       vec3 f0, float alpha) {
     LightData light = uLights[slot];
     vec3 L;
     float attenuation = 1.0;
@@ -98,8 +103,21 @@ vec3 lightContribution(int slot, int type, float shade, vec3 N, vec3 V, vec3 dif
     if (NdotL <= 0.0 || attenuation <= 0.0) return vec3(0.0);
     vec3 radiance = light.radiance.rgb * attenuation * NdotL;
     vec3 H = normalize(L + V);
-    vec3 diffuse = diffuseColor / PI * radiance;
-    vec3 specular = f0 * ((shininess + 8.0) / (8.0 * PI)) * pow(max(dot(N, H), 0.0), shininess) * radiance;
+    float VdotH = max(dot(V, H), 0.0);
+    // GGX D written with |N x H|^2 for 1 - (N.H)^2: the same value, without the
+    // cancellation that costs float its digits near the highlight's centre at small alpha.
+    vec3 NxH = cross(N, H);
+    float NdotH = max(dot(N, H), 0.0);
+    float k = alpha / (dot(NxH, NxH) + NdotH * NdotH * alpha * alpha);
+    float D = k * k / PI;
+    float a2 = alpha * alpha;
+    float visibility = 0.5 / (NdotL * sqrt(NdotV * NdotV * (1.0 - a2) + a2) +
+                              NdotV * sqrt(NdotL * NdotL * (1.0 - a2) + a2));
+    float oneMinusVdotH = 1.0 - VdotH;
+    float oneMinusVdotH2 = oneMinusVdotH * oneMinusVdotH;
+    vec3 F = f0 + (1.0 - f0) * (oneMinusVdotH2 * oneMinusVdotH2 * oneMinusVdotH);
+    vec3 diffuse = (1.0 - F) * diffuseColor / PI * radiance;
+    vec3 specular = F * (D * visibility) * radiance;
     float dimming = uLightDimming[slot];
     // d + (1 - d) * shade, written so that a constant shade of 1 (no shadows) folds away at
     // compile time whatever d is.
@@ -127,8 +145,11 @@ void main() {
 
     vec3 diffuseColor = albedo.rgb * (1.0 - uMetallic);
     vec3 f0 = mix(vec3(0.04), albedo.rgb, uMetallic);
-    float alpha = max(uRoughness * uRoughness, 0.03);
-    float shininess = min(2.0 / (alpha * alpha) - 2.0, 2048.0);
+    // A perfectly smooth surface under a punctual light is a Dirac highlight float cannot
+    // hold: alpha (roughness^2) stops at 0.002, where D at the highlight's centre is ~8e4.
+    float alpha = max(uRoughness * uRoughness, 0.002);
+    // A normal turned away from the eye (interpolated normals at silhouettes) shades as grazing.
+    float NdotV = max(dot(N, V), 1e-4);
 
     vec3 color = uEmissive + uAmbient * albedo.rgb;
 #if LIGHT_COUNT > 0
@@ -138,7 +159,7 @@ void main() {
     float shades[LIGHT_COUNT];
     loadShades(shades, vEyePosition, N);
     // Each light's term, its slot and type literals (FOR_EACH_LIGHT).
-#define ADD_LIGHT(slot, type) color += lightContribution(slot, type, shades[slot], N, V, diffuseColor, f0, shininess);
+#define ADD_LIGHT(slot, type) color += lightContribution(slot, type, shades[slot], N, V, NdotV, diffuseColor, f0, alpha);
     FOR_EACH_LIGHT(ADD_LIGHT)
 #endif
     outColor = vec4(color, albedo.a);

@@ -103,6 +103,11 @@ QuadEdit withTransform(const json& transform) {
 QuadEdit withShadowAlphaCutoff(const char* alphaMode, const json& cutoff) {
     return set("/materials", {{{"name", "glass"}, {"alphaMode", alphaMode}, {"extras", {{"shadow_alpha_cutoff", cutoff}}}}});
 }
+// Material 'lamp' with KHR_materials_emissive_strength {"emissiveStrength": strength}.
+QuadEdit withEmissiveStrength(const json& strength) {
+    return set("/materials", {{{"name", "lamp"}, {"emissiveFactor", {1, 1, 1}},
+                               {"extensions", {{"KHR_materials_emissive_strength", {{"emissiveStrength", strength}}}}}}});
+}
 // A vertex attribute of 4 elements of `type`, from raw bytes.
 QuadEdit rawAttribute(const char* name, std::vector<std::uint8_t> bytes, int componentType, const char* type,
                       bool normalized, std::size_t count = 4) {
@@ -163,7 +168,7 @@ const std::vector<BadInputCase<QuadEdit>> kQuadEdits = {
     {"UnsupportedRequiredExtension", set("/extensionsRequired", {"KHR_lights_punctual", "EXT_texture_webp"}),
      {"webp.gltf", "extensionsRequired", "'EXT_texture_webp' is not supported",
       "(supported: KHR_lights_punctual, KHR_texture_transform, KHR_lights_shadows, KHR_draco_mesh_compression, "
-      "EXT_meshopt_compression, KHR_mesh_quantization)"}},
+      "EXT_meshopt_compression, KHR_mesh_quantization, KHR_materials_emissive_strength)"}},
     {"TinygltfErrorsArePassedOn", set("/accessors/0/type", "VEC5"),
      {"vec5.gltf", "tinygltf", "VEC5"}},
     // tinygltf 2.7.0 throws std::out_of_range here.
@@ -331,6 +336,10 @@ const std::vector<BadInputCase<QuadEdit>> kQuadEdits = {
      {"cutoff.gltf", "materials[0] 'glass'", "extras.shadow_alpha_cutoff is not a number"}},
     {"NegativeShadowAlphaCutoff", withShadowAlphaCutoff("BLEND", -0.25),
      {"cutoff.gltf", "materials[0] 'glass'", "extras.shadow_alpha_cutoff -0.25 is not >= 0"}},
+    {"NegativeEmissiveStrength", withEmissiveStrength(-2.0),
+     {"emissive.gltf", "materials[0] 'lamp'", "extensions.KHR_materials_emissive_strength.emissiveStrength -2 is not >= 0"}},
+    {"EmissiveStrengthThatIsAString", withEmissiveStrength("bright"),
+     {"emissive.gltf", "materials[0] 'lamp'", "extensions.KHR_materials_emissive_strength.emissiveStrength is not a number"}},
 
     // TEXCOORD_1, COLOR_0
     {"Texcoord1OfTheWrongCount", floatAttribute("TEXCOORD_1", {0, 0, 1, 0, 1, 1}, 2, "VEC2"),

@@ -1,10 +1,13 @@
 // glTF materials (metallic-roughness core, the base color texture with its sampler, UV set
-// and KHR_texture_transform, our shadow extras) to engine materials.
+// and KHR_texture_transform, KHR_materials_emissive_strength, our shadow extras) to engine
+// materials.
 #include "GltfConvert.h"
 #include "GltfJsonFields.h"
 #include "GltfTextures.h"
 
 #include <cmath>
+#include <optional>
+#include <utility>
 
 namespace engine::gltf {
 
@@ -28,7 +31,9 @@ public:
         material.metallicFactor = static_cast<float>(inRange("metallicFactor", pbr.metallicFactor, 1.0));
         material.roughnessFactor = static_cast<float>(inRange("roughnessFactor", pbr.roughnessFactor, 1.0));
         // No upper bound: KHR_materials_emissive_strength files may exceed 1.
-        material.emissiveFactor = glm::vec3(vector<3>("emissiveFactor", source_.emissiveFactor, glm::dvec3(0.0), INFINITY));
+        material.emissiveFactor = glm::vec3(vector<3>("emissiveFactor", source_.emissiveFactor, glm::dvec3(0.0), INFINITY)) *
+                                  emissiveStrength();
+        warnAboutTexturesNotRead();
         material.doubleSided = source_.doubleSided;
         material.alphaMode = alphaMode();
         material.alphaCutoff = static_cast<float>(inRange("alphaCutoff", source_.alphaCutoff, INFINITY));
@@ -57,6 +62,27 @@ private:
         for (glm::length_t c = 0; c < N; ++c)
             result[c] = inRange(std::string(what) + "[" + std::to_string(c) + "]", values[c], maximum);
         return result;
+    }
+
+    // KHR_materials_emissive_strength: a factor on the emissive color that may exceed 1.
+    // Without an emissive texture the emitted color is factor x strength, so the product
+    // is all the lit pass needs.
+    float emissiveStrength() const {
+        const std::optional<JsonFields> extension = json_.extension("KHR_materials_emissive_strength");
+        if (!extension) return 1.0f;
+        extension->warnAboutUnknownKeys({"emissiveStrength", "extensions", "extras"});
+        const float strength = extension->finiteFloat("emissiveStrength", 1.0f);
+        if (strength < 0.0f) extension->fail("emissiveStrength", formatNumber(strength) + " is not >= 0");
+        return strength;
+    }
+
+    // The material textures the lit pass does not sample yet: the material still renders
+    // (from its factors), but the file would look otherwise in a full glTF viewer, so say so.
+    void warnAboutTexturesNotRead() const {
+        const JsonFields pbr = json_.child("pbrMetallicRoughness");
+        for (const auto& [fields, key] : {std::pair{&pbr, "metallicRoughnessTexture"}, std::pair{&json_, "normalTexture"},
+                                          std::pair{&json_, "occlusionTexture"}, std::pair{&json_, "emissiveTexture"}})
+            if (fields->has(key)) fields->warn(fields->member(key) + " is not read yet and is ignored (the factors alone shade)");
     }
 
     AlphaMode alphaMode() const {

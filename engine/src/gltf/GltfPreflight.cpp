@@ -14,7 +14,8 @@ namespace {
 
 constexpr std::array kSupportedExtensions{"KHR_lights_punctual",        "KHR_texture_transform",
                                           "KHR_lights_shadows",         "KHR_draco_mesh_compression",
-                                          "EXT_meshopt_compression",    "KHR_mesh_quantization"};
+                                          "EXT_meshopt_compression",    "KHR_mesh_quantization",
+                                          "KHR_materials_emissive_strength"};
 
 // "KHR_lights_punctual, KHR_texture_transform, ...": the list refusals quote.
 std::string supportedExtensionList() {
