@@ -5,6 +5,7 @@
 #include "engine/util/Error.h"
 
 #include "gltf_test_support.h"
+#include "../support/AssimpTestModels.h"
 
 #include <gtest/gtest.h>
 
@@ -73,6 +74,45 @@ TEST(GltfAnimations, UnusedSamplerIsWarnedAboutAndKeptEmpty) {
     EXPECT_TRUE(std::any_of(warnings.begin(), warnings.end(), [](const std::string& w) {
         return w.find("animations[0] 'SlideTurnGrow'.samplers[1]: no channel uses it") != std::string::npos;
     }));
+}
+
+// Files no one here wrote (Debian's assimp-testmodels); the facts checked are in their JSON.
+TEST(GltfAnimations, SimpleSkinTurnsItsJointOverFivePointFiveSeconds) {
+    ASSERT_TRUE(engine::test::assimpTestModelsInstalled());
+    engine::Scene scene = engine::loadGltf(engine::test::kAssimpGltf2Models / "simple_skin/simple_skin.gltf");
+    ASSERT_EQ(scene.animations.size(), 1u);
+    const engine::Animation& animation = scene.animations[0];
+    ASSERT_EQ(animation.channels.size(), 1u);
+    EXPECT_EQ(animation.channels[0].node, 2);
+    EXPECT_EQ(animation.channels[0].path, engine::AnimationPath::Rotation);
+    EXPECT_EQ(animation.samplers[0].times.size(), 12u);
+    EXPECT_EQ(animation.startTime, 0.0f);
+    EXPECT_EQ(animation.endTime, 5.5f);
+    // The file's keys turn the joint about Z up to 90 degrees each way (output min/max z
+    // -0.707 / 0.707). At a key's time the pose is that key.
+    const engine::AnimationSampler& turn = animation.samplers[0];
+    std::size_t turned = 0;
+    while (turned < turn.times.size() && std::abs(turn.values[4 * turned + 2]) < 0.5f) ++turned;
+    ASSERT_LT(turned, turn.times.size()) << "no key turns more than 60 degrees";
+    const glm::dmat4 rest = scene.nodes[2].local;
+    engine::poseAnimation(scene, animation, turn.times[turned]);
+    EXPECT_NEAR(scene.nodes[2].rotation.z, turn.values[4 * turned + 2], 1e-7);  // float key, double pose
+    EXPECT_NEAR(glm::length(scene.nodes[2].rotation), 1.0, 1e-7);
+    EXPECT_NE(scene.nodes[2].local, rest);
+}
+
+TEST(GltfAnimations, AnimatedMorphCubeAnimatesBothTargetWeights) {
+    ASSERT_TRUE(engine::test::assimpTestModelsInstalled());
+    engine::Scene scene = engine::loadGltf(engine::test::kAssimpGltf2Models /
+                                           "glTF-Sample-Models/AnimatedMorphCube-glTF/AnimatedMorphCube.gltf");
+    ASSERT_EQ(scene.animations.size(), 1u);
+    const engine::Animation& square = scene.animations[0];
+    EXPECT_EQ(square.name, "Square");
+    ASSERT_EQ(square.channels.size(), 1u);
+    EXPECT_EQ(square.channels[0].path, engine::AnimationPath::Weights);
+    EXPECT_EQ(square.samplers[0].components, 2u);  // 254 outputs for 127 keys
+    engine::poseAnimation(scene, square, 1.0);
+    EXPECT_EQ(scene.nodes[square.channels[0].node].weights.size(), 2u);
 }
 
 // --- Bad input ---------------------------------------------------------------------------
