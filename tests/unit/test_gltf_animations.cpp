@@ -152,6 +152,13 @@ const BadAnimation kCases[] = {
      {"nantime.gltf", "used as input of " + kAnim + ".samplers[0]", "not a finite number"}},
     {"OutputInfinite", samplerData(0, "output", {0, 0, 0, kInf, 0, 0}, 3, "VEC3"),
      {"inf.gltf", "used as output of " + kAnim + ".samplers[0]", "element 1", "not a finite number"}},
+    // An out-tangent of 1e37 over 1000 s may reach 1e37 * 1000 * 4/27 = 1.5e39 > FLT_MAX.
+    {"CubicSplineLeavesFloatRange",
+     [](GltfBuilder& b) {
+         samplerData(2, "input", {0.0f, 1000.0f}, 1, "SCALAR")(b);
+         samplerData(2, "output", {0, 0, 0, 1, 1, 1, 1e37f, 0, 0, 0, 0, 0, 3, 3, 3, 0, 0, 0}, 3, "VEC3")(b);
+     },
+     {"range.gltf", kAnim + ".samplers[2]", "CUBICSPLINE between keys 0 and 1 may reach", "beyond float range"}},
     {"RotationOutputIsVec3", samplerData(1, "output", {0, 0, 0, 0, 0, 1}, 3, "VEC3"),
      {"vec3.gltf", "used as output of " + kAnim + ".samplers[1]", "must be VEC4"}},
     {"ZeroQuaternionKey", samplerData(1, "output", {0, 0, 0, 1, 0, 0, 0, 0}, 4, "VEC4"),

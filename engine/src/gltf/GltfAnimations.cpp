@@ -5,6 +5,7 @@
 #include "GltfValidation.h"
 
 #include <cmath>
+#include <limits>
 #include <map>
 #include <optional>
 #include <set>
@@ -173,6 +174,7 @@ private:
                                       std::to_string(needed / perElement) + " (" +
                                       std::to_string(needed / perElement / sampler.times.size()) + " per key)");
         }
+        if (cubic) checkSplineRange(object, sampler);
         if (use.path == AnimationPath::Rotation) checkRotations(object, sampler, cubic);
         return sampler;
     }
@@ -195,6 +197,27 @@ private:
                                           formatNumber(times[k]) + " s) follows key " + std::to_string(k - 1) + " (" +
                                           formatNumber(times[k - 1]) + " s)");
         if (cubic && times.size() < 2) context_.fail(object, "CUBICSPLINE needs at least 2 keys, input has 1");
+    }
+
+    // Between keys k and k+1 a spline component is at most |v_k| + |v_k+1| + td (|b_k| +
+    // |a_k+1|) * 4/27 (the Hermite basis: h00 + h01 = 1, |h10|, |h11| <= 4/27 on [0, 1]).
+    // Finite keys with huge tangents or intervals could still leave float: refused, so a
+    // sampled pose is always finite.
+    void checkSplineRange(const std::string& object, const AnimationSampler& sampler) const {
+        const std::size_t n = sampler.components;
+        for (std::size_t k = 0; k + 1 < sampler.times.size(); ++k) {
+            const double td = double(sampler.times[k + 1]) - sampler.times[k];
+            const float* key = sampler.values.data() + 3 * k * n;
+            const float* next = key + 3 * n;
+            for (std::size_t c = 0; c < n; ++c) {
+                const double bound = std::abs(double(key[n + c])) + std::abs(double(next[n + c])) +
+                                     td * (std::abs(double(key[2 * n + c])) + std::abs(double(next[c]))) * 4.0 / 27.0;
+                if (bound > std::numeric_limits<float>::max())
+                    context_.fail(object, "CUBICSPLINE between keys " + std::to_string(k) + " and " +
+                                              std::to_string(k + 1) + " may reach " + formatNumber(bound) +
+                                              ", beyond float range (tangents too large for the interval)");
+            }
+        }
     }
 
     // Rotation keys must be rotations: a zero quaternion has no direction to normalize to.
