@@ -103,8 +103,13 @@ TEST(GltfAnimations, SimpleSkinTurnsItsJointOverFivePointFiveSeconds) {
 
 TEST(GltfAnimations, AnimatedMorphCubeAnimatesBothTargetWeights) {
     ASSERT_TRUE(engine::test::assimpTestModelsInstalled());
-    engine::Scene scene = engine::loadGltf(engine::test::kAssimpGltf2Models /
-                                           "glTF-Sample-Models/AnimatedMorphCube-glTF/AnimatedMorphCube.gltf");
+    std::vector<std::string> warnings;
+    engine::Scene scene = engine::loadGltf(
+        engine::test::kAssimpGltf2Models / "glTF-Sample-Models/AnimatedMorphCube-glTF/AnimatedMorphCube.gltf", &warnings);
+    // Until morphing is applied, the file says so rather than animating nothing silently.
+    EXPECT_TRUE(std::any_of(warnings.begin(), warnings.end(), [](const std::string& w) {
+        return w.find("channels[0]: morph target weights are sampled but not applied yet") != std::string::npos;
+    }));
     ASSERT_EQ(scene.animations.size(), 1u);
     const engine::Animation& square = scene.animations[0];
     EXPECT_EQ(square.name, "Square");
