@@ -20,6 +20,7 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 
 constexpr int kUnsignedByte = 5121;
+constexpr int kShort = 5122;
 constexpr int kUnsignedShort = 5123;
 constexpr int kUnsignedInt = 5125;
 constexpr int kFloat = 5126;
@@ -166,5 +167,31 @@ struct GltfBuilder {
         return path;
     }
 };
+
+// Appends an animation 'SlideTurnGrow' of `node`, one sampler per interpolation, all keyed
+// at 0 and 1 s: samplers[0] LINEAR translation (0,0,0) -> (2,0,0); samplers[1] STEP rotation
+// as normalized SHORT, identity then 90 degrees about +Z (0, 0, 23170, 23170) / 32767;
+// samplers[2] CUBICSPLINE scale 1 -> 3 with flat tangents. channels[i] uses samplers[i].
+// Returns the animation's index.
+inline int addSlideTurnGrowAnimation(GltfBuilder& b, int node) {
+    const int times = b.addFloats({0, 1}, 1, "SCALAR");
+    b.doc["accessors"][times]["min"] = {0};  // glTF requires min and max on animation inputs
+    b.doc["accessors"][times]["max"] = {1};
+    const int slide = b.addFloats({0, 0, 0, 2, 0, 0}, 3, "VEC3");
+    const std::vector<std::int16_t> turnKeys = {0, 0, 0, 32767, 0, 0, 23170, 23170};
+    const int turn = b.addAccessor(b.addView(turnKeys.data(), turnKeys.size() * 2), kShort, 2, "VEC4", true);
+    // (in-tangent, value, out-tangent) per key.
+    const int grow = b.addFloats({0, 0, 0, 1, 1, 1, 0, 0, 0, 0, 0, 0, 3, 3, 3, 0, 0, 0}, 3, "VEC3");
+    const auto channel = [&](int sampler, const char* path) {
+        return json{{"sampler", sampler}, {"target", {{"node", node}, {"path", path}}}};
+    };
+    return b.add("animations",
+                 {{"name", "SlideTurnGrow"},
+                  {"samplers",
+                   {{{"input", times}, {"output", slide}},
+                    {{"input", times}, {"output", turn}, {"interpolation", "STEP"}},
+                    {{"input", times}, {"output", grow}, {"interpolation", "CUBICSPLINE"}}}},
+                  {"channels", {channel(0, "translation"), channel(1, "rotation"), channel(2, "scale")}}});
+}
 
 } // namespace gltf_writer

@@ -2,6 +2,7 @@
 
 #include "engine/config/EngineConfig.h"
 #include "engine/util/Error.h"
+#include "engine/util/FormatNumber.h"
 
 #include <algorithm>
 #include <cctype>
@@ -31,6 +32,20 @@ int parseInteger(const std::string& flag, const std::string& text, int minimum, 
         throw std::invalid_argument(flag + ": \"" + text + "\" is not an integer in [" + std::to_string(minimum) +
                                     ", " + std::to_string(maximum) + "]");
     return static_cast<int>(value);
+}
+
+double parseNumber(const std::string& flag, const std::string& text, double minimum, double maximum) {
+    char* end = nullptr;
+    errno = 0;
+    const double value = std::strtod(text.c_str(), &end);
+    // strtod also takes white space, '+', hex, "inf" and "nan": a flag's value is a plain number.
+    const bool plain = !text.empty() && (std::isdigit(static_cast<unsigned char>(text[0])) || text[0] == '-' ||
+                                         text[0] == '.') &&
+                       text.find_first_of("xXnN") == std::string::npos;
+    if (!plain || *end != '\0' || errno != 0 || !(value >= minimum && value <= maximum))
+        throw std::invalid_argument(flag + ": \"" + text + "\" is not a number in [" + engine::formatNumber(minimum) +
+                                    ", " + engine::formatNumber(maximum) + "]");
+    return value;
 }
 
 std::vector<std::string> parseList(const std::string& flag, const std::string& text) {

@@ -19,6 +19,8 @@ const char* const kRenderUsage =
     "  [--key-light spot|point|directional] [--ground]  (add a light placed from the bounds, printed;\n"
     "                                    a ground under the model to receive its shadow)\n"
     "  [--orbit-light NAME] [--orbit-camera]\n"
+    "  [--time T]  (pose every animation of the scene at T seconds; default: the rest pose)\n"
+    "  [--animate NAME|all [--fps F]]  (play that animation, or all: frame i at T + i/F, F default 30)\n"
     "  [--truth]   (per light: map time, and acne/leak against ray-traced shadows)\n"
     "  [--warmup N] (untimed frames first: at least N, default 1, then until a frame compiles no\n"
     "               new shader (up to 4 more), so no timed frame pays for compilation; 0: none)\n"
@@ -29,6 +31,7 @@ namespace {
 
 // Bounds of typos, not of the GL: the renderer checks what it can allocate.
 constexpr int kMaxSize = 16384, kMaxFrames = 100000, kMaxWarmup = 1000;
+constexpr double kMaxSeconds = 1e6, kMinFps = 1e-3, kMaxFps = 1e4;
 
 // Every image engine-render writes is PNG (lossless: masks and maps are measured): a file
 // named otherwise would hold PNG bytes under a name that says something else.
@@ -75,12 +78,16 @@ RenderOptions parseRenderOptions(int argc, char** argv) {
         else if (flag == "--graph-dot") options.graphDot = value;
         else if (tools::parseSceneLightingFlag(options.lighting, flag, value)) {}
         else if (flag == "--orbit-light") options.orbitLight = value;
+        else if (flag == "--time") options.time = tools::parseNumber(flag, value, 0.0, kMaxSeconds);
+        else if (flag == "--animate") options.animate = value;
+        else if (flag == "--fps") options.fps = tools::parseNumber(flag, value, kMinFps, kMaxFps);
         else return false;
         return true;
     });
     if (options.help) return options;
     if (!sawScene) throw std::invalid_argument("--scene is required");
     if (!sawOut && !options.list) throw std::invalid_argument("--out is required");
+    if (options.fps && options.animate.empty()) throw std::invalid_argument("--fps needs --animate");
     // --list reads only the scene: it needs no config, found or not.
     if (options.config.empty() && !options.list) options.config = tools::defaultConfigPath();
     return options;

@@ -28,6 +28,11 @@ struct RenderOptions {
     tools::SceneLighting lighting;  // --key-light spot|point|directional, --ground
     std::string orbitLight;   // --orbit-light NAME: turn that light 2 degrees per frame
     bool orbitCamera = false; // --orbit-camera: turn the camera 2 degrees per frame
+    // --time T: pose the scene's animations at T seconds (every frame, unless --animate);
+    // --animate NAME|all: play those animations, frame i at T + i / --fps. Neither: rest pose.
+    std::optional<double> time;
+    std::string animate;
+    std::optional<double> fps;
     bool truth = false;       // --truth: per-light error against ray-traced shadows
     bool list = false;        // --list: print the scene's cameras and lights, render nothing
     std::string stats;      // JSON

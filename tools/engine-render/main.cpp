@@ -6,6 +6,7 @@
 #include "LightOverrides.h"
 #include "RenderOptions.h"
 #include "SceneLighting.h"
+#include "AnimationPlayback.h"
 
 #include "ShadowEvaluation.h"
 
@@ -199,6 +200,16 @@ int run(const RenderOptions& options, std::unique_ptr<engine::GlContext>& contex
     tools::applyLightOverrides(lightSettings, plugins, options.config);
     for (const std::string& warning : tools::shadowedSettingWarnings(options.pluginSettings, lightSettings, host, scene))
         std::cerr << "warning: " << warning << "\n";
+    tools::AnimationPlayback playback;
+    if (!options.animate.empty() || options.time) {
+        playback.animations = tools::selectAnimations(scene, options.scene, options.animate.empty() ? "--time" : "--animate",
+                                                      options.animate.empty() ? "all" : options.animate);
+        playback.startSeconds = options.time.value_or(0.0);
+        playback.fps = options.fps.value_or(playback.fps);
+        playback.animating = !options.animate.empty();
+        if (playback.animations.empty()) std::cerr << "warning: --time: " << options.scene << " has no animations\n";
+        tools::poseScene(scene, playback, playback.secondsAtFrame(0));
+    }
     const int orbitingLight =
         options.orbitLight.empty() ? -1 : scene.lightInstances[lightSlot(scene, options.scene, options.orbitLight)].node;
     const glm::dvec3 orbitCenter = scene.worldBounds.empty() ? glm::dvec3(0.0) : scene.worldBounds.center();
@@ -229,6 +240,7 @@ int run(const RenderOptions& options, std::unique_ptr<engine::GlContext>& contex
     // rendering, not shader compilation. --warmup 0 times the cold start.
     if (options.warmup > 0) renderer.warmUp(request, options.warmup, options.warmup + kExtraWarmupFrames);
     for (int frame = 0; frame < options.frames; ++frame) {
+        if (frame > 0 && playback.animating) tools::poseScene(scene, playback, playback.secondsAtFrame(frame));
         if (frame > 0 && orbitingLight >= 0) engine::orbitNode(scene, orbitingLight, orbitCenter, kOrbitStep);
         if (frame > 0 && options.orbitCamera)
             request.camera.eyeToWorld = engine::orbitTransform(request.camera.eyeToWorld, orbitCenter, kOrbitStep);

@@ -15,6 +15,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
+#include <functional>
 #include <filesystem>
 #include <initializer_list>
 #include <string>
@@ -162,11 +163,40 @@ void checkSceneContract(const engine::Scene& scene) {
             finding("camera instance out of range");
 }
 
+// What Animation.h promises poseAnimation, then a pose at the start, middle and end of
+// every animation (which runs the sampling under the sanitizers) must stay finite.
+void checkAnimationContract(engine::Scene scene) {
+    for (std::size_t a = 0; a < scene.animations.size(); ++a) {
+        const engine::Animation& animation = scene.animations[a];
+        const std::string name = "animations[" + std::to_string(a) + "]";
+        for (const engine::AnimationChannel& channel : animation.channels) {
+            if (!inRange(channel.node, scene.nodes.size(), false) ||
+                !inRange(channel.sampler, animation.samplers.size(), false))
+                finding(name + ": channel node or sampler out of range");
+            const engine::AnimationSampler& sampler = animation.samplers[channel.sampler];
+            const std::size_t perKey = sampler.interpolation == engine::Interpolation::CubicSpline ? 3 : 1;
+            if (sampler.times.empty() || sampler.components == 0 ||
+                sampler.values.size() != sampler.times.size() * perKey * sampler.components)
+                finding(name + ": a used sampler's keys and values disagree");
+            if (!std::is_sorted(sampler.times.begin(), sampler.times.end(), std::less_equal<float>()))
+                finding(name + ": key times not strictly increasing");
+        }
+        for (const double at : {double(animation.startTime), 0.5 * (animation.startTime + animation.endTime),
+                                double(animation.endTime)}) {
+            engine::poseAnimation(scene, animation, at);
+            for (const engine::Node& node : scene.nodes)
+                for (int c = 0; c < 16; ++c)
+                    if (!std::isfinite(node.local[c / 4][c % 4])) finding(name + ": pose not finite");
+        }
+    }
+}
+
 void loadOne(const fs::path& path) {
     try {
         std::vector<std::string> warnings;
         const engine::Scene scene = engine::loadGltf(path, &warnings);
         checkSceneContract(scene);
+        checkAnimationContract(scene);
         if (gVerbose)
             std::fprintf(stderr, "%s: loaded: %zu nodes, %zu meshes, %zu images, %zu lights, %zu warnings\n",
                          path.filename().c_str(), scene.nodes.size(), scene.meshes.size(), scene.images.size(),

@@ -205,6 +205,14 @@ GltfBuilder zeroAccessor() {
     return b;
 }
 
+// The triangle animated by every interpolation (gltf_writer.h), one of them reading
+// normalized integers.
+GltfBuilder animatedTriangle() {
+    GltfBuilder b = triangle();
+    addSlideTurnGrowAnimation(b, 0);
+    return b;
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -238,6 +246,8 @@ int main(int argc, char** argv) {
         gltf(compressed_seeds::dracoCube(), "draco-cube.gltf");
         glb(compressed_seeds::dracoCube(), "draco-cube.glb");
         glb(compressed_seeds::meshoptQuad(), "meshopt-quad.glb");
+        gltf(animatedTriangle(), "animated.gltf");
+        glb(animatedTriangle(), "animated.glb");
     } catch (const std::exception& error) {
         std::fprintf(stderr, "make_seeds: %s\n", error.what());
         return 1;

@@ -47,6 +47,8 @@ bool componentsFit(const tinygltf::Accessor& accessor, AccessorUse::Components w
     case AccessorUse::Components::Quantized: return isFloat || unsignedSmall || signedSmall;
     case AccessorUse::Components::UnsignedInteger:
         return (unsignedSmall || type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT) && !accessor.normalized;
+    case AccessorUse::Components::FloatOrAnyNormalized:
+        return isFloat || ((unsignedSmall || signedSmall) && accessor.normalized);
     }
     return false;
 }
@@ -58,6 +60,7 @@ const char* describeWanted(AccessorUse::Components wanted) {
     case AccessorUse::Components::FloatOrSignedNormalized: return "FLOAT or normalized BYTE/SHORT";
     case AccessorUse::Components::Quantized: return "FLOAT or (UNSIGNED_)BYTE/(UNSIGNED_)SHORT";
     case AccessorUse::Components::UnsignedInteger: return "UNSIGNED_BYTE/SHORT/INT (not normalized)";
+    case AccessorUse::Components::FloatOrAnyNormalized: return "FLOAT or normalized (UNSIGNED_)BYTE/(UNSIGNED_)SHORT";
     }
     return "";
 }

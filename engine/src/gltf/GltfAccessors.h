@@ -22,6 +22,8 @@ struct AccessorUse {
         // (positions, texture coordinates); the node transform dequantizes.
         Quantized,
         UnsignedInteger,    // UNSIGNED_BYTE/SHORT/INT, not normalized (indices)
+        // FLOAT, or any normalized 8/16-bit integer (animated rotations and weights)
+        FloatOrAnyNormalized,
     };
     std::string usedAs;  // "POSITION of meshes[0].primitives[1]", for messages
     int type = TINYGLTF_TYPE_SCALAR;

@@ -1,6 +1,7 @@
 // Nodes and the assembly of the engine scene.
 #include "GltfConvert.h"
 
+#include "GltfAnimations.h"
 #include "GltfImages.h"
 #include "GltfLights.h"
 #include "GltfMeshes.h"
@@ -17,20 +18,19 @@ namespace engine::gltf {
 
 namespace {
 
-// M of the node relative to its parent: the matrix (column-major, as glTF stores it), or
-// T * R * S. Lengths, finiteness and a non-zero quaternion were checked by validation.
-glm::dmat4 localTransform(const tinygltf::Node& node) {
-    if (node.matrix.size() == 16) return glm::make_mat4(node.matrix.data());
-    glm::dmat4 local(1.0);
-    if (node.translation.size() == 3) local = glm::translate(local, glm::make_vec3(node.translation.data()));
-    if (node.rotation.size() == 4) {
+// The node's TRS (identity parts where absent) and M relative to its parent: the matrix
+// (column-major, as glTF stores it), or T * R * S. Lengths, finiteness and a non-zero
+// quaternion were checked by validation.
+void readLocalTransform(const tinygltf::Node& source, Node& node) {
+    if (source.translation.size() == 3) node.translation = glm::make_vec3(source.translation.data());
+    if (source.rotation.size() == 4) {
         // glTF stores (x, y, z, w); glm's constructor takes w first. Exporters write
         // quaternions rounded to float: normalize so no scale sneaks in.
-        const glm::dquat q(node.rotation[3], node.rotation[0], node.rotation[1], node.rotation[2]);
-        local *= glm::mat4_cast(glm::normalize(q));
+        const glm::dquat q(source.rotation[3], source.rotation[0], source.rotation[1], source.rotation[2]);
+        node.rotation = glm::normalize(q);
     }
-    if (node.scale.size() == 3) local = glm::scale(local, glm::make_vec3(node.scale.data()));
-    return local;
+    if (source.scale.size() == 3) node.scale = glm::make_vec3(source.scale.data());
+    node.local = source.matrix.size() == 16 ? glm::make_mat4(source.matrix.data()) : node.trsMatrix();
 }
 
 // Lower case without '_', '-' or spaces: "Cast-Shadows" and "castShadows" read alike.
@@ -91,7 +91,7 @@ std::vector<Node> convertNodes(const LoadContext& context, const tinygltf::Model
         Node& node = nodes[i];
         node.name = source.name;
         node.children = source.children;
-        node.local = localTransform(source);
+        readLocalTransform(source, node);
         node.mesh = source.mesh;
         node.camera = source.camera;
         node.light = nodeLightIndex(context, source, i);
@@ -129,7 +129,7 @@ Scene convertToScene(const LoadContext& context, const ParsedGltf& parsed, const
     scene.images = decodeImages(context, parsed);
     scene.cameras = convertCameras(context, model);
     scene.lights = std::move(lights);
-    if (!model.animations.empty()) context.warn("animations", "ignored (the scene is shown at rest)");
+    scene.animations = readAnimations(context, model, document);
     scene.updateWorldTransforms();
     return scene;
 }

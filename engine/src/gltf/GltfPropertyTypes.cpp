@@ -66,6 +66,13 @@ constexpr Rule kRules[] = {
     {"cameras/*/orthographic", Kind::Object}, {"cameras/*/orthographic/xmag", Kind::Number},
     {"cameras/*/orthographic/ymag", Kind::Number}, {"cameras/*/orthographic/znear", Kind::Number},
     {"cameras/*/orthographic/zfar", Kind::Number},
+    {"animations", Kind::Array}, {"animations/*", Kind::Object}, {"animations/*/name", Kind::String},
+    {"animations/*/channels", Kind::Array}, {"animations/*/channels/*", Kind::Object},
+    {"animations/*/channels/*/sampler", Kind::Index}, {"animations/*/channels/*/target", Kind::Object},
+    {"animations/*/channels/*/target/node", Kind::Index}, {"animations/*/channels/*/target/path", Kind::String},
+    {"animations/*/samplers", Kind::Array}, {"animations/*/samplers/*", Kind::Object},
+    {"animations/*/samplers/*/input", Kind::Index}, {"animations/*/samplers/*/output", Kind::Index},
+    {"animations/*/samplers/*/interpolation", Kind::String},
 };
 
 bool isIndex(const nlohmann::json& value) { return value.is_number_unsigned(); }

@@ -2,11 +2,18 @@
 // every pass works from (M: object -> world, see Scene.h).
 #include "engine/scene/Scene.h"
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include <cassert>
 #include <numeric>
+#include <unordered_map>
 #include <utility>
 
 namespace engine {
+
+glm::dmat4 Node::trsMatrix() const {
+    return glm::scale(glm::translate(glm::dmat4(1.0), translation) * glm::mat4_cast(rotation), scale);
+}
 
 std::size_t Mesh::triangleCount() const {
     return std::accumulate(primitives.begin(), primitives.end(), std::size_t{0},
@@ -14,6 +21,10 @@ std::size_t Mesh::triangleCount() const {
 }
 
 void Scene::updateWorldTransforms() {
+    // The previous call's instances by node, to carry revisions of instances that stayed put.
+    std::unordered_map<int, const MeshInstance*> previousByNode;
+    const std::vector<MeshInstance> previous = std::move(meshInstances);
+    for (const MeshInstance& instance : previous) previousByNode.emplace(instance.node, &instance);
     meshInstances.clear();
     lightInstances.clear();
     cameraInstances.clear();
@@ -52,6 +63,10 @@ void Scene::updateWorldTransforms() {
             instance.worldBounds = meshes[node.mesh].bounds.transformed(node.world);
             instance.castShadows = node.castShadows;
             instance.receiveShadows = node.receiveShadows;
+            const auto before = previousByNode.find(pending.node);
+            const bool unchanged = before != previousByNode.end() && before->second->mesh == node.mesh &&
+                                   before->second->world == node.world;
+            instance.revision = unchanged ? before->second->revision : ++lastInstanceRevision;
             worldBounds.extend(instance.worldBounds);
             meshInstances.push_back(instance);
         }

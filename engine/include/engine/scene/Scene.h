@@ -3,8 +3,10 @@
 // by the renderer and the plugins. Transforms: M (object -> world) per
 // node, composed in double. Cameras look down their node's -Z, lights shine down -Z.
 #include "engine/scene/Aabb.h"
+#include "engine/scene/Animation.h"
 
 #include <glm/glm.hpp>
+#include <glm/gtc/quaternion.hpp>
 #include <nlohmann/json.hpp>
 
 #include <cstdint>
@@ -139,6 +141,13 @@ struct Node {
     int parent = -1;
     std::vector<int> children;
     glm::dmat4 local{1.0};  // from TRS or matrix
+    // The TRS the file gives (identity for a node given by matrix, which glTF forbids
+    // animating). Animation writes these and sets local = trsMatrix().
+    glm::dvec3 translation{0.0};
+    glm::dquat rotation{1.0, 0.0, 0.0, 0.0};  // unit, (w, x, y, z) as glm stores it
+    glm::dvec3 scale{1.0};
+    std::vector<float> weights;  // morph target weights an animation set (none at rest)
+    glm::dmat4 trsMatrix() const;  // T * R * S
     glm::dmat4 world{1.0};  // filled by Scene::updateWorldTransforms
     int mesh = -1, camera = -1, light = -1;
     // Node extras "cast_shadows" / "receive_shadows"; inherited by nothing (per node).
@@ -154,6 +163,11 @@ struct MeshInstance {
     Aabb worldBounds;
     bool castShadows = true;
     bool receiveShadows = true;
+    // Equal across two Scene::updateWorldTransforms() calls exactly when the instance's
+    // world matrix did not change between them; a changed instance gets a value the scene
+    // never used before. Caches of what an instance looks like (a light's shadow map) key
+    // on it, so they see a caster move and keep their contents while it stands still.
+    std::uint64_t revision = 0;
 };
 
 // A light or camera placed by a node: world = L (light -> world) or V (eye -> world).
@@ -179,15 +193,18 @@ struct Scene {
     std::vector<Image> images;
     std::vector<Camera> cameras;
     std::vector<Light> lights;
+    std::vector<Animation> animations;
 
     // Filled by updateWorldTransforms(), in depth-first order from the roots.
     std::vector<MeshInstance> meshInstances;
     std::vector<LightInstance> lightInstances;
     std::vector<CameraInstance> cameraInstances;
     Aabb worldBounds;  // all mesh instances
+    std::uint64_t lastInstanceRevision = 0;  // the newest MeshInstance::revision handed out
 
     // Composes node.world = parent.world * node.local (double) from the roots and rebuilds
-    // the instance lists and bounds. Call after changing any node's local transform.
+    // the instance lists and bounds. Call after changing any node's local transform (for
+    // instance after poseAnimation).
     void updateWorldTransforms();
 
     // Lookups by name; -1 when absent.
