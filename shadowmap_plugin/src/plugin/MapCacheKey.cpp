@@ -22,6 +22,11 @@ std::uint64_t mapCacheKey(const LightShadow& light, const engine::Scene& scene,
     std::vector<glm::dmat4> views;  // the view-projections the depth passes draw with
     if (light.frame.kind == MapKind::Map2D) {
         views.push_back(light.frame.view.viewProjection());
+    } else if (light.frame.kind == MapKind::Cascades) {
+        for (const LightView& cascade : light.frame.cascades.cascades) {
+            hasher.add(cascade.empty);
+            if (!cascade.empty) views.push_back(cascade.viewProjection());
+        }
     } else {
         for (const LightView& face : light.frame.pointViews.faces) {
             hasher.add(face.empty);

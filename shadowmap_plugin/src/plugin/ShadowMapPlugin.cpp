@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iostream>
+#include <limits>
 
 namespace shadowmap {
 
@@ -67,7 +68,11 @@ float offsetClamp(const LightShadow& light) {
     const glm::vec2 offset = settings.effectivePolygonOffset();
     if (!(settings.polygonOffsetClamp > 0.0f) || offset == glm::vec2(0.0f)) return 0.0f;
     const LightShadowFrame& plan = light.frame;
-    const LightView& view = plan.kind == MapKind::Cube ? plan.pointViews.faces[0] : plan.view;
+    // Cascades share one style: the nearest cascade's texels are the smallest, so its clamp
+    // is the tightest (the farther ones then allow a steeper slope: acne-free side).
+    const LightView& view = plan.kind == MapKind::Cube       ? plan.pointViews.faces[0]
+                            : plan.kind == MapKind::Cascades ? plan.cascades.cascades.front()
+                                                             : plan.view;
     const double perTexel = windowDepthPerTexel(view, settings.resolution);
     // Float units are 2^(e-23) of the depth e: at most 2^-23 below 1 (reversed Z).
     const double units = std::abs(offset.y) * (settings.reversedZ ? std::ldexp(1.0, -23) : depthStep(settings.depthFormat));
@@ -76,6 +81,14 @@ float offsetClamp(const LightShadow& light) {
 
 // The map cache key (MapCacheKey.h) with the depth settings that change a map without
 // changing its view-projection: reversed Z's depth state and the slope-offset clamp.
+// Every receiver and caster of the scene, seen or not: what a stable cascade anchors to.
+engine::Aabb sceneBounds(const engine::Scene& scene) {
+    engine::Aabb bounds;
+    for (const engine::MeshInstance& instance : scene.meshInstances)
+        if (instance.castShadows || instance.receiveShadows) bounds.extend(instance.worldBounds);
+    return bounds;
+}
+
 std::uint64_t withDepthSettings(std::uint64_t key, const ShadowSettings& settings) {
     engine::Hasher hasher;
     hasher.add(key);
@@ -223,6 +236,18 @@ bool ShadowMapPlugin::planLight(LightShadow& light, const engine::Frame& frame,
         valid = plan.pointViews.valid;
         invalidReason = plan.pointViews.invalidReason;
         for (const LightView& face : plan.pointViews.faces) empty = empty && face.empty;
+    } else if (light.type == engine::Light::Type::Directional && light.settings.cascades > 1) {
+        CascadeOptions options;
+        options.count = light.settings.cascades;
+        options.lambda = light.settings.cascadeLambda;
+        options.stable = light.settings.stable;
+        options.resolution = light.settings.resolution;
+        options.fit = fitOptions;
+        plan.cascades = fitDirectionalCascades(placed, source, bounds, sceneBounds(scene),
+                                               {frame.camera().eyeToWorld, frame.camera().projection}, options);
+        valid = plan.cascades.valid;
+        invalidReason = plan.cascades.invalidReason;
+        empty = plan.cascades.empty;
     } else {
         plan.view = light.type == engine::Light::Type::Spot ? fitSpotLight(placed, source, bounds, fitOptions)
                                                             : fitDirectionalLight(placed, source, bounds, fitOptions);
@@ -249,7 +274,9 @@ bool ShadowMapPlugin::planLight(LightShadow& light, const engine::Frame& frame,
         warnOnce(light, plan.skipReason);
         return false;
     }
-    plan.kind = light.type == engine::Light::Type::Point ? MapKind::Cube : MapKind::Map2D;
+    plan.kind = light.type == engine::Light::Type::Point ? MapKind::Cube
+                : plan.cascades.cascades.empty()          ? MapKind::Map2D
+                                                          : MapKind::Cascades;
     return true;
 }
 
@@ -278,9 +305,13 @@ void ShadowMapPlugin::addDepthPasses(LightShadow& light, engine::Frame& frame,
                                      engine::ResourceHandle map, std::uint64_t key) {
     const ShadowSettings& settings = light.settings;
     const bool cube = light.frame.kind == MapKind::Cube;
-    light.frame.facesRendered = cube ? 0 : 1;
+    const bool cascaded = light.frame.kind == MapKind::Cascades;
+    light.frame.facesRendered = cube || cascaded ? 0 : 1;
     if (cube)
         for (const LightView& view : light.frame.pointViews.faces)
+            (view.empty ? light.frame.facesSkipped : light.frame.facesRendered) += 1;
+    if (cascaded)
+        for (const LightView& view : light.frame.cascades.cascades)
             (view.empty ? light.frame.facesSkipped : light.frame.facesRendered) += 1;
 
     DepthPassStyle style;
@@ -292,6 +323,14 @@ void ShadowMapPlugin::addDepthPasses(LightShadow& light, engine::Frame& frame,
         style.openCasterOffset = settings.standardPolygonOffset();
         style.closedMeshes = &closedMeshes_;
         reportOpenCasters(light, frame);
+    }
+    if (cascaded) {
+        // One layer per cascade; one whose slice holds no receiver is cleared (reads "far").
+        const std::vector<LightView>& cascades = light.frame.cascades.cascades;
+        for (std::size_t c = 0; c < cascades.size(); ++c)
+            addLayerPasses(light, frame, map, static_cast<int>(c), cascades[c].viewProjection(), !cascades[c].empty,
+                           style, c + 1 == cascades.size() ? key : 0);
+        return;
     }
     if (!cube) {
         addLayerPasses(light, frame, map, -1, light.frame.view.viewProjection(), true, style, key);
@@ -410,14 +449,20 @@ engine::LightVisibilityHook ShadowMapPlugin::makeHook(const engine::Frame& frame
         }
         // What the lookup uploads must be finite: a light whose eye planes (or eye-space
         // position) are not loses its shadow, loudly, instead of shading with NaN.
+        const bool cascaded = plan.kind == MapKind::Cascades;
         const glm::dmat4 planes = plan.kind == MapKind::Map2D
                                       ? eyePlanesForCamera(plan.view.texgenPlanes(), eyeToWorld)
                                       : glm::dmat4(view[0], view[1], view[2],
                                                    view * glm::dvec4(frame.scene().lightInstances[light.slot].position(), 1.0));
         const glm::mat4 uploaded(planes);  // as the GPU gets it: float
+        std::vector<glm::mat4> cascadePlanes;  // per cascade, Ee as for a 2D map
+        if (cascaded)
+            for (const LightView& cascade : plan.cascades.cascades)
+                cascadePlanes.emplace_back(eyePlanesForCamera(cascade.texgenPlanes(), eyeToWorld));
         bool finite = true;
-        for (int c = 0; c < 4; ++c)
-            for (int r = 0; r < 4; ++r) finite = finite && std::isfinite(uploaded[c][r]);
+        for (const glm::mat4& matrix : cascaded ? cascadePlanes : std::vector<glm::mat4>{uploaded})
+            for (int c = 0; c < 4; ++c)
+                for (int r = 0; r < 4; ++r) finite = finite && std::isfinite(matrix[c][r]);
         if (!finite) {
             warnOnce(light, "no shadow: its texgen planes for this camera are not finite");
             constantShades[light.slot] = params[light.slot].w;
@@ -450,8 +495,16 @@ engine::LightVisibilityHook ShadowMapPlugin::makeHook(const engine::Frame& frame
         const bool debuggable = rawUnit < maxTextureUnits_;
         if (debuggable) rawUnits.emplace_back(rawUnit, light.map.id());
         const bool cube = plan.kind == MapKind::Cube;
-        lookups.push_back({light.slot, kFirstUnit + light.slot, cube, debuggable ? rawUnit : -1});
-        if (!cube) {
+        const int cascadeCount = cascaded ? static_cast<int>(cascadePlanes.size()) : 0;
+        lookups.push_back({light.slot, kFirstUnit + light.slot, cube, debuggable ? rawUnit : -1, cascadeCount});
+        if (cascaded) {
+            // The far view depth of each cascade; unused entries never match (visibility.glsl).
+            for (int c = 0; c < kMaxCascades; ++c) {
+                if (c < cascadeCount) block.cascadePlanes[light.slot * kMaxCascades + c] = cascadePlanes[c];
+                block.cascadeFar[light.slot][c] =
+                    c < cascadeCount ? static_cast<float>(plan.cascades.splits[c + 1]) : std::numeric_limits<float>::max();
+            }
+        } else if (!cube) {
             // Ee = Epo * V with Epo = S * P_light * L^-1, composed in double (Texgen.h).
             block.eyePlanes[light.slot] = uploaded;
         } else {
@@ -521,7 +574,8 @@ void ShadowMapPlugin::addPasses(engine::Frame& frame) {
         light.frame.mapKey = key;
         light.frame.cacheHit = cacheMaps_ && key == light.renderedKey;
         const int size = light.settings.resolution;
-        const engine::TextureDesc desc{size, size, graphFormat(light.settings.depthFormat), 1,
+        const int layers = light.frame.kind == MapKind::Cascades ? static_cast<int>(light.frame.cascades.cascades.size()) : 1;
+        const engine::TextureDesc desc{size, size, graphFormat(light.settings.depthFormat), layers,
                                        light.type == engine::Light::Type::Point};
         const engine::ResourceHandle map =
             frame.graph().importTexture(light.mapResource(), desc, light.map.id());
