@@ -1,6 +1,6 @@
 #pragma once
 // A large outdoor scene for cascaded shadow maps: a 1 km square ground, thin posts near a
-// street-level camera (a row of them on each side of the view, 2.5 m tall and 10 cm wide)
+// street-level camera (a row of them on each side of the view, 2.5 m tall and 15 cm wide)
 // and a few far buildings, lit by a sun 35 degrees above the horizon. Every shape is an
 // axis-aligned box, so the render tests compute its shadows analytically
 // (AnalyticShadows.h). One map for all of it spreads 1 km over its texels: a post's shadow
@@ -31,7 +31,7 @@ inline OutdoorScene makeOutdoorScene(const nlohmann::json& sun) {
     for (int i = 0; i < 10; ++i)
         for (const double x : {-3.0, 3.0}) {
             const double z = -2.0 - 3.0 * i;
-            out.occluders.push_back({{x - 0.05, 0.0, z - 0.05}, {x + 0.05, 2.5, z + 0.05}});
+            out.occluders.push_back({{x - 0.075, 0.0, z - 0.075}, {x + 0.075, 2.5, z + 0.075}});
         }
     // Buildings far down the street.
     for (int i = 0; i < 4; ++i) {

@@ -25,7 +25,9 @@ void LightShadow::ensureMap() {
         map.setParameter(GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
         map.setParameter(GL_TEXTURE_WRAP_R, GL_CLAMP_TO_EDGE);
         renderedKey = 0;  // a new texture holds nothing yet
+        renderedCascadeKeys.clear();
     }
+    renderedCascadeKeys.resize(frame.kind == MapKind::Cascades ? layers : 0, 0);
     // GL_LINEAR on a depth-compare texture is 2x2 percentage-closer filtering.
     const GLint filter = settings.filter == Filter::Pcf ? GL_LINEAR : GL_NEAREST;
     map.setParameter(GL_TEXTURE_MIN_FILTER, filter);
@@ -61,7 +63,8 @@ std::vector<std::string> LightShadow::depthPasses() const {
     if (frame.kind == MapKind::Map2D) addLayer(-1, true);
     if (frame.kind == MapKind::Cascades)
         for (std::size_t c = 0; c < frame.cascades.cascades.size(); ++c)
-            addLayer(static_cast<int>(c), !frame.cascades.cascades[c].empty);
+            if (c >= frame.cascadeHits.size() || !frame.cascadeHits[c])  // a kept layer has no pass
+                addLayer(static_cast<int>(c), !frame.cascades.cascades[c].empty);
     if (frame.kind == MapKind::Cube)
         for (int face = 0; face < 6; ++face) addLayer(face, !frame.pointViews.faces[face].empty);
     return passes;
@@ -113,6 +116,7 @@ nlohmann::json LightShadow::stats() const {
             cascades.push_back({{"from", views.splits[c]},
                                 {"to", views.splits[c + 1]},
                                 {"rendered", !view.empty},
+                                {"cache", c < frame.cascadeHits.size() && frame.cascadeHits[c] ? "hit" : "miss"},
                                 {"width", view.empty ? 0.0 : 2.0 / view.projection[0][0]},
                                 {"depth", view.farPlane - view.nearPlane}});
         }

@@ -31,6 +31,8 @@ struct LightShadowFrame {
     std::uint64_t draws = 0, triangles = 0, castersCulled = 0;
     std::vector<std::string> openCasters;  // backface: casters drawn two-sided
     bool cacheHit = false;                 // the map was still right: no depth pass
+    std::vector<std::uint64_t> cascadeKeys;  // cascades: each layer's key (MapCacheKey.h)
+    std::vector<bool> cascadeHits;           // cascades: the layer was still right
     std::uint64_t mapKey = 0;              // what the map holds this frame (MapCacheKey.h)
 };
 
@@ -43,6 +45,8 @@ struct LightShadow {
     LightShadowFrame frame;
     // Key of the inputs the map was last rendered from (MapCacheKey.h); 0 = none.
     std::uint64_t renderedKey = 0;
+    // Cascades: the key each layer was last rendered from; 0 = none.
+    std::vector<std::uint64_t> renderedCascadeKeys;
 
     // (Re)creates the map when size, format, filter or kind changed, with the comparison
     // state the visibility hook relies on (GL_COMPARE_REF_TO_TEXTURE, GL_LEQUAL).

@@ -5,9 +5,9 @@
 
 namespace shadowmap {
 
-std::uint64_t mapCacheKey(const LightShadow& light, const engine::Scene& scene,
-                          std::uint64_t sceneGeneration) {
-    engine::Hasher hasher;
+namespace {
+
+void addSettings(engine::Hasher& hasher, const LightShadow& light, std::uint64_t sceneGeneration) {
     hasher.add(sceneGeneration);
     const ShadowSettings& s = light.settings;
     hasher.add(static_cast<int>(s.variant));
@@ -18,7 +18,30 @@ std::uint64_t mapCacheKey(const LightShadow& light, const engine::Scene& scene,
     hasher.add(s.standardPolygonOffset().x);
     hasher.add(s.standardPolygonOffset().y);
     hasher.add(static_cast<int>(light.frame.kind));
+}
 
+// The casters drawn with any of `views`: which mesh, where.
+void addCasters(engine::Hasher& hasher, const engine::Scene& scene, const std::vector<glm::dmat4>& views) {
+    for (const glm::dmat4& view : views) hasher.add(view);
+    for (std::size_t i = 0; i < scene.meshInstances.size(); ++i) {
+        const engine::MeshInstance& instance = scene.meshInstances[i];
+        if (!instance.castShadows) continue;
+        bool inside = false;
+        for (const glm::dmat4& view : views)
+            inside = inside || engine::boxIntersectsFrustum(view, instance.worldBounds);
+        if (!inside) continue;
+        hasher.add(i);
+        hasher.add(instance.mesh);
+        hasher.add(instance.world);
+    }
+}
+
+} // namespace
+
+std::uint64_t mapCacheKey(const LightShadow& light, const engine::Scene& scene,
+                          std::uint64_t sceneGeneration) {
+    engine::Hasher hasher;
+    addSettings(hasher, light, sceneGeneration);
     std::vector<glm::dmat4> views;  // the view-projections the depth passes draw with
     if (light.frame.kind == MapKind::Map2D) {
         views.push_back(light.frame.view.viewProjection());
@@ -33,19 +56,19 @@ std::uint64_t mapCacheKey(const LightShadow& light, const engine::Scene& scene,
             if (!face.empty) views.push_back(face.viewProjection());
         }
     }
-    for (const glm::dmat4& view : views) hasher.add(view);
+    addCasters(hasher, scene, views);
+    return hasher.value();
+}
 
-    for (std::size_t i = 0; i < scene.meshInstances.size(); ++i) {
-        const engine::MeshInstance& instance = scene.meshInstances[i];
-        if (!instance.castShadows) continue;
-        bool inside = false;
-        for (const glm::dmat4& view : views)
-            inside = inside || engine::boxIntersectsFrustum(view, instance.worldBounds);
-        if (!inside) continue;
-        hasher.add(i);
-        hasher.add(instance.mesh);
-        hasher.add(instance.world);
-    }
+std::uint64_t cascadeCacheKey(const LightShadow& light, int cascade, const engine::Scene& scene,
+                              std::uint64_t sceneGeneration) {
+    engine::Hasher hasher;
+    addSettings(hasher, light, sceneGeneration);
+    hasher.add(cascade);
+    hasher.add(light.frame.cascades.cascades.size());
+    const LightView& view = light.frame.cascades.cascades[cascade];
+    hasher.add(view.empty);
+    if (!view.empty) addCasters(hasher, scene, {view.viewProjection()});
     return hasher.value();
 }
 

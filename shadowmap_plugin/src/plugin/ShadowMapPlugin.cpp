@@ -310,9 +310,10 @@ void ShadowMapPlugin::addDepthPasses(LightShadow& light, engine::Frame& frame,
     if (cube)
         for (const LightView& view : light.frame.pointViews.faces)
             (view.empty ? light.frame.facesSkipped : light.frame.facesRendered) += 1;
-    if (cascaded)
-        for (const LightView& view : light.frame.cascades.cascades)
-            (view.empty ? light.frame.facesSkipped : light.frame.facesRendered) += 1;
+    if (cascaded)  // rendered: layers drawn this frame; skipped: empty or still right
+        for (std::size_t c = 0; c < light.frame.cascades.cascades.size(); ++c)
+            (light.frame.cascades.cascades[c].empty || light.frame.cascadeHits[c] ? light.frame.facesSkipped
+                                                                                  : light.frame.facesRendered) += 1;
 
     DepthPassStyle style;
     style.polygonOffset = settings.effectivePolygonOffset();
@@ -326,29 +327,35 @@ void ShadowMapPlugin::addDepthPasses(LightShadow& light, engine::Frame& frame,
     }
     if (cascaded) {
         // One layer per cascade; one whose slice holds no receiver is cleared (reads "far").
+        // Layers still right from an earlier frame keep their depth (per-cascade caching).
         const std::vector<LightView>& cascades = light.frame.cascades.cascades;
-        for (std::size_t c = 0; c < cascades.size(); ++c)
+        for (std::size_t c = 0; c < cascades.size(); ++c) {
+            if (light.frame.cascadeHits[c]) continue;
+            light.renderedCascadeKeys[c] = 0;  // set again once its passes have run
             addLayerPasses(light, frame, map, static_cast<int>(c), cascades[c].viewProjection(), !cascades[c].empty,
-                           style, c + 1 == cascades.size() ? key : 0);
+                           style, &light.renderedCascadeKeys[c], light.frame.cascadeKeys[c]);
+        }
         return;
     }
     if (!cube) {
-        addLayerPasses(light, frame, map, -1, light.frame.view.viewProjection(), true, style, key);
+        addLayerPasses(light, frame, map, -1, light.frame.view.viewProjection(), true, style, &light.renderedKey, key);
         return;
     }
     // A face that sees no receiver is cleared (lookups there must read "far") but draws nothing.
     for (int face = 0; face < 6; ++face) {
         const LightView& view = light.frame.pointViews.faces[face];
-        addLayerPasses(light, frame, map, face, view.viewProjection(), !view.empty, style, face == 5 ? key : 0);
+        addLayerPasses(light, frame, map, face, view.viewProjection(), !view.empty, style, &light.renderedKey,
+                       face == 5 ? key : 0);
     }
 }
 
 void ShadowMapPlugin::addLayerPasses(LightShadow& light, engine::Frame& frame, engine::ResourceHandle map,
                                      int layer, const glm::dmat4& viewProjection, bool drawCasters,
-                                     const DepthPassStyle& style, std::uint64_t keyWhenDone) {
-    // Only now does the map hold what the key says.
-    auto done = [&light, keyWhenDone] {
-        if (keyWhenDone) light.renderedKey = keyWhenDone;
+                                     const DepthPassStyle& style, std::uint64_t* keyTarget,
+                                     std::uint64_t keyWhenDone) {
+    // Only now does the map (layer) hold what the key says.
+    auto done = [keyTarget, keyWhenDone] {
+        if (keyWhenDone) *keyTarget = keyWhenDone;
     };
     if (light.settings.variant != Variant::Woo || !drawCasters) {
         frame.graph().addPass(
@@ -570,9 +577,15 @@ void ShadowMapPlugin::addPasses(engine::Frame& frame) {
         light.ensureMap();
         // Reversed Z compares the other way round (lit where r >= stored: near is 1).
         light.map.setParameter(GL_TEXTURE_COMPARE_FUNC, light.settings.reversedZ ? GL_GEQUAL : GL_LEQUAL);
-        const std::uint64_t key = withDepthSettings(mapCacheKey(light, frame.scene(), sceneGeneration_), light.settings);
+        const bool cascaded = light.frame.kind == MapKind::Cascades;
+        const std::uint64_t key =
+            cascaded ? cascadeKeys(light, frame.scene())
+                     : withDepthSettings(mapCacheKey(light, frame.scene(), sceneGeneration_), light.settings);
         light.frame.mapKey = key;
-        light.frame.cacheHit = cacheMaps_ && key == light.renderedKey;
+        light.frame.cacheHit =
+            cascaded ? std::find(light.frame.cascadeHits.begin(), light.frame.cascadeHits.end(), false) ==
+                           light.frame.cascadeHits.end()
+                     : cacheMaps_ && key == light.renderedKey;
         const int size = light.settings.resolution;
         const int layers = light.frame.kind == MapKind::Cascades ? static_cast<int>(light.frame.cascades.cascades.size()) : 1;
         const engine::TextureDesc desc{size, size, graphFormat(light.settings.depthFormat), layers,
@@ -583,7 +596,7 @@ void ShadowMapPlugin::addPasses(engine::Frame& frame) {
             ++cacheHits_;  // the map is an input nobody writes this frame: no depth pass
         } else {
             ++cacheMisses_;
-            light.renderedKey = 0;  // set again once the passes have run
+            if (!cascaded) light.renderedKey = 0;  // set again once the passes have run
             addDepthPasses(light, frame, map, key);
         }
         maps.push_back(map);
@@ -593,6 +606,21 @@ void ShadowMapPlugin::addPasses(engine::Frame& frame) {
     engine::LightVisibilityHook hook = makeHook(frame);
     hook.reads = std::move(maps);
     frame.setLightVisibility(std::move(hook));
+}
+
+std::uint64_t ShadowMapPlugin::cascadeKeys(LightShadow& light, const engine::Scene& scene) {
+    LightShadowFrame& plan = light.frame;
+    const std::size_t count = plan.cascades.cascades.size();
+    plan.cascadeKeys.assign(count, 0);
+    plan.cascadeHits.assign(count, false);
+    engine::Hasher combined;
+    for (std::size_t c = 0; c < count; ++c) {
+        plan.cascadeKeys[c] =
+            withDepthSettings(cascadeCacheKey(light, static_cast<int>(c), scene, sceneGeneration_), light.settings);
+        plan.cascadeHits[c] = cacheMaps_ && plan.cascadeKeys[c] == light.renderedCascadeKeys[c];
+        combined.add(plan.cascadeKeys[c]);
+    }
+    return combined.value();
 }
 
 nlohmann::json ShadowMapPlugin::frameStats() const {

@@ -398,6 +398,28 @@ TEST_F(EngineRenderShadows, EveryVariantStaysWithinItsErrorBoundAt2048) {
     }
 }
 
+// cascades 1 (the default) is the one fitted map the plugin drew before cascades existed:
+// the showcase renders to the very bytes of the reference image made then (see
+// tests/shadowmap/data/README.md), with the setting left out and with it given.
+TEST_F(EngineRenderShadows, OneCascadeRendersTheShowcaseAsBeforeCascades) {
+    int width = 0, height = 0;
+    const auto reference =
+        engine::readPng(fs::path(SHADOWMAP_TEST_DATA_DIR) / "showcase_160x90_one_map.png", 4, width, height);
+    ASSERT_EQ(reference.size(), 160u * 90u * 4u);
+    for (const std::string setting : {"", " --light-set sun.cascades=1"}) {
+        const CommandResult result =
+            runEngineRender("--config " + std::string(CONTENT_DIR) + "/engine.json --scene " + CONTENT_DIR +
+                            "/scenes/showcase.gltf --out " + (dir_ / "out.png").string() +
+                            " --width 160 --height 90 --warmup 0" + setting);
+        ASSERT_EQ(result.exitCode, 0) << result.output;
+        const auto image = engine::readPng(dir_ / "out.png", 4, width, height);
+        std::size_t differing = 0;
+        for (std::size_t i = 0; i < image.size() && i < reference.size(); ++i) differing += image[i] != reference[i];
+        EXPECT_EQ(image.size(), reference.size()) << setting;
+        EXPECT_EQ(differing, 0u) << "bytes differing from the one-map reference" << setting;
+    }
+}
+
 // woo with an explicit polygon_offset: both of its passes take the offset, so the peel still
 // recognises the nearest surface. With the offset in the peel pass alone the sun's error at
 // 512 texels with [1, 2] was 14.8 % at this size (measured); with it in both, 0.130 %,
