@@ -70,8 +70,11 @@ float offsetClamp(const LightShadow& light) {
     const LightShadowFrame& plan = light.frame;
     // Cascades share one style: the nearest cascade's texels are the smallest, so its clamp
     // is the tightest (the farther ones then allow a steeper slope: acne-free side).
+    const LightView* cascade = nullptr;  // the nearest cascade that draws anything
+    for (const LightView& view : plan.cascades.cascades)
+        if (!cascade && !view.empty) cascade = &view;
     const LightView& view = plan.kind == MapKind::Cube       ? plan.pointViews.faces[0]
-                            : plan.kind == MapKind::Cascades ? plan.cascades.cascades.front()
+                            : plan.kind == MapKind::Cascades ? *cascade
                                                              : plan.view;
     const double perTexel = windowDepthPerTexel(view, settings.resolution);
     // Float units are 2^(e-23) of the depth e: at most 2^-23 below 1 (reversed Z).
@@ -218,6 +221,11 @@ bool ShadowMapPlugin::planLight(LightShadow& light, const engine::Frame& frame,
         plan.skipReason = "the light emits nothing";
         return false;
     }
+    // Cascades slice a directional light's parallel projection; a spot or point light's
+    // perspective already spends its texels near the light (said once).
+    if (light.type != engine::Light::Type::Directional && light.settings.cascades > 1)
+        warnOnce(light, "cascades apply to directional lights only: " + std::to_string(light.settings.cascades) +
+                            " ignored");
     // Forced near/far and reversed Z (shadowmap/ShadowSettings.h). A directional light's depth is
     // linear and fitted to what it must hold: forced planes are ignored there (said once).
     FrustumFitOptions fitOptions;
@@ -247,7 +255,9 @@ bool ShadowMapPlugin::planLight(LightShadow& light, const engine::Frame& frame,
                                                {frame.camera().eyeToWorld, frame.camera().projection}, options);
         valid = plan.cascades.valid;
         invalidReason = plan.cascades.invalidReason;
-        empty = plan.cascades.empty;
+        // Nothing to draw in any cascade (or no cascade: no visible receiver) is no map at all.
+        empty = true;
+        for (const LightView& cascade : plan.cascades.cascades) empty = empty && cascade.empty;
     } else {
         plan.view = light.type == engine::Light::Type::Spot ? fitSpotLight(placed, source, bounds, fitOptions)
                                                             : fitDirectionalLight(placed, source, bounds, fitOptions);

@@ -575,3 +575,14 @@ TEST(EngineRenderCubeAcne, AFloorFacingACubeFaceGetsATexelBias) {
     EXPECT_LT(light["leak"].get<double>(), 0.3) << light;  // measured 0.253: the bias adds little leak
     fs::remove_all(dir);
 }
+
+// cascades on a spot or point light would be silently nothing: it is said, once per light.
+TEST_F(EngineRenderShadows, CascadesOnAPointOrSpotLightAreIgnoredWithAWarning) {
+    const CommandResult result =
+        render("--frames 2 --light-set spot_light.cascades=3 --light-set point_light.cascades=2");
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    EXPECT_EQ(occurrences(result.output, "light \"spot_light\": cascades apply to directional lights only: 3 ignored"), 1)
+        << result.output;
+    EXPECT_EQ(occurrences(result.output, "light \"point_light\": cascades apply to directional lights only: 2 ignored"), 1)
+        << result.output;
+}
