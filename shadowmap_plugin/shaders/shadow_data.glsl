@@ -14,10 +14,15 @@
 //   pointFar    x: far (cube maps); 0 = infinite; y: the cube lookup's texel bias,
 //               kCubeTexelBias * 2 / resolution (ShadowMapPlugin.cpp)
 //   eyeToWorld  R_V in its upper 3x3: cube lookups use world axes
+//   cascadePlanes  Ee of each cascade of a cascaded directional light, [slot * 4 + cascade]
+//   cascadeFar  the far view depth (distance along the camera's -Z) of cascades 0..3; the
+//               largest float for cascades the light does not have
 layout(std140, binding = 1) uniform ShadowData {
     mat4 eyePlanes[MAX_LIGHTS];
     vec4 params[MAX_LIGHTS];
     vec4 pointLight[MAX_LIGHTS];
     vec4 pointFar[MAX_LIGHTS];
     mat4 eyeToWorld;
+    mat4 cascadePlanes[MAX_LIGHTS * 4];
+    vec4 cascadeFar[MAX_LIGHTS];
 } shadowData;

@@ -39,6 +39,28 @@ float shadowMap2D(int slot, vec4 coord, sampler2DShadow map) {
     return coord.w <= 0.0 ? 0.0 : shade;
 }
 
+// Cascaded directional maps (a sampler2DArrayShadow, one layer per cascade): the cascade is
+// the first whose far split lies beyond the pixel's view depth (the last one for anything
+// farther), and its coordinates come from that cascade's eye planes, per pixel: four
+// cascades' interpolated coordinates would cost 16 varyings per light. The planes are
+// camera-relative (Ee = Epo * V), so the float product is as precise as texgen.glsl's.
+// Otherwise as shadowMap2D, orthographic (q = 1, never behind the light).
+int cascadeIndex(int slot, vec3 eyePosition, int count) {
+    vec4 passed = vec4(greaterThan(vec4(-eyePosition.z), shadowData.cascadeFar[slot]));
+    return min(int(dot(passed, vec4(1.0))), count - 1);
+}
+
+float shadowMapCascades(int slot, vec3 eyePosition, sampler2DArrayShadow map, int count) {
+    int cascade = cascadeIndex(slot, eyePosition, count);
+    vec3 p = (shadowData.cascadePlanes[slot * 4 + cascade] * vec4(eyePosition, 1.0)).xyz;
+    bool reversed = shadowData.params[slot].x > 0.5;
+    float reference = p.z - shadowData.params[slot].y;
+    float shade = texture(map, vec4(p.xy, float(cascade), reversed ? max(reference, 0.0) : min(reference, 1.0)));
+    bool outside = any(lessThan(p.xy, vec2(0.0))) || any(greaterThan(p.xy, vec2(1.0)));
+    shade = outside ? shadowData.params[slot].w : shade;
+    return (reversed ? p.z > 1.0 : p.z < 0.0) ? 1.0 : shade;
+}
+
 // The distance from the light along the major axis of toPoint = x_world - light: the cube
 // face that holds the texel is the one of the largest |component| (OpenGL 4.5 table 8.19),
 // and its perspective depth is this distance.
@@ -79,6 +101,14 @@ vec4 comparison2D(int slot, vec4 coord, sampler2D depth) {
         return vec4(0.4, 0.4, 0.4, 1.0);
     float stored = texture(depth, p.xy).r;
     // Reversed Z: nearer is larger, so the roles swap for "reference behind stored".
+    return shadowData.params[slot].x > 0.5 ? comparisonColor(stored, p.z) : comparisonColor(p.z, stored);
+}
+
+vec4 comparisonCascades(int slot, vec3 eyePosition, sampler2DArray depth, int count) {
+    int cascade = cascadeIndex(slot, eyePosition, count);
+    vec3 p = (shadowData.cascadePlanes[slot * 4 + cascade] * vec4(eyePosition, 1.0)).xyz;
+    if (any(lessThan(p, vec3(0.0))) || any(greaterThan(p, vec3(1.0)))) return vec4(0.4, 0.4, 0.4, 1.0);
+    float stored = texture(depth, vec3(p.xy, float(cascade))).r;
     return shadowData.params[slot].x > 0.5 ? comparisonColor(stored, p.z) : comparisonColor(p.z, stored);
 }
 

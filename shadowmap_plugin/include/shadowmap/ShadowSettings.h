@@ -71,6 +71,14 @@
 //                   unclamped slope term, while a clamp puts acne on grazing receivers
 //                   (spot at 0.5 deg: 0.30% error unclamped, 0.61% with S = 10, 19% with
 //                   S = 3; tools/shadowmap-stress elevation).
+// Cascades (directional lights only; spot and point lights ignore them):
+//   cascades        1 .. 4: slices of the camera's view depth,  1 (one map fitted to every
+//                   one array layer (and depth pass) each       visible receiver)
+//   cascade_lambda  0 .. 1: the practical split scheme's weight  0.75
+//                   of logarithmic over uniform splits (math/CascadeFit.h)
+//   stable          true: each cascade a texel-snapped square    true
+//                   around its slice's bounding sphere, so a moving camera moves shadows
+//                   in whole texels (costs up to 2x the texel size of a fitted cascade)
 // Biases are in depth-format units and texels, never world units: polygon_offset units are
 // steps of the format (d16, d24: 1/(2^bits - 1); d32f: 2^(e-23) of the depth e); factor
 // multiplies the depth slope per texel. d32f without reversed_z: the comparison's reference
@@ -125,6 +133,9 @@ struct ShadowSettings {
     double farPlane = 0.0;
     bool reversedZ = false;
     float polygonOffsetClamp = 0.0f;
+    int cascades = 1;
+    double cascadeLambda = 0.75;
+    bool stable = true;
 
     bool operator==(const ShadowSettings&) const = default;
 };

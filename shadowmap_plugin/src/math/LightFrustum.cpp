@@ -390,6 +390,21 @@ LightView fitDirectionalLight(const engine::LightInstance& instance, const engin
     return v;
 }
 
+LightView orthographicViewOfBox(const glm::dmat4& frame, const glm::dvec2& centre, const glm::dvec2& half,
+                                double zBottom, double zTop, bool reversedZ) {
+    const RigidFrame f(frame);
+    LightView v;
+    v.reversedZ = reversedZ;
+    v.empty = false;
+    v.lightToWorld = glm::dmat4(glm::dvec4(f.x, 0.0), glm::dvec4(f.y, 0.0), glm::dvec4(f.z, 0.0),
+                                glm::dvec4(f.origin + f.x * centre.x + f.y * centre.y + f.z * zTop, 1.0));
+    v.nearPlane = 0.0;
+    v.farPlane = zTop - zBottom;
+    v.projection = orthographic(half.x, half.y, v.nearPlane, v.farPlane, reversedZ);
+    checkFinite(v);
+    return v;
+}
+
 PointLightViews fitPointLight(const engine::LightInstance& instance, const engine::Light& light,
                               const ShadowBounds& bounds, const FrustumFitOptions& opt) {
     PointLightViews out;

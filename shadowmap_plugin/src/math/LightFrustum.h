@@ -112,6 +112,15 @@ double cubeShadowReferenceDepth(const glm::dvec3& lightToPoint, double nearPlane
 // every direction: the world axis least parallel to it. Direction need not be unit length.
 glm::dmat4 lightToWorldFromDirection(const glm::dvec3& position, const glm::dvec3& direction);
 
+// An orthographic view of a box given in a light frame: `frame` is a rigid L whose -Z is the
+// light's direction; the box is centre.x +- half.x, centre.y +- half.y, zBottom .. zTop in
+// its coordinates (zTop toward the light). The view's L sits at the centre of the box's face
+// toward the light, near 0, far zTop - zBottom. Used by the cascades (CascadeFit.h); half
+// extents are passed as such so that a stable cascade's projection is the same number
+// wherever its centre is.
+LightView orthographicViewOfBox(const glm::dmat4& frame, const glm::dvec2& centre, const glm::dvec2& half,
+                                double zBottom, double zTop, bool reversedZ);
+
 LightView fitSpotLight(const engine::LightInstance& instance, const engine::Light& light,
                        const ShadowBounds& bounds, const FrustumFitOptions& options = {});
 LightView fitDirectionalLight(const engine::LightInstance& instance, const engine::Light& light,

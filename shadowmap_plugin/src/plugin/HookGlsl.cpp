@@ -14,6 +14,21 @@ HookGlsl::Code generate(const std::vector<HookGlsl::Lookup>& lookups) {
     std::string declarations, dispatch, debugDispatch, texgenOutputs, texgen;
     for (const HookGlsl::Lookup& lookup : lookups) {
         const std::string slot = std::to_string(lookup.slot);
+        if (lookup.cascades > 0) {
+            // Cascades pick their layer per pixel from the eye position: nothing interpolated.
+            const std::string count = std::to_string(lookup.cascades);
+            if (lookup.rawUnit >= 0) {
+                declarations += "layout(binding = " + std::to_string(lookup.rawUnit) +
+                                ") uniform sampler2DArray uShadowDepth" + slot + ";\n";
+                debugDispatch += "    if (lightSlot == " + slot + ") return comparisonCascades(" + slot +
+                                 ", eyePosition, uShadowDepth" + slot + ", " + count + ");\n";
+            }
+            declarations += "layout(binding = " + std::to_string(lookup.unit) +
+                            ") uniform sampler2DArrayShadow uShadowMap" + slot + ";\n";
+            dispatch += "    if (lightSlot == " + slot + ") return shadowMapCascades(" + slot + ", eyePosition, uShadowMap" +
+                        slot + ", " + count + ");\n";
+            continue;
+        }
         // The lookup's coordinates come interpolated from the vertex part (texgen.glsl).
         const std::string coordinate = (lookup.cube ? "vShadowToPoint" : "vShadowCoord") + slot;
         const std::string coordinateType = lookup.cube ? "vec3 " : "vec4 ";

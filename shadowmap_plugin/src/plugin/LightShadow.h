@@ -1,7 +1,9 @@
 #pragma once
 // One light's shadow state across frames: its resolved settings, its depth map (a 2D
-// texture for spot and directional lights, a cube for point lights, owned here so it can
+// texture for spot and directional lights, a 2D array of one layer per cascade for a
+// directional light with cascades > 1, a cube for point lights, owned here so it can
 // outlive a frame), and what the last frame did with it.
+#include "math/CascadeFit.h"
 #include "math/LightFrustum.h"
 #include "shadowmap/ShadowSettings.h"
 
@@ -16,18 +18,21 @@
 
 namespace shadowmap {
 
-enum class MapKind { None = 0, Map2D = 1, Cube = 2 };
+enum class MapKind { None = 0, Map2D = 1, Cube = 2, Cascades = 3 };
 
 struct LightShadowFrame {
     MapKind kind = MapKind::None;
     LightView view;              // spot / directional
     PointLightViews pointViews;  // point
+    CascadeViews cascades;       // directional with cascades > 1: one view per array layer
     std::string skipReason;      // why no map this frame (variant none, empty frustum...)
     bool emptyFrustum = false;   // skipped because no visible receiver is inside it
     int facesRendered = 0, facesSkipped = 0;
     std::uint64_t draws = 0, triangles = 0, castersCulled = 0;
     std::vector<std::string> openCasters;  // backface: casters drawn two-sided
     bool cacheHit = false;                 // the map was still right: no depth pass
+    std::vector<std::uint64_t> cascadeKeys;  // cascades: each layer's key (MapCacheKey.h)
+    std::vector<bool> cascadeHits;           // cascades: the layer was still right
     std::uint64_t mapKey = 0;              // what the map holds this frame (MapCacheKey.h)
 };
 
@@ -40,13 +45,16 @@ struct LightShadow {
     LightShadowFrame frame;
     // Key of the inputs the map was last rendered from (MapCacheKey.h); 0 = none.
     std::uint64_t renderedKey = 0;
+    // Cascades: the key each layer was last rendered from; 0 = none.
+    std::vector<std::uint64_t> renderedCascadeKeys;
 
     // (Re)creates the map when size, format, filter or kind changed, with the comparison
     // state the visibility hook relies on (GL_COMPARE_REF_TO_TEXTURE, GL_LEQUAL).
     void ensureMap();
     // Graph names, keyed by the light instance (names may repeat or be empty): the map as
     // imported, and per map layer (-1: the 2D map; 0-5: cube faces in GL order) the depth
-    // pass (woo: the peel pass) and woo's first layer and the pass drawing it.
+    // pass (woo: the peel pass) and woo's first layer and the pass drawing it; cascades
+    // are layers 0..N-1 of the array map.
     std::string mapResource() const;
     std::string depthPass(int layer) const;
     std::string firstLayerPass(int layer) const;

@@ -5,9 +5,9 @@
 
 namespace shadowmap {
 
-std::uint64_t mapCacheKey(const LightShadow& light, const engine::Scene& scene,
-                          std::uint64_t sceneGeneration) {
-    engine::Hasher hasher;
+namespace {
+
+void addSettings(engine::Hasher& hasher, const LightShadow& light, std::uint64_t sceneGeneration) {
     hasher.add(sceneGeneration);
     const ShadowSettings& s = light.settings;
     hasher.add(static_cast<int>(s.variant));
@@ -18,18 +18,11 @@ std::uint64_t mapCacheKey(const LightShadow& light, const engine::Scene& scene,
     hasher.add(s.standardPolygonOffset().x);
     hasher.add(s.standardPolygonOffset().y);
     hasher.add(static_cast<int>(light.frame.kind));
+}
 
-    std::vector<glm::dmat4> views;  // the view-projections the depth passes draw with
-    if (light.frame.kind == MapKind::Map2D) {
-        views.push_back(light.frame.view.viewProjection());
-    } else {
-        for (const LightView& face : light.frame.pointViews.faces) {
-            hasher.add(face.empty);
-            if (!face.empty) views.push_back(face.viewProjection());
-        }
-    }
+// The casters drawn with any of `views`: which mesh, where.
+void addCasters(engine::Hasher& hasher, const engine::Scene& scene, const std::vector<glm::dmat4>& views) {
     for (const glm::dmat4& view : views) hasher.add(view);
-
     for (std::size_t i = 0; i < scene.meshInstances.size(); ++i) {
         const engine::MeshInstance& instance = scene.meshInstances[i];
         if (!instance.castShadows) continue;
@@ -41,6 +34,41 @@ std::uint64_t mapCacheKey(const LightShadow& light, const engine::Scene& scene,
         hasher.add(instance.mesh);
         hasher.add(instance.world);
     }
+}
+
+} // namespace
+
+std::uint64_t mapCacheKey(const LightShadow& light, const engine::Scene& scene,
+                          std::uint64_t sceneGeneration) {
+    engine::Hasher hasher;
+    addSettings(hasher, light, sceneGeneration);
+    std::vector<glm::dmat4> views;  // the view-projections the depth passes draw with
+    if (light.frame.kind == MapKind::Map2D) {
+        views.push_back(light.frame.view.viewProjection());
+    } else if (light.frame.kind == MapKind::Cascades) {
+        for (const LightView& cascade : light.frame.cascades.cascades) {
+            hasher.add(cascade.empty);
+            if (!cascade.empty) views.push_back(cascade.viewProjection());
+        }
+    } else {
+        for (const LightView& face : light.frame.pointViews.faces) {
+            hasher.add(face.empty);
+            if (!face.empty) views.push_back(face.viewProjection());
+        }
+    }
+    addCasters(hasher, scene, views);
+    return hasher.value();
+}
+
+std::uint64_t cascadeCacheKey(const LightShadow& light, int cascade, const engine::Scene& scene,
+                              std::uint64_t sceneGeneration) {
+    engine::Hasher hasher;
+    addSettings(hasher, light, sceneGeneration);
+    hasher.add(cascade);
+    hasher.add(light.frame.cascades.cascades.size());
+    const LightView& view = light.frame.cascades.cascades[cascade];
+    hasher.add(view.empty);
+    if (!view.empty) addCasters(hasher, scene, {view.viewProjection()});
     return hasher.value();
 }
 

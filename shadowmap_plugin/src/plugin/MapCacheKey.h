@@ -17,4 +17,11 @@ namespace shadowmap {
 std::uint64_t mapCacheKey(const LightShadow& light, const engine::Scene& scene,
                           std::uint64_t sceneGeneration);
 
+// The key of one layer of a cascaded directional light's map: the same inputs, over that
+// cascade's view and the casters inside it only. A stable cascade moves in whole texels,
+// so while the camera walks less than a texel of it (or along its light's axis) its key
+// holds and its layer is kept while nearer cascades re-render.
+std::uint64_t cascadeCacheKey(const LightShadow& light, int cascade, const engine::Scene& scene,
+                              std::uint64_t sceneGeneration);
+
 } // namespace shadowmap

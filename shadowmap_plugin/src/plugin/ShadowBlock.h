@@ -2,6 +2,7 @@
 // The CPU image of shaders/shadow_data.glsl's std140 block: every member an array of vec4 or
 // mat4, so std140 adds no padding and the struct's layout is the block's.
 #include "engine/render/Frame.h"
+#include "math/CascadeFit.h"
 
 #include <glm/glm.hpp>
 
@@ -18,12 +19,16 @@ struct ShadowBlock {
     glm::vec4 pointLight[engine::kMaxLights];
     glm::vec4 pointFar[engine::kMaxLights];  // x: far, y: cube texel bias (a float array would have a 16-byte stride anyway)
     glm::mat4 eyeToWorld;
+    glm::mat4 cascadePlanes[engine::kMaxLights * kMaxCascades];  // light slot * 4 + cascade
+    glm::vec4 cascadeFar[engine::kMaxLights];                    // far view depth per cascade
 };
 
 static_assert(offsetof(ShadowBlock, params) == engine::kMaxLights * 64);
 static_assert(offsetof(ShadowBlock, pointLight) == engine::kMaxLights * 80);
 static_assert(offsetof(ShadowBlock, pointFar) == engine::kMaxLights * 96);
 static_assert(offsetof(ShadowBlock, eyeToWorld) == engine::kMaxLights * 112);
-static_assert(sizeof(ShadowBlock) == engine::kMaxLights * 112 + 64);
+static_assert(offsetof(ShadowBlock, cascadePlanes) == engine::kMaxLights * 112 + 64);
+static_assert(offsetof(ShadowBlock, cascadeFar) == engine::kMaxLights * (112 + 64 * kMaxCascades) + 64);
+static_assert(sizeof(ShadowBlock) == engine::kMaxLights * (128 + 64 * kMaxCascades) + 64);
 
 } // namespace shadowmap

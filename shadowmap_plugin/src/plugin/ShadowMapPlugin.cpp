@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iostream>
+#include <limits>
 
 namespace shadowmap {
 
@@ -67,7 +68,14 @@ float offsetClamp(const LightShadow& light) {
     const glm::vec2 offset = settings.effectivePolygonOffset();
     if (!(settings.polygonOffsetClamp > 0.0f) || offset == glm::vec2(0.0f)) return 0.0f;
     const LightShadowFrame& plan = light.frame;
-    const LightView& view = plan.kind == MapKind::Cube ? plan.pointViews.faces[0] : plan.view;
+    // Cascades share one style: the nearest cascade's texels are the smallest, so its clamp
+    // is the tightest (the farther ones then allow a steeper slope: acne-free side).
+    const LightView* cascade = nullptr;  // the nearest cascade that draws anything
+    for (const LightView& view : plan.cascades.cascades)
+        if (!cascade && !view.empty) cascade = &view;
+    const LightView& view = plan.kind == MapKind::Cube       ? plan.pointViews.faces[0]
+                            : plan.kind == MapKind::Cascades ? *cascade
+                                                             : plan.view;
     const double perTexel = windowDepthPerTexel(view, settings.resolution);
     // Float units are 2^(e-23) of the depth e: at most 2^-23 below 1 (reversed Z).
     const double units = std::abs(offset.y) * (settings.reversedZ ? std::ldexp(1.0, -23) : depthStep(settings.depthFormat));
@@ -76,6 +84,14 @@ float offsetClamp(const LightShadow& light) {
 
 // The map cache key (MapCacheKey.h) with the depth settings that change a map without
 // changing its view-projection: reversed Z's depth state and the slope-offset clamp.
+// Every receiver and caster of the scene, seen or not: what a stable cascade anchors to.
+engine::Aabb sceneBounds(const engine::Scene& scene) {
+    engine::Aabb bounds;
+    for (const engine::MeshInstance& instance : scene.meshInstances)
+        if (instance.castShadows || instance.receiveShadows) bounds.extend(instance.worldBounds);
+    return bounds;
+}
+
 std::uint64_t withDepthSettings(std::uint64_t key, const ShadowSettings& settings) {
     engine::Hasher hasher;
     hasher.add(key);
@@ -205,6 +221,11 @@ bool ShadowMapPlugin::planLight(LightShadow& light, const engine::Frame& frame,
         plan.skipReason = "the light emits nothing";
         return false;
     }
+    // Cascades slice a directional light's parallel projection; a spot or point light's
+    // perspective already spends its texels near the light (said once).
+    if (light.type != engine::Light::Type::Directional && light.settings.cascades > 1)
+        warnOnce(light, "cascades apply to directional lights only: " + std::to_string(light.settings.cascades) +
+                            " ignored");
     // Forced near/far and reversed Z (shadowmap/ShadowSettings.h). A directional light's depth is
     // linear and fitted to what it must hold: forced planes are ignored there (said once).
     FrustumFitOptions fitOptions;
@@ -223,6 +244,20 @@ bool ShadowMapPlugin::planLight(LightShadow& light, const engine::Frame& frame,
         valid = plan.pointViews.valid;
         invalidReason = plan.pointViews.invalidReason;
         for (const LightView& face : plan.pointViews.faces) empty = empty && face.empty;
+    } else if (light.type == engine::Light::Type::Directional && light.settings.cascades > 1) {
+        CascadeOptions options;
+        options.count = light.settings.cascades;
+        options.lambda = light.settings.cascadeLambda;
+        options.stable = light.settings.stable;
+        options.resolution = light.settings.resolution;
+        options.fit = fitOptions;
+        plan.cascades = fitDirectionalCascades(placed, source, bounds, sceneBounds(scene),
+                                               {frame.camera().eyeToWorld, frame.camera().projection}, options);
+        valid = plan.cascades.valid;
+        invalidReason = plan.cascades.invalidReason;
+        // Nothing to draw in any cascade (or no cascade: no visible receiver) is no map at all.
+        empty = true;
+        for (const LightView& cascade : plan.cascades.cascades) empty = empty && cascade.empty;
     } else {
         plan.view = light.type == engine::Light::Type::Spot ? fitSpotLight(placed, source, bounds, fitOptions)
                                                             : fitDirectionalLight(placed, source, bounds, fitOptions);
@@ -249,7 +284,9 @@ bool ShadowMapPlugin::planLight(LightShadow& light, const engine::Frame& frame,
         warnOnce(light, plan.skipReason);
         return false;
     }
-    plan.kind = light.type == engine::Light::Type::Point ? MapKind::Cube : MapKind::Map2D;
+    plan.kind = light.type == engine::Light::Type::Point ? MapKind::Cube
+                : plan.cascades.cascades.empty()          ? MapKind::Map2D
+                                                          : MapKind::Cascades;
     return true;
 }
 
@@ -278,10 +315,15 @@ void ShadowMapPlugin::addDepthPasses(LightShadow& light, engine::Frame& frame,
                                      engine::ResourceHandle map, std::uint64_t key) {
     const ShadowSettings& settings = light.settings;
     const bool cube = light.frame.kind == MapKind::Cube;
-    light.frame.facesRendered = cube ? 0 : 1;
+    const bool cascaded = light.frame.kind == MapKind::Cascades;
+    light.frame.facesRendered = cube || cascaded ? 0 : 1;
     if (cube)
         for (const LightView& view : light.frame.pointViews.faces)
             (view.empty ? light.frame.facesSkipped : light.frame.facesRendered) += 1;
+    if (cascaded)  // rendered: layers drawn this frame; skipped: empty or still right
+        for (std::size_t c = 0; c < light.frame.cascades.cascades.size(); ++c)
+            (light.frame.cascades.cascades[c].empty || light.frame.cascadeHits[c] ? light.frame.facesSkipped
+                                                                                  : light.frame.facesRendered) += 1;
 
     DepthPassStyle style;
     style.polygonOffset = settings.effectivePolygonOffset();
@@ -293,23 +335,37 @@ void ShadowMapPlugin::addDepthPasses(LightShadow& light, engine::Frame& frame,
         style.closedMeshes = &closedMeshes_;
         reportOpenCasters(light, frame);
     }
+    if (cascaded) {
+        // One layer per cascade; one whose slice holds no receiver is cleared (reads "far").
+        // Layers still right from an earlier frame keep their depth (per-cascade caching).
+        const std::vector<LightView>& cascades = light.frame.cascades.cascades;
+        for (std::size_t c = 0; c < cascades.size(); ++c) {
+            if (light.frame.cascadeHits[c]) continue;
+            light.renderedCascadeKeys[c] = 0;  // set again once its passes have run
+            addLayerPasses(light, frame, map, static_cast<int>(c), cascades[c].viewProjection(), !cascades[c].empty,
+                           style, &light.renderedCascadeKeys[c], light.frame.cascadeKeys[c]);
+        }
+        return;
+    }
     if (!cube) {
-        addLayerPasses(light, frame, map, -1, light.frame.view.viewProjection(), true, style, key);
+        addLayerPasses(light, frame, map, -1, light.frame.view.viewProjection(), true, style, &light.renderedKey, key);
         return;
     }
     // A face that sees no receiver is cleared (lookups there must read "far") but draws nothing.
     for (int face = 0; face < 6; ++face) {
         const LightView& view = light.frame.pointViews.faces[face];
-        addLayerPasses(light, frame, map, face, view.viewProjection(), !view.empty, style, face == 5 ? key : 0);
+        addLayerPasses(light, frame, map, face, view.viewProjection(), !view.empty, style, &light.renderedKey,
+                       face == 5 ? key : 0);
     }
 }
 
 void ShadowMapPlugin::addLayerPasses(LightShadow& light, engine::Frame& frame, engine::ResourceHandle map,
                                      int layer, const glm::dmat4& viewProjection, bool drawCasters,
-                                     const DepthPassStyle& style, std::uint64_t keyWhenDone) {
-    // Only now does the map hold what the key says.
-    auto done = [&light, keyWhenDone] {
-        if (keyWhenDone) light.renderedKey = keyWhenDone;
+                                     const DepthPassStyle& style, std::uint64_t* keyTarget,
+                                     std::uint64_t keyWhenDone) {
+    // Only now does the map (layer) hold what the key says.
+    auto done = [keyTarget, keyWhenDone] {
+        if (keyWhenDone) *keyTarget = keyWhenDone;
     };
     if (light.settings.variant != Variant::Woo || !drawCasters) {
         frame.graph().addPass(
@@ -410,14 +466,20 @@ engine::LightVisibilityHook ShadowMapPlugin::makeHook(const engine::Frame& frame
         }
         // What the lookup uploads must be finite: a light whose eye planes (or eye-space
         // position) are not loses its shadow, loudly, instead of shading with NaN.
+        const bool cascaded = plan.kind == MapKind::Cascades;
         const glm::dmat4 planes = plan.kind == MapKind::Map2D
                                       ? eyePlanesForCamera(plan.view.texgenPlanes(), eyeToWorld)
                                       : glm::dmat4(view[0], view[1], view[2],
                                                    view * glm::dvec4(frame.scene().lightInstances[light.slot].position(), 1.0));
         const glm::mat4 uploaded(planes);  // as the GPU gets it: float
+        std::vector<glm::mat4> cascadePlanes;  // per cascade, Ee as for a 2D map
+        if (cascaded)
+            for (const LightView& cascade : plan.cascades.cascades)
+                cascadePlanes.emplace_back(eyePlanesForCamera(cascade.texgenPlanes(), eyeToWorld));
         bool finite = true;
-        for (int c = 0; c < 4; ++c)
-            for (int r = 0; r < 4; ++r) finite = finite && std::isfinite(uploaded[c][r]);
+        for (const glm::mat4& matrix : cascaded ? cascadePlanes : std::vector<glm::mat4>{uploaded})
+            for (int c = 0; c < 4; ++c)
+                for (int r = 0; r < 4; ++r) finite = finite && std::isfinite(matrix[c][r]);
         if (!finite) {
             warnOnce(light, "no shadow: its texgen planes for this camera are not finite");
             constantShades[light.slot] = params[light.slot].w;
@@ -451,8 +513,16 @@ engine::LightVisibilityHook ShadowMapPlugin::makeHook(const engine::Frame& frame
         const bool debuggable = rawUnit >= kFirstUnit + static_cast<int>(lights_.size());
         if (debuggable) rawUnits.emplace_back(rawUnit, light.map.id());
         const bool cube = plan.kind == MapKind::Cube;
-        lookups.push_back({light.slot, kFirstUnit + light.slot, cube, debuggable ? rawUnit : -1});
-        if (!cube) {
+        const int cascadeCount = cascaded ? static_cast<int>(cascadePlanes.size()) : 0;
+        lookups.push_back({light.slot, kFirstUnit + light.slot, cube, debuggable ? rawUnit : -1, cascadeCount});
+        if (cascaded) {
+            // The far view depth of each cascade; unused entries never match (visibility.glsl).
+            for (int c = 0; c < kMaxCascades; ++c) {
+                if (c < cascadeCount) block.cascadePlanes[light.slot * kMaxCascades + c] = cascadePlanes[c];
+                block.cascadeFar[light.slot][c] =
+                    c < cascadeCount ? static_cast<float>(plan.cascades.splits[c + 1]) : std::numeric_limits<float>::max();
+            }
+        } else if (!cube) {
             // Ee = Epo * V with Epo = S * P_light * L^-1, composed in double (Texgen.h).
             block.eyePlanes[light.slot] = uploaded;
         } else {
@@ -518,11 +588,18 @@ void ShadowMapPlugin::addPasses(engine::Frame& frame) {
         light.ensureMap();
         // Reversed Z compares the other way round (lit where r >= stored: near is 1).
         light.map.setParameter(GL_TEXTURE_COMPARE_FUNC, light.settings.reversedZ ? GL_GEQUAL : GL_LEQUAL);
-        const std::uint64_t key = withDepthSettings(mapCacheKey(light, frame.scene(), sceneGeneration_), light.settings);
+        const bool cascaded = light.frame.kind == MapKind::Cascades;
+        const std::uint64_t key =
+            cascaded ? cascadeKeys(light, frame.scene())
+                     : withDepthSettings(mapCacheKey(light, frame.scene(), sceneGeneration_), light.settings);
         light.frame.mapKey = key;
-        light.frame.cacheHit = cacheMaps_ && key == light.renderedKey;
+        light.frame.cacheHit =
+            cascaded ? std::find(light.frame.cascadeHits.begin(), light.frame.cascadeHits.end(), false) ==
+                           light.frame.cascadeHits.end()
+                     : cacheMaps_ && key == light.renderedKey;
         const int size = light.settings.resolution;
-        const engine::TextureDesc desc{size, size, graphFormat(light.settings.depthFormat), 1,
+        const int layers = light.frame.kind == MapKind::Cascades ? static_cast<int>(light.frame.cascades.cascades.size()) : 1;
+        const engine::TextureDesc desc{size, size, graphFormat(light.settings.depthFormat), layers,
                                        light.type == engine::Light::Type::Point};
         const engine::ResourceHandle map =
             frame.graph().importTexture(light.mapResource(), desc, light.map.id());
@@ -530,7 +607,7 @@ void ShadowMapPlugin::addPasses(engine::Frame& frame) {
             ++cacheHits_;  // the map is an input nobody writes this frame: no depth pass
         } else {
             ++cacheMisses_;
-            light.renderedKey = 0;  // set again once the passes have run
+            if (!cascaded) light.renderedKey = 0;  // set again once the passes have run
             addDepthPasses(light, frame, map, key);
         }
         maps.push_back(map);
@@ -540,6 +617,21 @@ void ShadowMapPlugin::addPasses(engine::Frame& frame) {
     engine::LightVisibilityHook hook = makeHook(frame);
     hook.reads = std::move(maps);
     frame.setLightVisibility(std::move(hook));
+}
+
+std::uint64_t ShadowMapPlugin::cascadeKeys(LightShadow& light, const engine::Scene& scene) {
+    LightShadowFrame& plan = light.frame;
+    const std::size_t count = plan.cascades.cascades.size();
+    plan.cascadeKeys.assign(count, 0);
+    plan.cascadeHits.assign(count, false);
+    engine::Hasher combined;
+    for (std::size_t c = 0; c < count; ++c) {
+        plan.cascadeKeys[c] =
+            withDepthSettings(cascadeCacheKey(light, static_cast<int>(c), scene, sceneGeneration_), light.settings);
+        plan.cascadeHits[c] = cacheMaps_ && plan.cascadeKeys[c] == light.renderedCascadeKeys[c];
+        combined.add(plan.cascadeKeys[c]);
+    }
+    return combined.value();
 }
 
 nlohmann::json ShadowMapPlugin::frameStats() const {

@@ -41,15 +41,19 @@ public:
 
 private:
     bool planLight(LightShadow& light, const engine::Frame& frame, const ShadowBounds& bounds);
-    // Adds the light's depth passes, one per map layer (the 2D map, or each cube face; woo:
-    // two per layer); the last one records `key` once it has run.
+    // Adds the light's depth passes, one per map layer (the 2D map, each cube face, or each
+    // cascade whose layer is not still right; woo: two per layer); the last one records
+    // `key` once it has run (cascades: each records its layer's key).
     void addDepthPasses(LightShadow& light, engine::Frame& frame, engine::ResourceHandle map,
                         std::uint64_t key);
     // The passes rendering one layer of the map (-1: the 2D map) from P_light * L^-1; without
     // casters to draw, one pass that only clears it.
     void addLayerPasses(LightShadow& light, engine::Frame& frame, engine::ResourceHandle map, int layer,
                         const glm::dmat4& viewProjection, bool drawCasters, const DepthPassStyle& style,
-                        std::uint64_t keyWhenDone);
+                        std::uint64_t* keyTarget, std::uint64_t keyWhenDone);
+    // Each cascade's key and whether its layer is still right (into light.frame); returns
+    // the map's key, all layers' keys combined.
+    std::uint64_t cascadeKeys(LightShadow& light, const engine::Scene& scene);
     void reportOpenCasters(LightShadow& light, const engine::Frame& frame);
     engine::LightVisibilityHook makeHook(const engine::Frame& frame);
     void warnOnce(const LightShadow& light, const std::string& message);

@@ -21,7 +21,10 @@ nlohmann::json printSettings(const ShadowSettings& settings) {
                           {"filter", toString(settings.filter)},
                           {"dimming", jsonNumber(settings.dimming)},
                           {"reversed_z", settings.reversedZ},
-                          {"polygon_offset_clamp", jsonNumber(settings.polygonOffsetClamp)}};
+                          {"polygon_offset_clamp", jsonNumber(settings.polygonOffsetClamp)},
+                          {"cascades", settings.cascades},
+                          {"cascade_lambda", settings.cascadeLambda},
+                          {"stable", settings.stable}};
     if (settings.polygonOffset)
         out["polygon_offset"] = {jsonNumber(settings.polygonOffset->x), jsonNumber(settings.polygonOffset->y)};
     // 0 stands for "fitted", which applySettings() does not accept as a distance.

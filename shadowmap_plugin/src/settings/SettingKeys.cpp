@@ -112,6 +112,28 @@ std::vector<SettingKey> makeKeys() {
                         "(glPolygonOffsetClamp); 0: unclamped";
     keys.push_back(clamp);
 
+    SettingKey cascades = makeKey("cascades", SettingKind::Integer);
+    cascades.minimum = 1;
+    cascades.maximum = 4;
+    cascades.steps = {1, 2, 3, 4};
+    cascades.values = "1 … 4";
+    cascades.description = "directional lights: slices of the camera's view depth, each with its own map "
+                           "(a layer of the light's array map); 1: one map for every visible receiver";
+    keys.push_back(cascades);
+
+    SettingKey lambda = makeKey("cascade_lambda", SettingKind::Number);
+    lambda.minimum = 0;
+    lambda.maximum = 1;
+    lambda.values = "0 … 1";
+    lambda.description = "the split scheme's weight of logarithmic (1) over uniform (0) split distances";
+    keys.push_back(lambda);
+
+    SettingKey stable = makeKey("stable", SettingKind::Boolean);
+    stable.values = "`true`, `false`";
+    stable.description = "cascades snapped to whole texels in squares of fixed size, so shadows do not "
+                         "crawl while the camera moves";
+    keys.push_back(stable);
+
     const nlohmann::json defaults = printSettings(ShadowSettings{});
     for (SettingKey& key : keys) {
         if (defaults.contains(key.name)) key.defaultValue = defaults[key.name];

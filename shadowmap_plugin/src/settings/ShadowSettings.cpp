@@ -126,6 +126,23 @@ void applySettings(ShadowSettings& settings, const nlohmann::json& json, const s
                                     "must be a slope >= 0 (0: unclamped), got " + json["polygon_offset_clamp"].dump());
         settings.polygonOffsetClamp = static_cast<float>(clamp);
     }
+    if (json.contains("cascades")) {
+        const double cascades = json_read::readNumber(json["cascades"], source, key("cascades"));
+        static const SettingKey& range = settingKey("cascades");
+        if (cascades < *range.minimum || cascades > *range.maximum || cascades != std::floor(cascades))
+            engine::throwInputError(source, key("cascades"),
+                                    "must be a whole number in [" + engine::formatNumber(*range.minimum) + ", " +
+                                        engine::formatNumber(*range.maximum) + "], got " + json["cascades"].dump());
+        settings.cascades = static_cast<int>(cascades);
+    }
+    if (json.contains("cascade_lambda")) {
+        const double lambda = json_read::readNumber(json["cascade_lambda"], source, key("cascade_lambda"));
+        if (lambda < 0.0 || lambda > 1.0)
+            engine::throwInputError(source, key("cascade_lambda"),
+                                    "must be in [0, 1], got " + json["cascade_lambda"].dump());
+        settings.cascadeLambda = lambda;
+    }
+    if (json.contains("stable")) settings.stable = json_read::readBool(json["stable"], source, key("stable"));
 }
 
 ShadowSettings parseSettings(const nlohmann::json& json, const std::string& source, const std::string& object) {

@@ -67,10 +67,11 @@ using FloorTruthFunction = std::function<FloorTruth(const Ray& cameraRay, double
 // `truthAt` says hidden, where `inside(p)` is false, or within edgeRadius pixels of an
 // analytic shadow edge are not evaluated. On any wrong pixel the mask and the truth are
 // written to TEST_OUTPUT_DIR, named after the running test.
-inline MaskStats compareFloorMaskWith(const std::vector<std::uint8_t>& mask, const FrameCamera& camera,
-                                      double floorY, double floorHalfExtent,
-                                      const std::function<bool(const glm::dvec3&)>& inside,
-                                      const FloorTruthFunction& truthAt, int edgeRadius = 2) {
+// The analytic truth per pixel, top row first: 1 lit, 0 shadowed, -1 not evaluated (not
+// floor, hidden, or outside `inside`).
+inline std::vector<int> floorTruthImage(const FrameCamera& camera, double floorY, double floorHalfExtent,
+                                        const std::function<bool(const glm::dvec3&)>& inside,
+                                        const FloorTruthFunction& truthAt) {
     const int width = camera.width, height = camera.height;
     std::vector<int> truth(static_cast<std::size_t>(width) * height, -1);
     for (int y = 0; y < height; ++y)
@@ -83,18 +84,31 @@ inline MaskStats compareFloorMaskWith(const std::vector<std::uint8_t>& mask, con
             const FloorTruth value = truthAt(ray, t, p);
             if (value != FloorTruth::Hidden) truth[y * width + x] = value == FloorTruth::Lit ? 1 : 0;
         }
+    return truth;
+}
+
+// Whether pixel (x, y) of a truth image lies within `radius` pixels of a truth shadow edge.
+inline bool nearTruthEdge(const std::vector<int>& truth, int width, int x, int y, int radius) {
+    const int value = truth[y * width + x];
+    for (int dy = -radius; dy <= radius; ++dy)
+        for (int dx = -radius; dx <= radius; ++dx) {
+            const int other = truth[(y + dy) * width + x + dx];
+            if (other >= 0 && other != value) return true;
+        }
+    return false;
+}
+
+inline MaskStats compareFloorMaskWith(const std::vector<std::uint8_t>& mask, const FrameCamera& camera,
+                                      double floorY, double floorHalfExtent,
+                                      const std::function<bool(const glm::dvec3&)>& inside,
+                                      const FloorTruthFunction& truthAt, int edgeRadius = 2) {
+    const int width = camera.width, height = camera.height;
+    const std::vector<int> truth = floorTruthImage(camera, floorY, floorHalfExtent, inside, truthAt);
     MaskStats stats;
     for (int y = edgeRadius; y < height - edgeRadius; ++y)
         for (int x = edgeRadius; x < width - edgeRadius; ++x) {
             const int value = truth[y * width + x];
-            if (value < 0) continue;
-            bool nearEdge = false;
-            for (int dy = -edgeRadius; dy <= edgeRadius; ++dy)
-                for (int dx = -edgeRadius; dx <= edgeRadius; ++dx) {
-                    const int other = truth[(y + dy) * width + x + dx];
-                    nearEdge = nearEdge || (other >= 0 && other != value);
-                }
-            if (nearEdge) continue;
+            if (value < 0 || nearTruthEdge(truth, width, x, y, edgeRadius)) continue;
             ++stats.evaluated;
             const bool maskLit = mask[y * width + x] >= 128;
             if (value == 1) {
@@ -119,14 +133,11 @@ inline MaskStats compareFloorMaskWith(const std::vector<std::uint8_t>& mask, con
     return stats;
 }
 
-// compareFloorMaskWith for occluders that are boxes: a floor point is hidden when a box
-// above the floor lies in front of it, shadowed when the segment to the light crosses one.
-inline MaskStats compareFloorMask(const std::vector<std::uint8_t>& mask, const Scene& scene, int slot,
-                                  const FrameCamera& camera, const std::vector<Aabb>& occluders,
-                                  double floorY, double floorHalfExtent,
-                                  const std::function<bool(const glm::dvec3&)>& inside,
-                                  int edgeRadius = 2) {
-    const auto truthAt = [&](const Ray& ray, double t, const glm::dvec3& p) {
+// The truth of a floor among occluder boxes: a floor point is hidden when a box above the
+// floor lies in front of it, shadowed when the segment to the light crosses one.
+inline FloorTruthFunction boxFloorTruth(const Scene& scene, int slot, const std::vector<Aabb>& occluders,
+                                        double floorY) {
+    return [&scene, slot, &occluders, floorY](const Ray& ray, double t, const glm::dvec3& p) {
         for (const Aabb& box : occluders) {
             double t0, t1;
             if (box.max.y > floorY + 1e-9 && intersectBox(ray.origin, ray.direction, box, t0, t1) && t0 < t - 1e-9)
@@ -134,7 +145,16 @@ inline MaskStats compareFloorMask(const std::vector<std::uint8_t>& mask, const S
         }
         return lightVisibleFrom(scene, slot, p, occluders) ? FloorTruth::Lit : FloorTruth::Shadowed;
     };
-    return compareFloorMaskWith(mask, camera, floorY, floorHalfExtent, inside, truthAt, edgeRadius);
+}
+
+// compareFloorMaskWith for occluders that are boxes (boxFloorTruth).
+inline MaskStats compareFloorMask(const std::vector<std::uint8_t>& mask, const Scene& scene, int slot,
+                                  const FrameCamera& camera, const std::vector<Aabb>& occluders,
+                                  double floorY, double floorHalfExtent,
+                                  const std::function<bool(const glm::dvec3&)>& inside,
+                                  int edgeRadius = 2) {
+    return compareFloorMaskWith(mask, camera, floorY, floorHalfExtent, inside,
+                                boxFloorTruth(scene, slot, occluders, floorY), edgeRadius);
 }
 
 // Loads the shadow plugin once per test suite (settings: the config's plugin settings).

@@ -398,6 +398,28 @@ TEST_F(EngineRenderShadows, EveryVariantStaysWithinItsErrorBoundAt2048) {
     }
 }
 
+// cascades 1 (the default) is the one fitted map the plugin drew before cascades existed:
+// the showcase renders to the very bytes of the reference image made then (see
+// tests/shadowmap/data/README.md), with the setting left out and with it given.
+TEST_F(EngineRenderShadows, OneCascadeRendersTheShowcaseAsBeforeCascades) {
+    int width = 0, height = 0;
+    const auto reference =
+        engine::readPng(fs::path(SHADOWMAP_TEST_DATA_DIR) / "showcase_160x90_one_map.png", 4, width, height);
+    ASSERT_EQ(reference.size(), 160u * 90u * 4u);
+    for (const std::string setting : {"", " --light-set sun.cascades=1"}) {
+        const CommandResult result =
+            runEngineRender("--config " + std::string(CONTENT_DIR) + "/engine.json --scene " + CONTENT_DIR +
+                            "/scenes/showcase.gltf --out " + (dir_ / "out.png").string() +
+                            " --width 160 --height 90 --warmup 0" + setting);
+        ASSERT_EQ(result.exitCode, 0) << result.output;
+        const auto image = engine::readPng(dir_ / "out.png", 4, width, height);
+        std::size_t differing = 0;
+        for (std::size_t i = 0; i < image.size() && i < reference.size(); ++i) differing += image[i] != reference[i];
+        EXPECT_EQ(image.size(), reference.size()) << setting;
+        EXPECT_EQ(differing, 0u) << "bytes differing from the one-map reference" << setting;
+    }
+}
+
 // woo with an explicit polygon_offset: both of its passes take the offset, so the peel still
 // recognises the nearest surface. With the offset in the peel pass alone the sun's error at
 // 512 texels with [1, 2] was 14.8 % at this size (measured); with it in both, 0.130 %,
@@ -552,4 +574,15 @@ TEST(EngineRenderCubeAcne, AFloorFacingACubeFaceGetsATexelBias) {
     EXPECT_LT(light["acne"].get<double>(), 1.1) << light;
     EXPECT_LT(light["leak"].get<double>(), 0.3) << light;  // measured 0.253: the bias adds little leak
     fs::remove_all(dir);
+}
+
+// cascades on a spot or point light would be silently nothing: it is said, once per light.
+TEST_F(EngineRenderShadows, CascadesOnAPointOrSpotLightAreIgnoredWithAWarning) {
+    const CommandResult result =
+        render("--frames 2 --light-set spot_light.cascades=3 --light-set point_light.cascades=2");
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    EXPECT_EQ(occurrences(result.output, "light \"spot_light\": cascades apply to directional lights only: 3 ignored"), 1)
+        << result.output;
+    EXPECT_EQ(occurrences(result.output, "light \"point_light\": cascades apply to directional lights only: 2 ignored"), 1)
+        << result.output;
 }

@@ -52,8 +52,16 @@ TEST(ShadowSettingsErrors, UnknownKeyListsTheKnownOnes) {
     std::string known;
     for (const shadowmap::SettingKey& key : shadowmap::settingKeys()) known += (known.empty() ? "" : ", ") + key.name;
     EXPECT_EQ(known, "variant, resolution, depth_format, filter, polygon_offset, dimming, near_plane, far_plane, "
-                     "reversed_z, polygon_offset_clamp");
+                     "reversed_z, polygon_offset_clamp, cascades, cascade_lambda, stable");
     expectNamed({"unknown key", {{"colour", "red"}}, "colour", "unknown key (known: " + known + ")"});
+}
+
+TEST(ShadowSettingsErrors, CascadeSettingsOutOfRangeAreNamed) {
+    expectNamed({"cascades 0", {{"cascades", 0}}, "cascades", "must be a whole number in [1, 4], got 0"});
+    expectNamed({"cascades 5", {{"cascades", 5}}, "cascades", "must be a whole number in [1, 4], got 5"});
+    expectNamed({"cascades 2.5", {{"cascades", 2.5}}, "cascades", "must be a whole number in [1, 4], got 2.5"});
+    expectNamed({"lambda 1.5", {{"cascade_lambda", 1.5}}, "cascade_lambda", "must be in [0, 1], got 1.5"});
+    expectNamed({"stable type", {{"stable", "yes"}}, "stable", "must be true or false"});
 }
 
 TEST(ShadowSettingsErrors, BadChoicesNameTheKnownValues) {

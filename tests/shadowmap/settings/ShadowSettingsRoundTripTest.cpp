@@ -37,6 +37,9 @@ std::vector<KeyChange> oneChangePerKey() {
         {"far_plane", [](ShadowSettings& s) { s.farPlane = 123.456; }},
         {"reversed_z", [](ShadowSettings& s) { s.reversedZ = true; }},
         {"polygon_offset_clamp", [](ShadowSettings& s) { s.polygonOffsetClamp = 2.7f; }},
+        {"cascades", [](ShadowSettings& s) { s.cascades = 3; }},
+        {"cascade_lambda", [](ShadowSettings& s) { s.cascadeLambda = 0.3; }},
+        {"stable", [](ShadowSettings& s) { s.stable = false; }},
     };
 }
 
@@ -55,7 +58,8 @@ TEST(ShadowSettingsRoundTrip, DefaultsPrintAsDocumented) {
     // planes, no explicit offset, no reversal, no clamp.
     const nlohmann::json expected = {{"variant", "standard"}, {"resolution", 2048}, {"depth_format", "d24"},
                                      {"filter", "pcf"},       {"dimming", 0.4},     {"reversed_z", false},
-                                     {"polygon_offset_clamp", 0.0}};
+                                     {"polygon_offset_clamp", 0.0}, {"cascades", 1},
+                                     {"cascade_lambda", 0.75},     {"stable", true}};
     EXPECT_EQ(shadowmap::printSettings(ShadowSettings{}), expected);
     EXPECT_EQ(roundTrip(ShadowSettings{}), ShadowSettings{});
     // The float 0.4 prints as the decimal it was written as, not 0.4000000059604645.

@@ -1,0 +1,78 @@
+#pragma once
+// Cascaded shadow maps for a directional light: the camera's view depth range where visible
+// receivers are is cut into 1-4 slices by the practical split scheme, and each slice gets its
+// own orthographic light view (one layer of the light's array map) fitted to the receivers in
+// it and the casters that can shadow them. No GL: the plugin turns the views into passes.
+//
+// Splits (practical scheme, Zhang et al. "Parallel-split shadow maps", 2006): over the view
+// depth range [n, f], split i of N is
+//   d_i = lambda * n * (f/n)^(i/N) + (1 - lambda) * (n + (f - n) * i/N),
+// lambda = 1 the logarithmic split (equal texel-to-pixel ratio on every slice), 0 the uniform.
+//
+// Fitted (not stable): each cascade's x/y box is the slice's corners in the light frame,
+// intersected with the box of the visible receivers; its depth runs from the farthest
+// receiver under that box to the nearest-to-the-light caster over it (as fitDirectionalLight).
+//
+// Stable: each cascade is a square of fixed size around the slice's bounding sphere (the
+// side does not turn with the camera), its centre snapped to whole texels of a light frame
+// anchored at the scene's centre, its depth the whole scene's range along the light: a
+// camera that moves moves the map only in texel steps, so edges do not crawl. The sphere's
+// radius is rounded up to a power of 2^(1/8) so that small changes of the split distances
+// keep it. The cost: a square around a sphere holds the slice with spare texels, up to
+// about twice the texel size of the fitted box.
+#include "math/LightFrustum.h"
+
+#include <glm/glm.hpp>
+#include <string>
+#include <vector>
+
+namespace shadowmap {
+
+inline constexpr int kMaxCascades = 4;
+
+// count + 1 distances: [0] = nearDepth, [count] = farDepth. lambda in [0, 1].
+std::vector<double> cascadeSplits(double nearDepth, double farDepth, int count, double lambda);
+
+// The camera a set of cascades is fitted for (engine::FrameCamera's V and P_eye).
+struct CascadeCamera {
+    glm::dmat4 eyeToWorld{1.0};  // V
+    glm::dmat4 projection{1.0};  // P_eye (perspective or orthographic, finite or infinite far)
+};
+
+struct CascadeOptions {
+    int count = 1;         // 1..kMaxCascades
+    double lambda = 0.5;   // practical split weight
+    bool stable = false;
+    int resolution = 2048;  // texels per side of each cascade's map (stable snapping)
+    FrustumFitOptions fit;  // margins and reversed Z
+};
+
+struct CascadeViews {
+    std::vector<LightView> cascades;  // count views; cascades[i].empty: nothing to shadow there
+    std::vector<double> splits;       // count + 1 view depths (distance along the camera's -Z)
+    bool valid = false;
+    std::string invalidReason;
+    bool empty = true;  // no visible receiver: no map this frame
+};
+
+// The view depth range [near, far] (distance along the camera's -Z) over which the visible
+// receivers' boxes lie, clamped to the camera's own near and far planes. False when none do.
+bool receiverDepthRange(const CascadeCamera& camera, const std::vector<engine::Aabb>& receivers,
+                        double& nearDepth, double& farDepth);
+
+// The eight world-space corners of the camera's frustum between view depths d0 and d1
+// (d0 corners first, in the order (-x,-y), (+x,-y), (-x,+y), (+x,+y)).
+std::vector<glm::dvec3> frustumSliceCorners(const CascadeCamera& camera, double d0, double d1);
+
+// Rounds a stable cascade's bounding radius up to the next power of 2^(1/8).
+double quantizedRadius(double radius);
+// The nearest whole-texel position to `value` for texels of `texel` width.
+double snapToTexel(double value, double texel);
+
+// sceneBounds: every receiver and caster of the scene (visible or not), the anchor and depth
+// range of stable cascades, so that neither depends on the camera.
+CascadeViews fitDirectionalCascades(const engine::LightInstance& instance, const engine::Light& light,
+                                    const ShadowBounds& bounds, const engine::Aabb& sceneBounds,
+                                    const CascadeCamera& camera, const CascadeOptions& options);
+
+}  // namespace shadowmap

@@ -1,0 +1,150 @@
+// Cascaded shadow maps for a directional light on a large outdoor scene
+// (tests/support/OutdoorScene.h), against analytic truth: near the camera, cascades must cut
+// the error of one map of the same resolution at least five-fold; on a slow walk stable far
+// cascades are kept from the cache; and stable cascades shimmer less than fitted ones.
+#include "../../gl/GlTestContext.h"
+#include "../../support/OutdoorScene.h"
+#include "AnalyticShadows.h"
+
+namespace {
+
+using engine::test::OutdoorScene;
+
+constexpr int kWidth = 480, kHeight = 270;
+constexpr double kNearCamera = 25.0;  // metres: "near the camera"
+
+class Cascades : public engine::test::ShadowPluginTest {
+protected:
+    static void SetUpTestSuite() { loadPlugin({{"resolution", 1024}}); }
+
+    // The sun's shadow mask with `shadow` settings, against the analytic truth on ground
+    // pixels within kNearCamera of the camera.
+    engine::test::MaskStats nearCameraErrors(const nlohmann::json& shadow, nlohmann::json* stats = nullptr) {
+        const OutdoorScene outdoor = engine::test::makeOutdoorScene(shadow);
+        const engine::FrameCamera camera = engine::test::outdoorCamera(kWidth, kHeight);
+        const auto mask = engine::test::renderShadowMask(plugins(), outdoor.scene, camera, outdoor.sunSlot, stats);
+        const glm::dvec3 eye = camera.position();
+        const auto nearCamera = [&](const glm::dvec3& p) { return glm::length(p - eye) < kNearCamera; };
+        return engine::test::compareFloorMask(mask, outdoor.scene, outdoor.sunSlot, camera, outdoor.occluders, 0.0,
+                                              OutdoorScene::kGroundHalf, nearCamera);
+    }
+};
+
+TEST_F(Cascades, CutTheErrorNearTheCameraFiveFold) {
+    nlohmann::json stats;
+    const auto single = nearCameraErrors({{"cascades", 1}});
+    const auto cascaded = nearCameraErrors({{"cascades", 4}}, &stats);
+    std::printf("near the camera: one map %.3f%%, 4 cascades %.3f%%\n", 100 * single.wrongFraction(),
+                100 * cascaded.wrongFraction());
+    ASSERT_GT(single.evaluated, 5000);
+    ASSERT_GT(single.truthShadowed, 300);  // the posts' shadows are in view
+    EXPECT_EQ(stats["shadowmap_plugin"]["lights"][0]["map"], "cascades") << stats.dump();
+    // Measured on llvmpipe (1024 maps, 480x270, 50231 pixels evaluated): one map 3.761 %
+    // wrong (1634 acne, 255 leak: a texel spans about a metre there), 4 cascades 0.002 %
+    // (1 pixel). The issue asks for five-fold; the margin to the measured ~1900-fold is
+    // wide because one cascade's worth of acne (hundreds of pixels) must fail it.
+    EXPECT_LE(cascaded.wrongFraction(), single.wrongFraction() / 5.0);
+}
+
+// One renderer over a camera path, so maps can be kept between frames: per frame the sun's
+// shadow mask and the plugin's report on the sun.
+struct WalkFrame {
+    std::vector<std::uint8_t> mask;
+    nlohmann::json sun;
+};
+
+std::vector<WalkFrame> walk(const std::vector<engine::RenderPlugin*>& plugins, const OutdoorScene& outdoor,
+                            const std::vector<engine::FrameCamera>& cameras) {
+    engine::Renderer renderer({}, plugins);
+    renderer.setScene(outdoor.scene);
+    std::vector<WalkFrame> frames;
+    for (const engine::FrameCamera& camera : cameras) {
+        engine::FrameRequest request;
+        request.camera = camera;
+        request.shadowMaskSlots = {outdoor.sunSlot};
+        const engine::FrameResult result = renderer.renderFrame(request);
+        frames.push_back({renderer.readShadowMask(outdoor.sunSlot),
+                          result.pluginStats["shadowmap_plugin"]["lights"][outdoor.sunSlot]});
+    }
+    return frames;
+}
+
+// How many frames after the first re-rendered each cascade (its layer missed the cache).
+std::vector<int> cascadeRenders(const std::vector<WalkFrame>& frames) {
+    std::vector<int> renders(4, 0);
+    for (std::size_t i = 1; i < frames.size(); ++i)
+        for (std::size_t c = 0; c < frames[i].sun["cascades"].size(); ++c)
+            renders[c] += frames[i].sun["cascades"][c]["cache"] == "miss";
+    return renders;
+}
+
+TEST_F(Cascades, StableFarCascadesAreKeptOnASlowWalk) {
+    // 2 cm per frame down the street (a slow walk at 60 Hz is about this).
+    constexpr int kFrames = 17;
+    std::vector<engine::FrameCamera> cameras;
+    for (int i = 0; i < kFrames; ++i)
+        cameras.push_back(engine::test::outdoorCamera(kWidth, kHeight, {0.0, 0.0, -0.02 * i}));
+    const std::vector<int> stable = cascadeRenders(walk(plugins(), engine::test::makeOutdoorScene({{"cascades", 4}}), cameras));
+    const std::vector<int> fitted = cascadeRenders(
+        walk(plugins(), engine::test::makeOutdoorScene({{"cascades", 4}, {"stable", false}}), cameras));
+    std::printf("re-rendered in %d frames: stable %d %d %d %d, fitted %d %d %d %d\n", kFrames - 1, stable[0], stable[1],
+                stable[2], stable[3], fitted[0], fitted[1], fitted[2], fitted[3]);
+    // Measured on llvmpipe: stable 7, 4, 2, 0 of 16 frames (nearest to farthest), fitted
+    // 16 in every cascade. The issue's bound: a stable far cascade re-renders at most one
+    // frame in four.
+    EXPECT_LE(stable[3], (kFrames - 1) / 4);
+    // Fitted cascades follow the camera continuously: every frame re-renders (the control
+    // that shows the count above can fail).
+    EXPECT_EQ(fitted[3], kFrames - 1);
+}
+
+// An orthographic camera looking down at the posts, moved sideways by exactly one pixel per
+// frame: every world point moves by exactly one pixel, so a pixel's shadow state is compared
+// with the same world point's in the next frame without resampling. The truth there does
+// not change (a static scene), so every change is shimmer.
+double shimmer(const std::vector<engine::RenderPlugin*>& plugins, const nlohmann::json& sun) {
+    const OutdoorScene outdoor = engine::test::makeOutdoorScene(sun);
+    constexpr double kHalfWidth = 20.0, kPixel = 2.0 * kHalfWidth / kWidth;
+    constexpr int kFrames = 9;
+    std::vector<engine::FrameCamera> cameras;
+    for (int i = 0; i < kFrames; ++i) {
+        engine::FrameCamera camera;
+        camera.width = kWidth;
+        camera.height = kHeight;
+        camera.eyeToWorld = engine::test::placeLooking({0, 40, 25}, {0, 0, -15});
+        camera.eyeToWorld[3] += camera.eyeToWorld[0] * (kPixel * i);  // along the image's x
+        const double halfHeight = kHalfWidth * kHeight / kWidth;
+        camera.projection = glm::ortho(-kHalfWidth, kHalfWidth, -halfHeight, halfHeight, 0.1, 200.0);
+        cameras.push_back(camera);
+    }
+    const std::vector<WalkFrame> frames = walk(plugins, outdoor, cameras);
+    long changed = 0, evaluated = 0;
+    for (int i = 0; i + 1 < kFrames; ++i) {
+        const auto truthAt = engine::test::boxFloorTruth(outdoor.scene, outdoor.sunSlot, outdoor.occluders, 0.0);
+        const auto everywhere = [](const glm::dvec3&) { return true; };
+        const std::vector<int> truth = engine::test::floorTruthImage(cameras[i], 0.0, OutdoorScene::kGroundHalf, everywhere, truthAt);
+        const std::vector<int> next = engine::test::floorTruthImage(cameras[i + 1], 0.0, OutdoorScene::kGroundHalf, everywhere, truthAt);
+        for (int y = 0; y < kHeight; ++y)
+            for (int x = 1; x < kWidth; ++x) {
+                // Pixel x of frame i shows the world point of pixel x - 1 of frame i + 1.
+                const std::size_t here = std::size_t(y) * kWidth + x, there = here - 1;
+                if (truth[here] < 0 || next[there] < 0) continue;
+                ++evaluated;
+                changed += (frames[i].mask[here] >= 128) != (frames[i + 1].mask[there] >= 128);
+            }
+    }
+    return evaluated ? double(changed) / evaluated : 1.0;
+}
+
+TEST_F(Cascades, StableCascadesShimmerLessThanFittedOnes) {
+    const double stable = shimmer(plugins(), {{"cascades", 4}});
+    const double fitted = shimmer(plugins(), {{"cascades", 4}, {"stable", false}});
+    std::printf("shimmer: stable %.4f%%, fitted %.4f%%\n", 100 * stable, 100 * fitted);
+    // Measured on llvmpipe: stable 0.0004 %, fitted
+    // 0.214 %. Asserted: stable at most a tenth of fitted, a margin of ~50x on the measured
+    // ratio, and the fitted path must shimmer at all (> 0.05 %) or the path shows nothing.
+    EXPECT_GT(fitted, 0.0005);
+    EXPECT_LE(stable, fitted / 10.0);
+}
+
+} // namespace

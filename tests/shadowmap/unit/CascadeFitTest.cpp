@@ -1,0 +1,189 @@
+// Cascades of a directional light (math/CascadeFit.h): the practical split distances, each
+// cascade's box fitted to its slice of the camera frustum and the casters over it, and the
+// stable mode's snapping (a camera moved by less than one texel keeps a cascade's matrix,
+// by one texel moves it by exactly one).
+#include "math/CascadeFit.h"
+
+#include <gtest/gtest.h>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <cmath>
+
+namespace {
+
+using engine::Aabb;
+using shadowmap::CascadeCamera;
+using shadowmap::CascadeOptions;
+using shadowmap::CascadeViews;
+using shadowmap::ShadowBounds;
+
+constexpr double kFovY = 0.9, kAspect = 16.0 / 9.0, kNear = 0.1, kFar = 100.0;
+const Aabb kGround{{-500, -0.1, -500}, {500, 0, 500}};
+const Aabb kPost{{-0.05, 0, -5.05}, {0.05, 3, -4.95}};
+
+CascadeCamera cameraAt(const glm::dvec3& eye, const glm::dvec3& target) {
+    CascadeCamera camera;
+    camera.eyeToWorld = glm::inverse(glm::lookAt(eye, target, glm::dvec3(0, 1, 0)));
+    camera.projection = glm::perspective(kFovY, kAspect, kNear, kFar);
+    return camera;
+}
+
+// A directional light node shining along `direction` (glTF lights shine down -Z).
+engine::LightInstance sunShining(const glm::dvec3& direction) {
+    engine::LightInstance sun;
+    sun.world = shadowmap::lightToWorldFromDirection(glm::dvec3(0.0), direction);
+    return sun;
+}
+
+ShadowBounds groundAndPost() {
+    ShadowBounds bounds;
+    bounds.receivers = {kGround, kPost};
+    bounds.casters = {kGround, kPost};
+    return bounds;
+}
+
+Aabb sceneBox() {
+    Aabb box = kGround;
+    box.extend(kPost);
+    return box;
+}
+
+CascadeViews fit(const CascadeCamera& camera, const glm::dvec3& sunDirection, bool stable, int count = 4) {
+    CascadeOptions options;
+    options.count = count;
+    options.lambda = 0.5;
+    options.stable = stable;
+    options.resolution = 1024;
+    return shadowmap::fitDirectionalCascades(sunShining(sunDirection), engine::Light{}, groundAndPost(), sceneBox(),
+                                             camera, options);
+}
+
+TEST(CascadeSplits, PracticalSchemeBlendsLogarithmicAndUniform) {
+    const std::vector<double> logarithmic = shadowmap::cascadeSplits(1.0, 1000.0, 3, 1.0);
+    const std::vector<double> uniform = shadowmap::cascadeSplits(1.0, 1000.0, 3, 0.0);
+    const std::vector<double> half = shadowmap::cascadeSplits(1.0, 1000.0, 3, 0.5);
+    const double expectedLog[] = {1, 10, 100, 1000}, expectedUniform[] = {1, 334, 667, 1000};
+    ASSERT_EQ(logarithmic.size(), 4u);
+    for (int i = 0; i < 4; ++i) {
+        // pow and the sums round: a few ulps of 1000.
+        EXPECT_NEAR(logarithmic[i], expectedLog[i], 1e-12 * 1000) << i;
+        EXPECT_NEAR(uniform[i], expectedUniform[i], 1e-12 * 1000) << i;
+        EXPECT_NEAR(half[i], 0.5 * (expectedLog[i] + expectedUniform[i]), 1e-12 * 1000) << i;
+    }
+    // The ends are exact, so every depth in [near, far] falls in some cascade.
+    EXPECT_EQ(half.front(), 1.0);
+    EXPECT_EQ(half.back(), 1000.0);
+}
+
+TEST(CascadeSplits, RangeIsWhereVisibleReceiversAre) {
+    const CascadeCamera camera = cameraAt({0, 2, 0}, {0, 2, -10});
+    double nearDepth = 0, farDepth = 0;
+    // The ground runs past both camera planes: clamped to them.
+    ASSERT_TRUE(shadowmap::receiverDepthRange(camera, {kGround}, nearDepth, farDepth));
+    EXPECT_NEAR(nearDepth, kNear, 1e-9);
+    EXPECT_NEAR(farDepth, kFar, 1e-9);
+    // A lone post 5 m ahead: its own depths (4.95 .. 5.05).
+    ASSERT_TRUE(shadowmap::receiverDepthRange(camera, {kPost}, nearDepth, farDepth));
+    EXPECT_NEAR(nearDepth, 4.95, 1e-9);
+    EXPECT_NEAR(farDepth, 5.05, 1e-9);
+    // Behind the camera: nothing to shadow.
+    EXPECT_FALSE(shadowmap::receiverDepthRange(camera, {Aabb{{-1, 0, 1}, {1, 1, 2}}}, nearDepth, farDepth));
+}
+
+TEST(CascadeFit, EachCascadeHoldsItsSliceAndTheCastersOverIt) {
+    // Sun straight down: the light frame's x is world -x and its y world z, so each slice's
+    // footprint is known in closed form: width 2 d1 tan(fovy/2) aspect, length d1 - d0.
+    const CascadeCamera camera = cameraAt({0, 2, 0}, {0, 2, -10});
+    const CascadeViews views = fit(camera, {0, -1, 0}, false);
+    ASSERT_TRUE(views.valid) << views.invalidReason;
+    ASSERT_EQ(views.cascades.size(), 4u);
+    ASSERT_EQ(views.splits.size(), 5u);
+    const double tanHalf = std::tan(0.5 * kFovY);
+    double previousWidth = 0.0;
+    for (int i = 0; i < 4; ++i) {
+        const shadowmap::LightView& view = views.cascades[i];
+        ASSERT_TRUE(view.valid && !view.empty) << i;
+        const double width = 2.0 / view.projection[0][0], length = 2.0 / view.projection[1][1];
+        const double d0 = views.splits[i], d1 = views.splits[i + 1];
+        // The margins widen each side by 1e-3 of the largest side (FrustumFitOptions).
+        const double margin = 2e-3 * std::max(width, view.farPlane) + 1e-12;
+        EXPECT_NEAR(width, 2.0 * d1 * tanHalf * kAspect, margin) << i;
+        EXPECT_NEAR(length, d1 - d0, margin) << i;
+        EXPECT_GT(width, previousWidth) << "nearer cascades have the smaller texels";
+        previousWidth = width;
+        // Depth: from the ground's underside up to the top of the post, which stands in
+        // every slice's footprint column here or not: check only those it overlaps.
+        const glm::dvec3 eye(view.lightToWorld[3]);
+        EXPECT_LE(eye.y - view.farPlane, kGround.min.y + 1e-9) << i;
+        if (-kPost.max.z <= d1 && -kPost.min.z >= d0) EXPECT_GE(eye.y, kPost.max.y) << i;
+    }
+    // Cascade 0 against one map for the whole slice range: its texels are smaller by the
+    // ratio of the widths (what cascades are for).
+    const CascadeViews single = fit(camera, {0, -1, 0}, false, 1);
+    EXPECT_LT(2.0 / views.cascades[0].projection[0][0], 0.2 * 2.0 / single.cascades[0].projection[0][0]);
+}
+
+TEST(CascadeFit, NoVisibleReceiverIsEmpty) {
+    ShadowBounds bounds;
+    bounds.receivers = {Aabb{{-1, 0, 1}, {1, 1, 2}}};  // behind the camera
+    CascadeOptions options;
+    options.count = 2;
+    const CascadeViews views = shadowmap::fitDirectionalCascades(
+        sunShining({0, -1, 0}), engine::Light{}, bounds, bounds.receivers[0], cameraAt({0, 2, 0}, {0, 2, -10}), options);
+    EXPECT_TRUE(views.valid);
+    EXPECT_TRUE(views.empty);
+}
+
+// The sun at 35 degrees above the horizon, from an azimuth that does not line up with any axis.
+const glm::dvec3 kSun = glm::normalize(glm::dvec3(std::cos(0.61) * std::cos(0.4), -std::sin(0.61),
+                                                  std::cos(0.61) * std::sin(0.4)));
+
+TEST(CascadeStable, SubTexelMovesKeepTheMatrixAndWholeTexelsMoveItByOne) {
+    const glm::dvec3 eye(3, 1.7, 2), target(10, 1, -20);
+    const CascadeViews start = fit(cameraAt(eye, target), kSun, true);
+    ASSERT_TRUE(start.valid && !start.empty);
+    for (int c = 0; c < 4; ++c) {
+        const shadowmap::LightView& first = start.cascades[c];
+        const glm::dvec3 axis(first.lightToWorld[0]);  // the light frame's x, in world space
+        const double texel = 2.0 / (first.projection[0][0] * 1024);
+        auto cascadeAt = [&](double offset) { return fit(cameraAt(eye + offset * axis, target + offset * axis), kSun, true).cascades[c]; };
+        // Walk in twentieths of a texel until the snapped position steps: just past a step.
+        double crossing = -1.0;
+        for (int step = 1; step <= 22 && crossing < 0.0; ++step)
+            if (cascadeAt(step * 0.05 * texel).lightToWorld != first.lightToWorld) crossing = step * 0.05 * texel;
+        ASSERT_GT(crossing, 0.0) << "cascade " << c << " never moved within 1.1 texels";
+        const shadowmap::LightView atStep = cascadeAt(crossing);
+        // Less than a texel further (at most 0.05 + 0.9 past the step): the same matrix.
+        const shadowmap::LightView subTexel = cascadeAt(crossing + 0.9 * texel);
+        EXPECT_EQ(subTexel.lightToWorld, atStep.lightToWorld) << c;
+        EXPECT_EQ(subTexel.projection, atStep.projection) << c;
+        // One texel further: exactly one texel along x, nothing else.
+        const shadowmap::LightView oneTexel = cascadeAt(crossing + texel);
+        const glm::dvec3 moved = glm::dvec3(oneTexel.lightToWorld[3]) - glm::dvec3(atStep.lightToWorld[3]);
+        // Positions of a few hundred units carry ~1e-13 of rounding per operation.
+        EXPECT_NEAR(glm::dot(moved, axis), texel, 1e-9) << c;
+        EXPECT_NEAR(glm::length(moved - glm::dot(moved, axis) * axis), 0.0, 1e-9) << c;
+        EXPECT_EQ(oneTexel.projection, atStep.projection) << c;
+    }
+    // Control: without stable mode a quarter-texel move already changes the matrix.
+    const CascadeViews fitted = fit(cameraAt(eye, target), kSun, false);
+    const glm::dvec3 axis(fitted.cascades[0].lightToWorld[0]);
+    const double texel = 2.0 / (fitted.cascades[0].projection[0][0] * 1024);
+    const CascadeViews nudged = fit(cameraAt(eye + 0.25 * texel * axis, target + 0.25 * texel * axis), kSun, false);
+    EXPECT_NE(nudged.cascades[0].lightToWorld, fitted.cascades[0].lightToWorld);
+}
+
+TEST(CascadeStable, RadiusIsQuantizedUpAndSnappingRoundsToTheNearestTexel) {
+    EXPECT_EQ(shadowmap::quantizedRadius(1.0), 1.0);
+    EXPECT_EQ(shadowmap::quantizedRadius(2.0), 2.0);
+    const double r = shadowmap::quantizedRadius(1.05);
+    EXPECT_GE(r, 1.05);
+    EXPECT_LE(r, 1.05 * std::exp2(1.0 / 8.0));
+    EXPECT_EQ(shadowmap::quantizedRadius(1.04), shadowmap::quantizedRadius(1.05));  // both in (1, 2^(1/8)]
+    EXPECT_EQ(shadowmap::snapToTexel(0.26, 0.5), 0.5);
+    EXPECT_EQ(shadowmap::snapToTexel(0.24, 0.5), 0.0);
+    EXPECT_EQ(shadowmap::snapToTexel(-0.74, 0.5), -0.5);
+}
+
+} // namespace
