@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
+#include <cstdio>
 #include <cerrno>
 #include <cstdlib>
 #include <stdexcept>
@@ -31,6 +33,19 @@ int parseInteger(const std::string& flag, const std::string& text, int minimum, 
         throw std::invalid_argument(flag + ": \"" + text + "\" is not an integer in [" + std::to_string(minimum) +
                                     ", " + std::to_string(maximum) + "]");
     return static_cast<int>(value);
+}
+
+double parsePositiveNumber(const std::string& flag, const std::string& text, double maximum) {
+    char* end = nullptr;
+    errno = 0;
+    const double value = std::strtod(text.c_str(), &end);
+    const bool plain = !text.empty() && (std::isdigit(static_cast<unsigned char>(text[0])) || text[0] == '.');
+    if (!plain || *end != '\0' || errno != 0 || !std::isfinite(value) || value <= 0.0 || value > maximum) {
+        char bound[32];
+        std::snprintf(bound, sizeof bound, "%g", maximum);
+        throw std::invalid_argument(flag + ": \"" + text + "\" is not a number in (0, " + bound + "]");
+    }
+    return value;
 }
 
 std::vector<std::string> parseList(const std::string& flag, const std::string& text) {

@@ -14,6 +14,9 @@ namespace tools {
 // A decimal integer in [minimum, maximum]: no sign games, no trailing text, no overflow.
 int parseInteger(const std::string& flag, const std::string& text, int minimum, int maximum);
 
+// A finite decimal number in (minimum, maximum] ("0.5", "2", "1e-3"): no trailing text.
+double parsePositiveNumber(const std::string& flag, const std::string& text, double maximum);
+
 // A comma-separated list: "a,b,c". One rule for every list flag: an empty item (",a", "a,,b",
 // "a,", "") and an item listed twice are errors naming the flag and the item.
 std::vector<std::string> parseList(const std::string& flag, const std::string& text);
