@@ -31,10 +31,12 @@ SceneMeasurer::SceneMeasurer(engine::Scene& scene, const std::string& sceneFile,
         const engine::Mesh& mesh = scene_.meshes.at(instance.mesh);
         const bool casts = instance.castShadows && std::any_of(mesh.primitives.begin(), mesh.primitives.end(),
                                                                [](const engine::Primitive& p) { return p.castShadows; });
-        if (casts && !mesh.closed) {
-            openCaster_ = mesh.name.empty() ? "mesh " + std::to_string(instance.mesh) : mesh.name;
+        if (!casts) continue;
+        if (mesh.closed) {
+            openCaster_.clear();
             break;
         }
+        if (openCaster_.empty()) openCaster_ = mesh.name.empty() ? "mesh " + std::to_string(instance.mesh) : mesh.name;
     }
 }
 

@@ -35,10 +35,11 @@ public:
     // Whether the plugin's settings API accepts the candidate over the light's other keys
     // (e.g. reversed_z needs d32f), and, for backface, whether every caster is closed.
     bool valid(int tuned, const Candidate& candidate) const;
-    // The first shadow-casting mesh that is not closed, empty when all are. With one, the
-    // plugin draws it two-sided with the standard offset under backface, so backface is
-    // standard by another name and would compete with it on timing noise alone: left out.
-    const std::string& openCaster() const { return openCaster_; }
+    // A shadow-casting mesh that is not closed, when no caster is closed (else empty). The
+    // plugin draws open casters two-sided with the standard offset under backface, so with
+    // no closed caster backface is standard by another name and would compete with it on
+    // timing noise alone: left out. With some closed casters it differs, and is searched.
+    const std::string& onlyOpenCasters() const { return openCaster_; }
 
 private:
     std::vector<std::optional<Measured>> collect(const evaluation::TrialResult& result) const;

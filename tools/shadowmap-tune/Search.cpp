@@ -140,9 +140,10 @@ std::vector<LightChoice> searchSettings(LockstepMeasurer& measurer, const std::v
         const auto& fit = choice.offsetFit;
         const Measured* best = bestOf(light, [&](const Measured& m) {
             if (m.setting == choice.before.setting) return true;
-            if (fit) return m.setting == fit->fitted.setting || (!m.setting.contains("polygon_offset") && m.setting != fit->base);
-            return !m.setting.contains("polygon_offset");
+            return !m.setting.contains("polygon_offset") && !(fit && m.setting == fit->base);
         });
+        // The fit's result with its base's median time (OffsetFit.cpp).
+        if (fit && (!best || goal.better(fit->fitted, *best))) best = &fit->fitted;
         choice.chosen = best && goal.clearlyBetter(*best, choice.before) ? *best : choice.before;
         choice.changed = !(choice.chosen.setting == choice.before.setting);
     }

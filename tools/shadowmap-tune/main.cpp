@@ -81,9 +81,9 @@ int run(const TuneOptions& options, std::unique_ptr<engine::GlContext>& context,
     SceneMeasurer sceneMeasurer(scene, options.scene, trial, ownedKeys(space), configSettings);
     sceneMeasurer.measureCurrent();
 
-    if (!sceneMeasurer.openCaster().empty())
-        std::fprintf(stderr, "shadowmap-tune: backface left out: \"%s\" casts shadows and is not closed\n",
-                     sceneMeasurer.openCaster().c_str());
+    if (!sceneMeasurer.onlyOpenCasters().empty())
+        std::fprintf(stderr, "shadowmap-tune: backface left out: no caster is closed (e.g. \"%s\")\n",
+                     sceneMeasurer.onlyOpenCasters().c_str());
     const int lights = static_cast<int>(sceneMeasurer.lights().size());
     LockstepMeasurer measurer(
         lights, [&](const std::vector<Candidate>& perLight) { return sceneMeasurer.measure(perLight); },
