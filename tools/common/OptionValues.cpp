@@ -79,6 +79,15 @@ std::vector<int> parseIntegerList(const std::string& flag, const std::string& te
     return values;
 }
 
+Shard parseShard(const std::string& flag, const std::string& text) {
+    const auto slash = text.find('/');
+    if (slash == std::string::npos) throw std::invalid_argument(flag + ": \"" + text + "\" must be K/N");
+    Shard shard;
+    shard.count = parseInteger(flag, text.substr(slash + 1), 1, 10000);
+    shard.index = parseInteger(flag, text.substr(0, slash), 1, shard.count);
+    return shard;
+}
+
 std::pair<std::string, std::string> parseAssignment(const std::string& flag, const std::string& text) {
     const auto equals = text.find('=');
     if (equals == std::string::npos || equals == 0 || equals + 1 == text.size())

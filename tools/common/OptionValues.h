@@ -28,6 +28,13 @@ std::vector<std::string> parseNames(const std::string& flag, const std::string& 
 // parseList of integers, each in [minimum, maximum].
 std::vector<int> parseIntegerList(const std::string& flag, const std::string& text, int minimum, int maximum);
 
+// --shard K/N of the sweeping tools (shadowmap-bench, shadowmap-tune): shard K of N, 1-based,
+// 1 <= K <= N <= 10000.
+struct Shard {
+    int index = 1, count = 1;
+};
+Shard parseShard(const std::string& flag, const std::string& text);
+
 // NAME=VALUE with both sides non-empty (the first '=' splits: VALUE may hold more).
 std::pair<std::string, std::string> parseAssignment(const std::string& flag, const std::string& text);
 

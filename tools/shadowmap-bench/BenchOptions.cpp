@@ -1,5 +1,4 @@
 #include "BenchOptions.h"
-#include "Shards.h"
 
 #include "SceneLighting.h"
 
@@ -133,7 +132,7 @@ BenchOptions parseBenchOptions(int argc, char** argv) {
         else if (flag == tools::kGroundFlag) options.ground = true;
         else if (flag == "--out") options.out = value;
         else if (flag == "--shard") {
-            const Shard shard = parseShard(flag, value);
+            const tools::Shard shard = tools::parseShard(flag, value);
             options.shardIndex = shard.index;
             options.shardCount = shard.count;
         } else if (flag == "--merge") options.merge.push_back(value);

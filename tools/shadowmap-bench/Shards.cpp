@@ -62,15 +62,6 @@ double number(const std::string& text, const std::string& file, int line) {
 
 } // namespace
 
-Shard parseShard(const std::string& flag, const std::string& text) {
-    const auto slash = text.find('/');
-    if (slash == std::string::npos) throw std::invalid_argument(flag + ": \"" + text + "\" must be K/N");
-    Shard shard;
-    shard.count = tools::parseInteger(flag, text.substr(slash + 1), 1, 10000);
-    shard.index = tools::parseInteger(flag, text.substr(0, slash), 1, shard.count);
-    return shard;
-}
-
 void keepShardJobs(std::vector<BenchScene>& scenes, const Shard& shard) {
     long job = 0;
     for (BenchScene& scene : scenes) {

@@ -5,6 +5,7 @@
 // writes what one run would have (rows in the single run's order). No scheduler of our
 // own: GNU parallel or a Slurm job array starts the shards (README, "Sharded sweeps").
 #include "BenchRow.h"
+#include "OptionValues.h"
 #include "SummaryReport.h"
 #include "Sweep.h"
 
@@ -14,12 +15,7 @@
 
 namespace shadowmap_bench {
 
-struct Shard {
-    int index = 1, count = 1;  // K of N, 1-based
-};
-
-// "K/N" with 1 <= K <= N <= 10000; std::invalid_argument naming the flag otherwise.
-Shard parseShard(const std::string& flag, const std::string& text);
+using tools::Shard;  // K of N (tools/common/OptionValues.h, which parses --shard)
 
 // Drops from each scene the settings (jobs) other shards run.
 void keepShardJobs(std::vector<BenchScene>& scenes, const Shard& shard);

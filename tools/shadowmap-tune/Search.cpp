@@ -21,6 +21,11 @@ constexpr double kErrorEpsilon = 1e-4;
 
 bool lowerError(const Measured& a, const Measured& b) { return a.error < b.error - kErrorEpsilon; }
 
+// Faster by more than timing noise: a time difference smaller than that is no ranking, so
+// the search's order decides (the first measured wins; lists go cheapest first), and the
+// choice does not flip between runs.
+bool clearlyFaster(const Measured& a, const Measured& b) { return a.ms < b.ms * (1.0 - kTimeNoise); }
+
 } // namespace
 
 bool Goal::better(const Measured& a, const Measured& b) const {
@@ -29,10 +34,10 @@ bool Goal::better(const Measured& a, const Measured& b) const {
     if (kind == Kind::Budget) {
         if (!fa) return a.ms < b.ms;
         if (lowerError(a, b) || lowerError(b, a)) return lowerError(a, b);
-        return a.ms < b.ms;
+        return clearlyFaster(a, b);
     }
     if (!fa) return lowerError(a, b);
-    if (a.ms != b.ms) return a.ms < b.ms;
+    if (clearlyFaster(a, b) || clearlyFaster(b, a)) return clearlyFaster(a, b);
     return lowerError(a, b);
 }
 
@@ -44,7 +49,7 @@ bool Goal::clearlyBetter(const Measured& choice, const Measured& current) const 
         const double pixel = current.evaluated > 0 ? 100.0 / static_cast<double>(current.evaluated) : kErrorEpsilon;
         return choice.error < current.error - std::max(pixel, kErrorEpsilon);
     }
-    return choice.ms < current.ms * (1.0 - kTimeNoise);
+    return clearlyFaster(choice, current);
 }
 
 LockstepMeasurer::LockstepMeasurer(int lights, MeasureRound measure, CandidateCheck valid)
@@ -87,18 +92,23 @@ void LockstepMeasurer::measureLists(const std::vector<std::vector<Candidate>>& l
 }
 
 std::vector<LightChoice> searchSettings(LockstepMeasurer& measurer, const std::vector<SettingDimension>& space,
-                                        const Goal& goal) {
+                                        const Goal& goal, const std::vector<bool>& searched) {
     const int lights = measurer.lights();
+    const auto isSearched = [&](int light) { return searched.empty() || searched.at(light); };
     std::vector<LightChoice> choices(lights);
     for (int light = 0; light < lights; ++light) choices[light].before = measurer.measured(light).front();
 
     // 1. Coarse.
     const std::vector<Candidate> coarse = coarseCandidates(space);
-    measurer.measureLists(std::vector<std::vector<Candidate>>(lights, coarse));
+    std::vector<std::vector<Candidate>> coarseLists(lights);
+    for (int light = 0; light < lights; ++light)
+        if (isSearched(light)) coarseLists[light] = coarse;
+    measurer.measureLists(coarseLists);
 
     // 2-3. Prune to each light's Pareto front, refine the survivors.
     std::vector<std::vector<Candidate>> fine(lights);
     for (int light = 0; light < lights; ++light) {
+        if (!isSearched(light)) continue;
         std::vector<Measured> coarseResults;
         for (const Candidate& candidate : coarse)
             if (const Measured* m = measurer.find(light, candidate)) coarseResults.push_back(*m);
@@ -123,16 +133,20 @@ std::vector<LightChoice> searchSettings(LockstepMeasurer& measurer, const std::v
 
     // 4. Fit the offset of each light's best setting that draws with one.
     std::vector<std::optional<Candidate>> bases(lights);
-    for (int light = 0; light < lights; ++light)
-        if (const Measured* best = bestOf(light, [](const Measured& m) {
-                return usesPolygonOffset(m.setting) && !m.setting.contains("polygon_offset");
-            }))
-            bases[light] = best->setting;
+    for (int light = 0; light < lights; ++light) {
+        if (!isSearched(light)) continue;
+        const Measured* best = bestOf(light, [](const Measured& m) {
+            return usesPolygonOffset(m.setting) && !m.setting.contains("polygon_offset");
+        });
+        if (best) bases[light] = best->setting;
+    }
     const std::vector<std::optional<OffsetFitResult>> fits = fitOffsets(measurer, bases);
 
     // 5. Choose.
     for (int light = 0; light < lights; ++light) {
         LightChoice& choice = choices[light];
+        choice.chosen = choice.before;
+        if (!isSearched(light)) continue;
         choice.offsetFit = fits[light];
         // Of the offsets the fit tried only its result competes, in place of its base (the
         // fit starts at the base's offset, so it errs no more): the others differ from it in

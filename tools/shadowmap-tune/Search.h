@@ -40,8 +40,9 @@ struct Goal {
     double limit = 0.0;  // ms (Budget) or percent (MaxError)
 
     bool feasible(const Measured& m) const { return kind == Kind::Budget ? m.ms <= limit : m.error <= limit; }
-    // Budget: the lower error within the budget (ties: faster); MaxError: the faster within
-    // the error (ties: lower error). A feasible result beats an infeasible one; of two
+    // Budget: the lower error within the budget (ties: faster by more than timing noise);
+    // MaxError: the faster by more than noise within the error (else: lower error). Neither:
+    // not better, so of equals the first met wins. A feasible result beats an infeasible one; of two
     // infeasible ones the nearer to feasible wins.
     bool better(const Measured& a, const Measured& b) const;
     // Whether `choice` improves on the light's current setting by more than noise:
@@ -92,8 +93,10 @@ struct LightChoice {
     bool changed = false;  // chosen.setting differs from before.setting
 };
 
-// Runs stages 1-5 for every light (the measurer seeded with each light's current setting).
+// Runs stages 1-5 for every light (the measurer seeded with each light's current setting)
+// whose `searched` entry is true (empty: all); the others keep their current setting (they
+// ride along in the renders: another shard searches them).
 std::vector<LightChoice> searchSettings(LockstepMeasurer& measurer, const std::vector<SettingDimension>& space,
-                                        const Goal& goal);
+                                        const Goal& goal, const std::vector<bool>& searched = {});
 
 } // namespace shadowmap_tune

@@ -43,6 +43,9 @@ const char* tuneUsage() {
         "  [--views cameras|orbit:N] [--config CONFIG.json] [--width W --height H] [--frames N]\n"
         "  [--variants standard,woo,backface] [--resolutions 512,1024,2048]\n"
         "  [--depth-formats d16,d24,d32f] [--filters nearest,pcf] [--report REPORT.json]\n"
+        "  [--shard K/N]   search every N-th light only and write --out as a partial result (JSON)\n"
+        "usage: shadowmap-tune --scene SCENE --merge PART.json... --out TUNED.gltf|.glb\n"
+        "                  write the scene from shards 1..N's partial results (renders nothing)\n"
         "\n"
         "Chooses each light's shadow setting by measurement: the most accurate within B ms of\n"
         "shadow passes per frame (--budget-ms), or the cheapest whose error is at most E percent\n"
@@ -79,7 +82,9 @@ TuneOptions parseTuneOptions(int argc, char** argv) {
         } else if (flag == "--max-error") {
             maxError = true;
             options.limit = tools::parsePositiveNumber(flag, value, 100.0);
-        } else if (flag == "--views") options.views = parseViewSpec(flag, value);
+        } else if (flag == "--shard") options.shard = tools::parseShard(flag, value);
+        else if (flag == "--merge") options.merge.push_back(value);
+        else if (flag == "--views") options.views = parseViewSpec(flag, value);
         else if (flag == "--width") options.width = tools::parseInteger(flag, value, 1, 16384);
         else if (flag == "--height") options.height = tools::parseInteger(flag, value, 1, 16384);
         else if (flag == "--frames") options.frames = tools::parseInteger(flag, value, 1, 10000);
@@ -97,6 +102,10 @@ TuneOptions parseTuneOptions(int argc, char** argv) {
     if (options.help) return options;
     if (options.scene.empty()) throw std::invalid_argument("--scene is required");
     if (options.out.empty()) throw std::invalid_argument("--out is required");
+    if (!options.merge.empty()) {
+        if (options.shard.count > 1) throw std::invalid_argument("--merge and --shard exclude each other");
+        return options;  // the goal and the views were the shards'
+    }
     if (options.budget == maxError)
         throw std::invalid_argument(options.budget ? "--budget-ms and --max-error exclude each other: give one"
                                                    : "give --budget-ms B or --max-error E");

@@ -1,6 +1,7 @@
 #pragma once
 // shadowmap-tune's command line. Parsing checks every value and throws
 // std::invalid_argument with one line naming the flag and the value.
+#include "OptionValues.h"
 #include "SearchSpace.h"
 
 #include <string>
@@ -25,6 +26,8 @@ struct TuneOptions {
     ViewSpec views;
     int width = 0, height = 0, frames = 0;
     SearchLimits limits;
+    tools::Shard shard;               // --shard K/N: --out is then a partial result (JSON)
+    std::vector<std::string> merge;   // --merge PART.json...: write --out from these, render nothing
     bool help = false;
 };
 

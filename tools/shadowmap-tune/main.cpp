@@ -7,6 +7,7 @@
 #include "SearchSpace.h"
 #include "TuneOptions.h"
 #include "TuneReport.h"
+#include "TuneShards.h"
 #include "TuneViews.h"
 
 #include "SaveSettings.h"
@@ -53,7 +54,17 @@ void refuseInfeasible(const TuneOptions& options, const std::string& name, const
     engine::throwInputError(options.scene, "light \"" + name + "\"", std::string(text) + "; no file written");
 }
 
+// --merge: every partial result is read and checked before the scene is written.
+int merge(const TuneOptions& options) {
+    const std::map<int, nlohmann::json> shadows = mergePartialResults(options.merge, options.scene);
+    tools::saveSceneSettings(options.scene, options.out, shadows);
+    std::fprintf(stderr, "shadowmap-tune: merged %zu partial results; wrote %s (%zu light(s) changed)\n",
+                 options.merge.size(), options.out.c_str(), shadows.size());
+    return 0;
+}
+
 int run(const TuneOptions& options, std::unique_ptr<engine::GlContext>& context, engine::PluginHost& host) {
+    if (!options.merge.empty()) return merge(options);
     engine::tuneAllocatorForRendering();
     engine::EngineConfig config = engine::loadEngineConfig(options.config);
     const nlohmann::json configSettings = tools::shadowPluginSettings(config);
@@ -64,7 +75,8 @@ int run(const TuneOptions& options, std::unique_ptr<engine::GlContext>& context,
     engine::Scene scene = engine::loadGltf(options.scene, &warnings);
     for (const std::string& warning : warnings) std::cerr << "warning: " << warning << "\n";
     if (scene.lightInstances.empty()) engine::throwInputError(options.scene, "", "the scene has no lights: nothing to tune");
-    tools::checkSaveTarget(options.scene, options.out);
+    const bool sharded = options.shard.count > 1;
+    if (!sharded) tools::checkSaveTarget(options.scene, options.out);
     const std::vector<engine::FrameCamera> views =
         tuneViews(scene, options.views, options.width, options.height, options.scene);
     std::vector<nlohmann::json> loaded;
@@ -89,7 +101,9 @@ int run(const TuneOptions& options, std::unique_ptr<engine::GlContext>& context,
         lights, [&](const std::vector<Candidate>& perLight) { return sceneMeasurer.measure(perLight); },
         [&](int light, const Candidate& candidate) { return sceneMeasurer.valid(light, candidate); });
     for (int light = 0; light < lights; ++light) measurer.seed(light, sceneMeasurer.current()[light]);
-    const std::vector<LightChoice> choices = searchSettings(measurer, space, goal);
+    std::vector<bool> searched(lights);
+    for (int light = 0; light < lights; ++light) searched[light] = inShard(options.shard, light);
+    const std::vector<LightChoice> choices = searchSettings(measurer, space, goal, searched);
 
     TuneSummary summary{sceneMeasurer.names(), choices, {}, trial.renders(), gridSize(space, kOffsetLatticeSize),
                         static_cast<int>(views.size()), goal};
@@ -97,7 +111,7 @@ int run(const TuneOptions& options, std::unique_ptr<engine::GlContext>& context,
     std::fputs(reportText(summary, space).c_str(), stdout);
     std::fflush(stdout);  // before stderr's lines
     for (int light = 0; light < lights; ++light)
-        if (!goal.feasible(choices[light].chosen))
+        if (searched[light] && !goal.feasible(choices[light].chosen))
             refuseInfeasible(options, sceneMeasurer.names()[light], measurer, light, goal, space);
 
     // Only changed lights are edited: a light whose setting stays keeps its bytes.
@@ -110,7 +124,8 @@ int run(const TuneOptions& options, std::unique_ptr<engine::GlContext>& context,
         for (const auto& [key, value] : choices[light].chosen.setting.items()) shadow[key] = value;
         shadows[index] = tools::savedShadow(configSettings, loaded[index], shadow);
     }
-    tools::saveSceneSettings(options.scene, options.out, shadows);
+    if (sharded) engine::writeFileAtomically(options.out, partialResult(options.scene, options.shard, shadows));
+    else tools::saveSceneSettings(options.scene, options.out, shadows);
     if (!options.report.empty())
         engine::writeFileAtomically(options.report, reportJson(summary, space).dump(2) + "\n");
     std::fprintf(stderr, "shadowmap-tune: wrote %s (%zu light(s) changed)\n", options.out.c_str(), shadows.size());
