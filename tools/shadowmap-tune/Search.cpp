@@ -41,6 +41,10 @@ bool Goal::better(const Measured& a, const Measured& b) const {
     return lowerError(a, b);
 }
 
+Goal Goal::withMargin() const {
+    return kind == Kind::Budget ? Goal{kind, limit * (1.0 - kTimeNoise)} : *this;
+}
+
 bool Goal::clearlyBetter(const Measured& choice, const Measured& current) const {
     if (!feasible(current)) return feasible(choice) || better(choice, current);
     if (!feasible(choice)) return false;
@@ -124,10 +128,11 @@ std::vector<LightChoice> searchSettings(LockstepMeasurer& measurer, const std::v
     }
     measurer.measureLists(fine);
 
-    const auto bestOf = [&](int light, const std::function<bool(const Measured&)>& admit) -> const Measured* {
+    const auto bestOf = [&](int light, const std::function<bool(const Measured&)>& admit,
+                            const Goal& by) -> const Measured* {
         const Measured* best = nullptr;
         for (const Measured& m : measurer.measured(light))
-            if (admit(m) && (!best || goal.better(m, *best))) best = &m;
+            if (admit(m) && (!best || by.better(m, *best))) best = &m;
         return best;
     };
 
@@ -137,7 +142,7 @@ std::vector<LightChoice> searchSettings(LockstepMeasurer& measurer, const std::v
         if (!isSearched(light)) continue;
         const Measured* best = bestOf(light, [](const Measured& m) {
             return usesPolygonOffset(m.setting) && !m.setting.contains("polygon_offset");
-        });
+        }, goal.withMargin());
         if (best) bases[light] = best->setting;
     }
     const std::vector<std::optional<OffsetFitResult>> fits = fitOffsets(measurer, bases);
@@ -152,12 +157,19 @@ std::vector<LightChoice> searchSettings(LockstepMeasurer& measurer, const std::v
         // fit starts at the base's offset, so it errs no more): the others differ from it in
         // time by noise alone.
         const auto& fit = choice.offsetFit;
-        const Measured* best = bestOf(light, [&](const Measured& m) {
+        const auto admit = [&](const Measured& m) {
             if (m.setting == choice.before.setting) return true;
             return !m.setting.contains("polygon_offset") && !(fit && m.setting == fit->base);
-        });
-        // The fit's result with its base's median time (OffsetFit.cpp).
-        if (fit && (!best || goal.better(fit->fitted, *best))) best = &fit->fitted;
+        };
+        // A new setting must fit the budget with the noise to spare; only when none does is
+        // the budget taken at its word.
+        const Measured* best = nullptr;
+        for (const Goal& by : {goal.withMargin(), goal}) {
+            best = bestOf(light, admit, by);
+            // The fit's result with its base's median time (OffsetFit.cpp).
+            if (fit && (!best || by.better(fit->fitted, *best))) best = &fit->fitted;
+            if (best && by.feasible(*best)) break;
+        }
         choice.chosen = best && goal.clearlyBetter(*best, choice.before) ? *best : choice.before;
         choice.changed = !(choice.chosen.setting == choice.before.setting);
     }

@@ -45,6 +45,9 @@ struct Goal {
     // not better, so of equals the first met wins. A feasible result beats an infeasible one; of two
     // infeasible ones the nearer to feasible wins.
     bool better(const Measured& a, const Measured& b) const;
+    // The goal with timing noise taken off a budget: what a new setting must fit, so that a
+    // setting near the budget is not chosen in one run and dropped in the next.
+    Goal withMargin() const;
     // Whether `choice` improves on the light's current setting by more than noise:
     // errors are deterministic (same settings, same pixels) so one pixel of E is the
     // step; times repeat within kTimeNoise (see Search.cpp).
