@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
+#include <cstdio>
 #include <cerrno>
 #include <cstdlib>
 #include <stdexcept>
@@ -48,6 +50,14 @@ double parseNumber(const std::string& flag, const std::string& text, double mini
     return value;
 }
 
+double parsePositiveNumber(const std::string& flag, const std::string& text, double maximum) {
+    const double value = parseNumber(flag, text, 0.0, maximum);
+    if (value <= 0.0)
+        throw std::invalid_argument(flag + ": \"" + text + "\" is not a number in (0, " +
+                                    engine::formatNumber(maximum) + "]");
+    return value;
+}
+
 std::vector<std::string> parseList(const std::string& flag, const std::string& text) {
     std::vector<std::string> items;
     std::size_t start = 0;
@@ -77,6 +87,15 @@ std::vector<int> parseIntegerList(const std::string& flag, const std::string& te
     std::vector<int> values;
     for (const std::string& item : parseList(flag, text)) values.push_back(parseInteger(flag, item, minimum, maximum));
     return values;
+}
+
+Shard parseShard(const std::string& flag, const std::string& text) {
+    const auto slash = text.find('/');
+    if (slash == std::string::npos) throw std::invalid_argument(flag + ": \"" + text + "\" must be K/N");
+    Shard shard;
+    shard.count = parseInteger(flag, text.substr(slash + 1), 1, 10000);
+    shard.index = parseInteger(flag, text.substr(0, slash), 1, shard.count);
+    return shard;
 }
 
 std::pair<std::string, std::string> parseAssignment(const std::string& flag, const std::string& text) {

@@ -17,6 +17,8 @@ int parseInteger(const std::string& flag, const std::string& text, int minimum, 
 // A finite decimal number in [minimum, maximum] ("0.5", "2", "1e-3"): no trailing text, no
 // inf or nan.
 double parseNumber(const std::string& flag, const std::string& text, double minimum, double maximum);
+// The same in (0, maximum].
+double parsePositiveNumber(const std::string& flag, const std::string& text, double maximum);
 
 // A comma-separated list: "a,b,c". One rule for every list flag: an empty item (",a", "a,,b",
 // "a,", "") and an item listed twice are errors naming the flag and the item.
@@ -28,6 +30,13 @@ std::vector<std::string> parseNames(const std::string& flag, const std::string& 
 
 // parseList of integers, each in [minimum, maximum].
 std::vector<int> parseIntegerList(const std::string& flag, const std::string& text, int minimum, int maximum);
+
+// --shard K/N of the sweeping tools (shadowmap-bench, shadowmap-tune): shard K of N, 1-based,
+// 1 <= K <= N <= 10000.
+struct Shard {
+    int index = 1, count = 1;
+};
+Shard parseShard(const std::string& flag, const std::string& text);
 
 // NAME=VALUE with both sides non-empty (the first '=' splits: VALUE may hold more).
 std::pair<std::string, std::string> parseAssignment(const std::string& flag, const std::string& text);

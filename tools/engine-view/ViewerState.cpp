@@ -1,5 +1,7 @@
 #include "ViewerState.h"
 
+#include "SavedShadow.h"
+
 #include "engine/render/Frame.h"
 #include "engine/util/Error.h"
 
@@ -102,35 +104,12 @@ nlohmann::json ViewerState::effective(int index) const {
 }
 
 nlohmann::json ViewerState::savedShadow(int index) const {
-    // The defaults a light without extras.shadow gets: built-in <- config (only the keys the
-    // settings API knows: the config also holds plugin-wide keys such as cache_maps).
-    nlohmann::json configured = nlohmann::json::object();
-    for (const shadowmap::SettingKey& key : shadowmap::settingKeys())
-        if (defaults_.contains(key.name)) configured[key.name] = defaults_[key.name];
-    const shadowmap::ShadowSettings defaults = shadowmap::parseSettings(configured, "engine config", "defaults");
-
     const int light = lights_[index].light;
     const nlohmann::json& extras = scene_.lights[light].extras;
     const nlohmann::json current =
         extras.is_object() && extras.contains("shadow") && extras["shadow"].is_object() ? extras["shadow"]
                                                                                         : nlohmann::json::object();
-    const nlohmann::json& loaded = loaded_[light];
-    nlohmann::json shadow = nlohmann::json::object();
-    for (const auto& [key, value] : current.items()) {
-        // A key the file had stays (it was the author's choice, whatever the config says);
-        // a key the viewer set is written only when it changes what the defaults give, so
-        // a later change of the config still reaches every setting nobody chose here.
-        bool differs = true;
-        try {
-            shadowmap::ShadowSettings withKey = defaults;
-            shadowmap::applySettings(withKey, {{key, value}}, "engine-view", "light");
-            differs = !(withKey == defaults);
-        } catch (const engine::InputError&) {
-            // The plugin refused it when applied; keep it so the file shows what was typed.
-        }
-        if (loaded.contains(key) || differs) shadow[key] = value;
-    }
-    return shadow;
+    return tools::savedShadow(defaults_, loaded_[light], current);
 }
 
 void ViewerState::set(int index, const std::string& key, const nlohmann::json& value) {

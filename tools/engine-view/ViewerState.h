@@ -66,11 +66,9 @@ public:
     // shadowmap::ShadowSettings{}) <- config <- extras.shadow, with the polygon offset the
     // plugin reported when it is not explicit.
     nlohmann::json effective(int index) const;
-    // What --save-settings writes as the light's extras.shadow: the keys the loaded file
-    // already had (near_plane, reversed_z, ..., as they are now), and of the keys set here
-    // (keys, script, --light-set) only those whose value differs from the defaults
-    // (built-in <- config, compared through the settings API), so the saved file leaves
-    // everything nobody chose to the config.
+    // What --save-settings writes as the light's extras.shadow (tools/common/SavedShadow.h,
+    // shared with shadowmap-tune): the keys the loaded file already had, as they are now, and
+    // of the keys set here (keys, script, --light-set) only those that differ from the defaults.
     nlohmann::json savedShadow(int index) const;
 
 private:

@@ -16,6 +16,7 @@
 
 #include "LightOverrides.h"
 #include "SceneLighting.h"
+#include "ShadowPluginConfig.h"
 
 #include "engine/config/EngineConfig.h"
 #include "engine/context/GlContext.h"
@@ -36,15 +37,6 @@
 namespace engine_view {
 namespace {
 
-constexpr const char* kShadowPlugin = "shadowmap_plugin";
-
-// The shadow plugin's settings in the config: the defaults a light's extras.shadow overrides.
-nlohmann::json shadowDefaults(const engine::EngineConfig& config) {
-    for (const engine::PluginConfig& plugin : config.plugins)
-        if (plugin.library == kShadowPlugin) return plugin.settings;
-    return nlohmann::json::object();
-}
-
 // `fileLights`: how many glTF lights the file has; a --key-light added after them is the
 // viewer's, not the file's, and is not saved.
 void saveSettings(const ViewOptions& options, const ViewerState& state, const std::string& path, int fileLights) {
@@ -52,7 +44,7 @@ void saveSettings(const ViewOptions& options, const ViewerState& state, const st
     for (std::size_t i = 0; i < state.lights().size(); ++i)
         if (state.lights()[i].light < fileLights)
             shadows[state.lights()[i].light] = state.savedShadow(static_cast<int>(i));
-    saveSceneSettings(options.scene, path, shadows);
+    tools::saveSceneSettings(options.scene, path, shadows);
 }
 
 // --light-set / --light: resolved to the scene's lights like engine-render's (a name, else a
@@ -92,7 +84,7 @@ int run(const ViewOptions& options, std::unique_ptr<engine::GlContext>& context,
     engine::Scene scene = engine::loadGltf(options.scene, &warnings);
     for (const std::string& warning : warnings) std::cerr << "warning: " << warning << "\n";
     // Before a window opens: a save that cannot succeed is found now, not after the tuning.
-    if (!options.saveSettings.empty()) checkSaveTarget(options.scene, options.saveSettings);
+    if (!options.saveSettings.empty()) tools::checkSaveTarget(options.scene, options.saveSettings);
     const int fileLights = static_cast<int>(scene.lights.size());
     const tools::StagedScene staged = tools::stageScene(scene, options.scene, options.lighting);
     for (const std::string& note : staged.notes) std::printf("engine-view: %s\n", note.c_str());
@@ -110,7 +102,7 @@ int run(const ViewOptions& options, std::unique_ptr<engine::GlContext>& context,
     renderer.setScene(scene);
     std::printf("engine-view: %s on %s\n", options.scene.c_str(), context->rendererString().c_str());
 
-    ViewerState state(scene, shadowDefaults(config));
+    ViewerState state(scene, tools::shadowPluginSettings(config));
     applyLightOptions(options, scene, state, renderer);
     OrbitCamera camera(scene, options.scene, options.camera);
     LoopRequests requests;

@@ -70,6 +70,11 @@ const char* benchUsage() {
         "  [--depth-formats " + joined(knownFormats()) + "] [--filters " + joined(knownFilters()) + "]\n"
         "  [--key-light spot|point|directional|none] [--ground]   (--ground: a ground under each scene\n"
         "                       that receives shadows and casts none)\n"
+        "  [--shard K/N]        run every N-th job only (jobs: scene x setting, numbered in sweep\n"
+        "                       order; shard K runs K-1, K-1+N, ...) and write DIR/shard.json beside\n"
+        "                       the results\n"
+        "  [--merge SHARD_DIR]... with --out DIR: merge shards 1..N of one sweep into DIR (results.csv\n"
+        "                       in the single run's order, summary.md, plot); renders nothing\n"
         "\n"
         "Renders every scene with every combination of the listed settings applied to all of its\n"
         "lights, times each light's shadow passes (median wall time over N frames, each pass closed\n"
@@ -126,11 +131,18 @@ BenchOptions parseBenchOptions(int argc, char** argv) {
         else if (flag == "--key-light") options.keyLight = parseKeyLight(flag, value);
         else if (flag == tools::kGroundFlag) options.ground = true;
         else if (flag == "--out") options.out = value;
+        else if (flag == "--shard") {
+            const tools::Shard shard = tools::parseShard(flag, value);
+            options.shardIndex = shard.index;
+            options.shardCount = shard.count;
+        } else if (flag == "--merge") options.merge.push_back(value);
         else return false;
         return true;
     });
     if (options.help) return options;
     if (options.out.empty()) throw std::invalid_argument("--out is required");
+    if (!options.merge.empty() && options.shardCount > 1)
+        throw std::invalid_argument("--merge and --shard exclude each other: merge after every shard ran");
     if (options.defaultScenes) {
         const std::string scenes = contentDir() + "/scenes/";
         options.scenes = {scenes + "showcase.gltf", kEngineModel};

@@ -30,6 +30,9 @@ struct BenchOptions {
     std::optional<engine::Light::Type> keyLight = engine::Light::Type::Spot;
     bool ground = false;  // --ground: a receiving ground under every scene (tools/common/SceneLighting.h)
     std::string out;
+    // --shard K/N: run every N-th job only (Shards.h); count 1: all of them.
+    int shardIndex = 1, shardCount = 1;
+    std::vector<std::string> merge;  // --merge DIR...: merge these shards' results, render nothing
     bool help = false;
 };
 

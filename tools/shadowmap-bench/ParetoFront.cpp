@@ -1,5 +1,7 @@
 #include "ParetoFront.h"
 
+#include "Pareto.h"
+
 #include <algorithm>
 
 namespace shadowmap_bench {
@@ -17,16 +19,8 @@ std::vector<LightRows> groupByLight(const std::vector<BenchRow>& rows) {
 }
 
 std::vector<BenchRow> paretoFront(const std::vector<BenchRow>& rows) {
-    // Sorted by time (then area error), a row is on the front iff its error is below every
-    // error seen before it: the earlier rows are all at least as fast.
-    std::vector<BenchRow> sorted = rows;
-    std::stable_sort(sorted.begin(), sorted.end(), [](const BenchRow& a, const BenchRow& b) {
-        return a.shadowMs != b.shadowMs ? a.shadowMs < b.shadowMs : a.areaError < b.areaError;
-    });
-    std::vector<BenchRow> front;
-    for (const BenchRow& row : sorted)
-        if (front.empty() || row.areaError < front.back().areaError) front.push_back(row);
-    return front;
+    return tools::paretoFront(rows, [](const BenchRow& row) { return row.shadowMs; },
+                              [](const BenchRow& row) { return row.areaError; });
 }
 
 std::optional<BenchRow> mostAccurateWithin(const std::vector<BenchRow>& rows, double budgetMs) {

@@ -1,13 +1,19 @@
 #pragma once
-// results.csv: one row per scene x light x setting, columns exactly
-//   scene,light,variant,resolution,depth_format,filter,shadow_ms,frame_ms,acne,leak,error,error_noedge
-// times in milliseconds, errors in percent.
+// results.csv: one row per scene x light x setting, columns exactly kResultsCsvHeader;
+// times in milliseconds, errors in percent (area_*: against the area truth, docs/metrics.md).
+// Written here, read back by --merge (Shards.h).
 #include "BenchRow.h"
 
+#include <cstddef>
 #include <string>
 #include <vector>
 
 namespace shadowmap_bench {
+
+inline constexpr const char* kResultsCsvHeader =
+    "scene,light,variant,resolution,depth_format,filter,shadow_ms,frame_ms,acne,leak,error,error_noedge,"
+    "area_acne,area_leak,area_error";
+inline constexpr std::size_t kResultsCsvColumns = 15;
 
 std::string resultsCsv(const std::vector<BenchRow>& rows);
 

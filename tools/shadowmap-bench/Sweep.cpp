@@ -2,7 +2,7 @@
 
 #include "SceneLighting.h"
 
-#include "ShadowEvaluation.h"
+#include "SettingTrial.h"
 
 #include "engine/gltf/GltfLoader.h"
 #include "engine/render/CameraSetup.h"
@@ -19,21 +19,15 @@ namespace shadowmap_bench {
 
 namespace {
 
-// The named camera, else the scene's first, else one framing the scene (as engine-render).
 // Writes the setting into every light's extras.shadow, which the plugin's prepareScene
 // reads over its config defaults; other keys the scene sets (polygon_offset, dimming) stay.
-// A malformed extras.shadow is left alone for the plugin to report.
 void applyToEveryLight(engine::Scene& scene, const ShadowSetting& setting) {
-    for (engine::Light& light : scene.lights) {
-        if (light.extras.is_null()) light.extras = nlohmann::json::object();
-        if (!light.extras.is_object()) continue;
-        nlohmann::json& shadow = light.extras["shadow"];
-        if (!shadow.is_null() && !shadow.is_object()) continue;
-        shadow["variant"] = setting.variant;
-        shadow["resolution"] = setting.resolution;
-        shadow["depth_format"] = setting.depthFormat;
-        shadow["filter"] = setting.filter;
-    }
+    const nlohmann::json shadow = {{"variant", setting.variant},
+                                   {"resolution", setting.resolution},
+                                   {"depth_format", setting.depthFormat},
+                                   {"filter", setting.filter}};
+    for (std::size_t light = 0; light < scene.lights.size(); ++light)
+        evaluation::setLightShadow(scene, static_cast<int>(light), shadow);
 }
 
 BenchRow makeRow(const BenchScene& scene, const ShadowSetting& setting, double frameMs,
@@ -128,28 +122,16 @@ std::vector<BenchRow> runSweep(std::vector<BenchScene>& scenes, const engine::Re
     for (const BenchScene& scene : scenes) total += scene.shadowedLights * static_cast<int>(scene.settings.size());
 
     engine::Renderer renderer(rendererConfig, plugins);
-    engine::FrameRequest warmup;
     std::vector<BenchRow> rows;
     for (BenchScene& scene : scenes) {
-        // The evaluator builds the scene's Embree BVH once; settings change no geometry.
-        evaluation::ShadowEvaluator evaluator(renderer, scene.scene);
-        evaluator.setAreaTruth(true);
-        for (std::size_t index = 0; index < scene.settings.size(); ++index) {
-            const ShadowSetting& setting = scene.settings[index];
+        if (scene.settings.empty()) continue;  // another shard's
+        evaluation::SettingTrial trial(renderer, scene.scene, {scene.camera}, frames);
+        trial.setAreaTruth(true);
+        for (const ShadowSetting& setting : scene.settings) {
             applyToEveryLight(scene.scene, setting);
-            // The first setting comes with the scene's upload; after it only settings change:
-            // the plugin re-reads every light's extras.shadow and re-renders the maps whose
-            // settings changed, and the geometry stays on the GPU.
-            if (index == 0) renderer.setScene(scene.scene);
-            else renderer.reloadSettings();
-            // Untimed until nothing new compiles: llvmpipe compiles shaders at their first
-            // draw, and new maps are allocated. Four frames past the first are more than the
-            // two warm-up ever needs (the shade cache's fetching programs come in the second).
-            warmup.camera = scene.camera;
-            renderer.warmUp(warmup, 1, 5);
-            const evaluation::ViewResult view = evaluator.evaluate(scene.camera, frames);
-            for (const evaluation::LightResult& light : view.lights) {
-                rows.push_back(makeRow(scene, setting, view.frameMs, light));
+            const evaluation::TrialResult measured = trial.measure();
+            for (const evaluation::LightResult& light : measured.lights) {
+                rows.push_back(makeRow(scene, setting, measured.frameMs, light));
                 onRow(rows.back(), static_cast<int>(rows.size()), total);
             }
         }

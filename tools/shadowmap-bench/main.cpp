@@ -1,9 +1,11 @@
 // shadowmap-bench: run time against error of the shadow plugin's settings, per light,
 // over one or more scenes. Writes results.csv, summary.md and a time/error plot.
 #include "ToolMain.h"
+#include "ShadowPluginConfig.h"
 #include "BenchOptions.h"
 #include "GnuplotRunner.h"
 #include "ResultsCsv.h"
+#include "Shards.h"
 #include "SummaryReport.h"
 #include "Sweep.h"
 #include "TimeErrorPlot.h"
@@ -24,18 +26,6 @@
 
 namespace shadowmap_bench {
 namespace {
-
-constexpr const char* kShadowPlugin = "shadowmap_plugin";
-
-// Cached maps render once and later frames would time nothing: every frame must re-render.
-void disableMapCaching(engine::EngineConfig& config, const std::string& configPath) {
-    for (engine::PluginConfig& plugin : config.plugins)
-        if (plugin.library == kShadowPlugin) {
-            plugin.settings["cache_maps"] = false;
-            return;
-        }
-    engine::throwInputError(configPath, "plugins", "loads no " + std::string(kShadowPlugin) + ": nothing to measure");
-}
 
 std::string cpuModel() {
     std::ifstream cpuinfo("/proc/cpuinfo");
@@ -66,18 +56,44 @@ void writePlot(const std::filesystem::path& out, const std::vector<BenchRow>& ro
 // `context` and `host` live in main(), outside the try block that reports errors: an
 // exception thrown by plugin code must be read before the plugin is unloaded, and the
 // plugin's GL objects must be deleted while the context still exists (host first).
+void writeOutputs(const std::filesystem::path& out, const std::vector<BenchRow>& rows, const SweepDescription& sweep) {
+    engine::writeFileAtomically(out / "results.csv", resultsCsv(rows));
+    engine::writeFileAtomically(out / "summary.md", summaryMarkdown(rows, sweep));
+    writePlot(out, rows);
+}
+
+std::filesystem::path createOutputFolder(const std::string& folder) {
+    std::error_code error;
+    std::filesystem::create_directories(folder, error);
+    if (error) engine::throwInputError(folder, "", "cannot create the output folder: " + error.message());
+    return folder;
+}
+
+// --merge: every shard is read and checked before anything is written.
+int merge(const BenchOptions& options) {
+    std::vector<ShardResult> shards;
+    for (const std::string& dir : options.merge) shards.push_back(readShard(dir));
+    SweepDescription sweep;
+    const std::vector<BenchRow> rows = mergeShards(shards, sweep);
+    const std::filesystem::path out = createOutputFolder(options.out);
+    writeOutputs(out, rows, sweep);
+    std::fprintf(stderr, "shadowmap-bench: merged %zu shards, %zu rows; wrote %s/results.csv, summary.md, time_vs_error.gp/.png\n",
+                 shards.size(), rows.size(), options.out.c_str());
+    return 0;
+}
+
 int run(const BenchOptions& options, std::unique_ptr<engine::GlContext>& context,
         engine::PluginHost& host) {
+    if (!options.merge.empty()) return merge(options);
     const auto start = std::chrono::steady_clock::now();
     engine::tuneAllocatorForRendering();
     engine::EngineConfig config = engine::loadEngineConfig(options.config);
-    disableMapCaching(config, options.config);
+    tools::disableShadowMapCaching(config, options.config);
     // Scenes and the output folder are checked before the first (slow) render.
     std::vector<BenchScene> scenes = loadBenchScenes(options);
-    const std::filesystem::path out = options.out;
-    std::error_code error;
-    std::filesystem::create_directories(out, error);
-    if (error) engine::throwInputError(options.out, "", "cannot create the output folder: " + error.message());
+    const Shard shard{options.shardIndex, options.shardCount};
+    keepShardJobs(scenes, shard);
+    const std::filesystem::path out = createOutputFolder(options.out);
 
     context = engine::createEglContext();
     context->makeCurrent();
@@ -89,9 +105,9 @@ int run(const BenchOptions& options, std::unique_ptr<engine::GlContext>& context
                            context->versionString(), cpuModel(),
                            static_cast<int>(std::thread::hardware_concurrency()),
                            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()};
-    engine::writeFileAtomically(out / "results.csv", resultsCsv(rows));
-    engine::writeFileAtomically(out / "summary.md", summaryMarkdown(rows, sweep));
-    writePlot(out, rows);
+    writeOutputs(out, rows, sweep);
+    // Written last: a folder with shard.json is a finished shard.
+    if (shard.count > 1) engine::writeFileAtomically(out / "shard.json", shardManifest(shard, sweep));
     std::fprintf(stderr, "shadowmap-bench: %zu rows in %.0f s; wrote %s/results.csv, summary.md, time_vs_error.gp/.png\n",
                  rows.size(), sweep.seconds, options.out.c_str());
     return 0;

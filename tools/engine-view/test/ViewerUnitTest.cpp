@@ -23,6 +23,12 @@
 
 namespace engine_view {
 
+// The settings editor lives in tools/common since shadowmap-tune writes through it too.
+using tools::JsonSpan;
+using tools::replaceLightShadows;
+using tools::saveSceneSettings;
+using tools::scanJson;
+
 namespace {
 
 const char* const kGltf = R"({

@@ -1,6 +1,7 @@
 #pragma once
-// --save-settings: writes the scene back with each light's extras.shadow replaced by the
-// settings chosen in the viewer, so engine-render and the bench use what the author picked.
+// The one editor of a scene file's per-light settings: engine-view's --save-settings and
+// shadowmap-tune --out write the scene back with each light's extras.shadow replaced by the
+// settings chosen (by eye or by measurement), so engine-render and the bench use them.
 //
 // Every other byte of the file stays as loaded: the JSON is edited in place (JsonSpans.h),
 // only the "shadow" member of each edited light's "extras" is replaced (or inserted, with
@@ -19,12 +20,13 @@
 #include <map>
 #include <string>
 
-namespace engine_view {
+namespace tools {
 
 // Throws the InputError saveSceneSettings would throw before writing: `out` has the other
 // container, is a directory, its folder is missing or not writable, or the scene's external
 // files would not resolve from it. engine-view calls it at start, so a bad --save-settings
-// is one clear error then, not a surprise after an hour of tuning.
+// is one clear error then, not a surprise after an hour of tuning (shadowmap-tune likewise,
+// before its first render).
 void checkSaveTarget(const std::filesystem::path& scene, const std::filesystem::path& out);
 
 // `shadows`: glTF light index (KHR_lights_punctual.lights[i]) -> its new extras.shadow.
@@ -37,4 +39,4 @@ void saveSceneSettings(const std::filesystem::path& scene, const std::filesystem
 std::string replaceLightShadows(const std::string& json, const std::map<int, nlohmann::json>& shadows,
                                 const std::string& fileName);
 
-} // namespace engine_view
+} // namespace tools

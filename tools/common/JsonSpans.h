@@ -1,6 +1,6 @@
 #pragma once
 // Where each value of a JSON text lies, byte by byte, so a file can be edited in place:
-// SaveSettings replaces the lights' extras.shadow and leaves every other byte as it was
+// SaveSettings (engine-view, shadowmap-tune) replaces the lights' extras.shadow and leaves every other byte as it was
 // (nlohmann::json, like other JSON libraries, re-formats a whole document when it writes
 // it). Only the structure is recorded: object members (keys decoded), array items and each
 // value's [begin, end) offsets; strings and numbers are skipped, not decoded.
@@ -10,7 +10,7 @@
 #include <utility>
 #include <vector>
 
-namespace engine_view {
+namespace tools {
 
 struct JsonSpan {
     std::size_t begin = 0, end = 0;  // the value's text is [begin, end)
@@ -25,4 +25,4 @@ struct JsonSpan {
 // nlohmann first, so that is a bug).
 JsonSpan scanJson(std::string_view text);
 
-} // namespace engine_view
+} // namespace tools

@@ -14,7 +14,7 @@
 
 #include <unistd.h>
 
-namespace engine_view {
+namespace tools {
 
 namespace {
 
@@ -188,4 +188,4 @@ void saveSceneSettings(const std::filesystem::path& scene, const std::filesystem
     engine::writeFileAtomically(out, result);
 }
 
-} // namespace engine_view
+} // namespace tools

@@ -5,7 +5,7 @@
 #include <cstring>
 #include <stdexcept>
 
-namespace engine_view {
+namespace tools {
 
 namespace {
 
@@ -106,4 +106,4 @@ const JsonSpan* JsonSpan::member(const std::string& key) const {
 
 JsonSpan scanJson(std::string_view text) { return Scanner(text).document(); }
 
-} // namespace engine_view
+} // namespace tools

@@ -1,0 +1,65 @@
+#pragma once
+// One trial of per-light shadow settings, as shadowmap-bench and shadowmap-tune run it:
+// the caller edits lights' extras.shadow (setLightShadow), the trial makes the plugin re-read
+// them, renders each view untimed once (llvmpipe compiles shaders at their first draw, new
+// maps are allocated), then times `frames` frames per view and compares every shadowed
+// light with the ray-traced truth (ShadowEvaluator). Several views pool into one figure per
+// light, so a setting is not fitted to one picture.
+#include "ShadowEvaluation.h"
+
+#include "engine/render/Frame.h"
+#include "engine/render/Renderer.h"
+#include "engine/scene/Scene.h"
+
+#include <nlohmann/json.hpp>
+
+#include <string>
+#include <vector>
+
+namespace evaluation {
+
+// Sets light `light`'s (an index into scene.lights) extras.shadow to `shadow`'s keys over
+// what it had: every key of `owned` is dropped first, then `shadow`'s keys are written, so
+// a key the caller owns and leaves out of `shadow` goes back to its default. Keys nobody
+// owns (dimming, reversed_z, ...) stay. A malformed extras or extras.shadow (not an object)
+// is left alone for the plugin to report.
+void setLightShadow(engine::Scene& scene, int light, const nlohmann::json& shadow,
+                    const std::vector<std::string>& owned = {});
+
+// The errors of several views as one: each view's acne, leak and error weighted by the
+// size of its evaluation set (the figure one big image of all views would give).
+truth::ShadowErrors pooledErrors(const std::vector<truth::ShadowErrors>& views);
+
+struct TrialResult {
+    double frameMs = 0.0;             // median over the views' median frame times
+    std::vector<LightResult> lights;  // per shadowed light instance; errors pooled over views,
+                                      // shadowMs the median over views
+};
+
+class SettingTrial {
+public:
+    // `scene` must outlive the trial and is what the renderer draws; the Embree scene is
+    // built once here (settings change no geometry). A GL context must be current.
+    SettingTrial(engine::Renderer& renderer, const engine::Scene& scene, std::vector<engine::FrameCamera> views,
+                 int frames);
+
+    // Measures the scene's lights with their extras.shadow as they are now. The first call
+    // uploads the scene; later calls only make the plugin re-read the settings (geometry
+    // stays on the GPU).
+    TrialResult measure();
+
+    // Also score every light against the area truth (ShadowEvaluator::setAreaTruth).
+    void setAreaTruth(bool enabled) { evaluator_.setAreaTruth(enabled); }
+
+    int renders() const { return renders_; }  // measure() calls so far
+
+private:
+    engine::Renderer& renderer_;
+    const engine::Scene& scene_;
+    std::vector<engine::FrameCamera> views_;
+    int frames_;
+    ShadowEvaluator evaluator_;
+    int renders_ = 0;
+};
+
+} // namespace evaluation

@@ -1,0 +1,35 @@
+#!/usr/bin/env bash
+# Two shards merged equal a single run: the same rows in the same order with the same
+# errors (errors are deterministic: the same settings render the same pixels); only the
+# times (columns 7-8, wall clock) differ. Then a merge missing a shard is refused.
+# Usage: check_shards_merge.sh BENCH_BINARY CONTENT_DIR
+set -euo pipefail
+bench=$1 content=$2
+out=$(mktemp -d)
+trap 'rm -rf "$out"' EXIT
+
+sweep() {
+  "$bench" --config "$content/engine.json" --scene "$content/scenes/showcase.gltf" \
+    --variants standard,woo --resolutions 256,512 --depth-formats d24 --filters pcf \
+    --width 64 --height 48 --frames 1 "$@" 2> /dev/null
+}
+sweep --out "$out/single"
+sweep --shard 1/2 --out "$out/shard1"
+sweep --shard 2/2 --out "$out/shard2"
+[[ -s $out/shard1/shard.json && -s $out/shard2/shard.json ]] || { echo "no shard.json written"; exit 1; }
+# Each shard ran half of the 4 jobs (3 lights each).
+for k in 1 2; do
+  rows=$(tail -n +2 "$out/shard$k/results.csv" | wc -l)
+  [[ $rows -eq 6 ]] || { echo "shard $k: expected 6 rows, got $rows"; exit 1; }
+done
+# Merged in either order of the folders.
+"$bench" --merge "$out/shard2" --merge "$out/shard1" --out "$out/merged"
+without_times() { cut -d, -f1-6,9- "$1"; }
+diff <(without_times "$out/single/results.csv") <(without_times "$out/merged/results.csv") \
+  || { echo "the merged shards differ from the single run"; exit 1; }
+[[ -s $out/merged/summary.md ]] || { echo "no merged summary.md"; exit 1; }
+
+if "$bench" --merge "$out/shard1" --out "$out/bad" 2> "$out/bad.log"; then echo "merged an incomplete sweep"; exit 1; fi
+grep -q 'shard 2/2 missing' "$out/bad.log" || { echo "unclear refusal: $(cat "$out/bad.log")"; exit 1; }
+[[ ! -e $out/bad ]] || { echo "wrote output for an incomplete sweep"; exit 1; }
+echo "ok: two shards merged equal the single run"

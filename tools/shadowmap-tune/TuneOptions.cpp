@@ -1,0 +1,116 @@
+#include "TuneOptions.h"
+
+#include "CommandLine.h"
+#include "OptionValues.h"
+
+#include "shadowmap/ShadowSettings.h"
+
+#include <stdexcept>
+
+namespace shadowmap_tune {
+
+namespace {
+
+// Small views: the truth is per pixel and the tuner renders each setting once per view;
+// 320x240 gives an evaluation set of tens of thousands of pixels per light, so one pixel is
+// about 0.001-0.005 % of error, finer than the settings' differences.
+constexpr int kDefaultWidth = 320, kDefaultHeight = 240, kDefaultFrames = 3;
+constexpr int kDefaultOrbitViews = 4;
+
+std::vector<std::string> knownVariants() {
+    std::vector<std::string> variants = shadowmap::settingKey("variant").choices;
+    std::erase(variants, shadowmap::toString(shadowmap::Variant::None));
+    return variants;
+}
+
+} // namespace
+
+ViewSpec parseViewSpec(const std::string& flag, const std::string& text) {
+    ViewSpec spec;
+    spec.given = true;
+    if (text == "cameras") return spec;
+    if (text.rfind("orbit:", 0) == 0) {
+        spec.kind = ViewSpec::Kind::Orbit;
+        spec.count = tools::parseInteger(flag, text.substr(6), 1, 64);
+        return spec;
+    }
+    throw std::invalid_argument(flag + ": unknown view spec \"" + text + "\" (cameras or orbit:N)");
+}
+
+const char* tuneUsage() {
+    static const std::string usage =
+        "usage: shadowmap-tune --scene SCENE.gltf|.glb (--budget-ms B | --max-error E) --out TUNED.gltf|.glb\n"
+        "  [--views cameras|orbit:N] [--config CONFIG.json] [--width W --height H] [--frames N]\n"
+        "  [--variants standard,woo,backface] [--resolutions 512,1024,2048]\n"
+        "  [--depth-formats d16,d24,d32f] [--filters nearest,pcf] [--report REPORT.json]\n"
+        "  [--shard K/N]   search every N-th light only and write --out as a partial result (JSON)\n"
+        "usage: shadowmap-tune --scene SCENE --merge PART.json... --out TUNED.gltf|.glb\n"
+        "                  write the scene from shards 1..N's partial results (renders nothing)\n"
+        "\n"
+        "Chooses each light's shadow setting by measurement: the most accurate within B ms of\n"
+        "shadow passes per frame (--budget-ms), or the cheapest whose error is at most E percent\n"
+        "(--max-error), over variant x resolution x depth format x filter, with the polygon offset\n"
+        "fitted per light (acne + leak against ray-traced truth). Error is pooled over the views:\n"
+        "every glTF camera, or N views around the scene. Writes the scene with each changed\n"
+        "light's extras.shadow (every other byte kept; the file keeps its container) and prints\n"
+        "per light: old -> new setting, time and error before and after, the fitted offset beside\n"
+        "the default's, and how many renders the search took against the full grid.\n"
+        "\n"
+        "Defaults: --views cameras (orbit:4 for a scene without cameras) --width 320 --height 240\n"
+        "  --frames 3, every variant but none, resolutions 512,1024,2048, every format and filter.\n";
+    return usage.c_str();
+}
+
+TuneOptions parseTuneOptions(int argc, char** argv) {
+    TuneOptions options;
+    options.width = kDefaultWidth;
+    options.height = kDefaultHeight;
+    options.frames = kDefaultFrames;
+    options.views.count = kDefaultOrbitViews;
+    options.limits = {knownVariants(), shadowmap::settingKey("depth_format").choices,
+                      shadowmap::settingKey("filter").choices, {512, 1024, 2048}};
+    bool maxError = false;
+    const shadowmap::SettingKey& resolution = shadowmap::settingKey("resolution");
+    options.help = tools::parseFlags(argc, argv, [&](const std::string& flag, const std::string& value) {
+        if (flag == "--config") options.config = value;
+        else if (flag == "--scene") options.scene = value;
+        else if (flag == "--out") options.out = value;
+        else if (flag == "--report") options.report = value;
+        else if (flag == "--budget-ms") {
+            options.budget = true;
+            options.limit = tools::parsePositiveNumber(flag, value, 1e6);
+        } else if (flag == "--max-error") {
+            maxError = true;
+            options.limit = tools::parsePositiveNumber(flag, value, 100.0);
+        } else if (flag == "--shard") options.shard = tools::parseShard(flag, value);
+        else if (flag == "--merge") options.merge.push_back(value);
+        else if (flag == "--views") options.views = parseViewSpec(flag, value);
+        else if (flag == "--width") options.width = tools::parseInteger(flag, value, 1, 16384);
+        else if (flag == "--height") options.height = tools::parseInteger(flag, value, 1, 16384);
+        else if (flag == "--frames") options.frames = tools::parseInteger(flag, value, 1, 10000);
+        else if (flag == "--variants") options.limits.variants = tools::parseNames(flag, value, knownVariants());
+        else if (flag == "--resolutions")
+            options.limits.resolutions = tools::parseIntegerList(flag, value, static_cast<int>(*resolution.minimum),
+                                                                 static_cast<int>(*resolution.maximum));
+        else if (flag == "--depth-formats")
+            options.limits.depthFormats = tools::parseNames(flag, value, shadowmap::settingKey("depth_format").choices);
+        else if (flag == "--filters")
+            options.limits.filters = tools::parseNames(flag, value, shadowmap::settingKey("filter").choices);
+        else return false;
+        return true;
+    });
+    if (options.help) return options;
+    if (options.scene.empty()) throw std::invalid_argument("--scene is required");
+    if (options.out.empty()) throw std::invalid_argument("--out is required");
+    if (!options.merge.empty()) {
+        if (options.shard.count > 1) throw std::invalid_argument("--merge and --shard exclude each other");
+        return options;  // the goal and the views were the shards'
+    }
+    if (options.budget == maxError)
+        throw std::invalid_argument(options.budget ? "--budget-ms and --max-error exclude each other: give one"
+                                                   : "give --budget-ms B or --max-error E");
+    if (options.config.empty()) options.config = tools::defaultConfigPath();
+    return options;
+}
+
+} // namespace shadowmap_tune

@@ -1,0 +1,27 @@
+#pragma once
+// What shadowmap-tune tells: per light, old -> new setting with time and error before and
+// after, the fitted polygon offset beside the default's; the renders the search took against
+// the full grid. As lines for people and as JSON (--report) for scripts and tests.
+#include "Search.h"
+
+#include <nlohmann/json.hpp>
+
+#include <string>
+#include <vector>
+
+namespace shadowmap_tune {
+
+struct TuneSummary {
+    std::vector<std::string> names;       // per tuned light
+    std::vector<LightChoice> choices;     // per tuned light
+    std::vector<std::vector<Measured>> measured;  // per tuned light: every setting measured
+    int renders = 0;                      // trials run, the first (current settings) included
+    long gridPerLight = 0;                // settings in the full grid, per light
+    int views = 0;
+    Goal goal;
+};
+
+std::string reportText(const TuneSummary& summary, const std::vector<SettingDimension>& space);
+nlohmann::json reportJson(const TuneSummary& summary, const std::vector<SettingDimension>& space);
+
+} // namespace shadowmap_tune

@@ -1,0 +1,143 @@
+// shadowmap-tune: chooses each light's shadow setting by measuring time and error against
+// ray-traced truth, and writes it into the scene's extras.shadow.
+#include "ToolMain.h"
+#include "OffsetFit.h"
+#include "SceneMeasurer.h"
+#include "Search.h"
+#include "SearchSpace.h"
+#include "TuneOptions.h"
+#include "TuneReport.h"
+#include "TuneShards.h"
+#include "TuneViews.h"
+
+#include "SaveSettings.h"
+#include "SavedShadow.h"
+#include "SettingTrial.h"
+#include "ShadowPluginConfig.h"
+
+#include "engine/config/EngineConfig.h"
+#include "engine/context/GlContext.h"
+#include "engine/gltf/GltfLoader.h"
+#include "engine/plugin/PluginHost.h"
+#include "engine/render/Renderer.h"
+#include "engine/util/Error.h"
+#include "engine/util/OutputFile.h"
+#include "engine/util/ProcessSetup.h"
+
+#include <cstdio>
+#include <iostream>
+#include <map>
+
+namespace shadowmap_tune {
+namespace {
+
+nlohmann::json loadedShadow(const engine::Light& light) {
+    const nlohmann::json& extras = light.extras;
+    if (extras.is_object() && extras.contains("shadow") && extras["shadow"].is_object()) return extras["shadow"];
+    return nlohmann::json::object();
+}
+
+// A light no measured setting satisfies: one line naming the light, the goal and the
+// nearest miss.
+void refuseInfeasible(const TuneOptions& options, const std::string& name, const LockstepMeasurer& measurer, int light,
+                      const Goal& goal, const std::vector<SettingDimension>& space) {
+    const Measured* nearest = nullptr;
+    for (const Measured& m : measurer.measured(light))
+        if (!nearest || goal.better(m, *nearest)) nearest = &m;
+    char text[256];
+    if (goal.kind == Goal::Kind::Budget)
+        std::snprintf(text, sizeof text, "no setting fits --budget-ms %g (the fastest measured, %s, takes %.2f ms)",
+                      goal.limit, describe(nearest->setting, space).c_str(), nearest->ms);
+    else
+        std::snprintf(text, sizeof text, "no setting reaches --max-error %g (the most accurate measured, %s, errs %.3f%%)",
+                      goal.limit, describe(nearest->setting, space).c_str(), nearest->error);
+    engine::throwInputError(options.scene, "light \"" + name + "\"", std::string(text) + "; no file written");
+}
+
+// --merge: every partial result is read and checked before the scene is written.
+int merge(const TuneOptions& options) {
+    const std::map<int, nlohmann::json> shadows = mergePartialResults(options.merge, options.scene);
+    tools::saveSceneSettings(options.scene, options.out, shadows);
+    std::fprintf(stderr, "shadowmap-tune: merged %zu partial results; wrote %s (%zu light(s) changed)\n",
+                 options.merge.size(), options.out.c_str(), shadows.size());
+    return 0;
+}
+
+int run(const TuneOptions& options, std::unique_ptr<engine::GlContext>& context, engine::PluginHost& host) {
+    if (!options.merge.empty()) return merge(options);
+    engine::tuneAllocatorForRendering();
+    engine::EngineConfig config = engine::loadEngineConfig(options.config);
+    const nlohmann::json configSettings = tools::shadowPluginSettings(config);
+    tools::disableShadowMapCaching(config, options.config);
+
+    // Every check that needs no render comes first: bad input fails before minutes of work.
+    std::vector<std::string> warnings;
+    engine::Scene scene = engine::loadGltf(options.scene, &warnings);
+    for (const std::string& warning : warnings) std::cerr << "warning: " << warning << "\n";
+    if (scene.lightInstances.empty()) engine::throwInputError(options.scene, "", "the scene has no lights: nothing to tune");
+    const bool sharded = options.shard.count > 1;
+    if (!sharded) tools::checkSaveTarget(options.scene, options.out);
+    const std::vector<engine::FrameCamera> views =
+        tuneViews(scene, options.views, options.width, options.height, options.scene);
+    std::vector<nlohmann::json> loaded;
+    for (const engine::Light& light : scene.lights) loaded.push_back(loadedShadow(light));
+
+    const std::vector<SettingDimension> space = searchSpace(options.limits);
+    const Goal goal{options.budget ? Goal::Kind::Budget : Goal::Kind::MaxError, options.limit};
+
+    context = engine::createEglContext();
+    context->makeCurrent();
+    host.loadAll(config);
+    engine::Renderer renderer(config.renderer, host.renderPlugins());
+    evaluation::SettingTrial trial(renderer, scene, views, options.frames);
+    SceneMeasurer sceneMeasurer(scene, options.scene, trial, ownedKeys(space), configSettings);
+    sceneMeasurer.measureCurrent();
+
+    if (!sceneMeasurer.onlyOpenCasters().empty())
+        std::fprintf(stderr, "shadowmap-tune: backface left out: no caster is closed (e.g. \"%s\")\n",
+                     sceneMeasurer.onlyOpenCasters().c_str());
+    const int lights = static_cast<int>(sceneMeasurer.lights().size());
+    LockstepMeasurer measurer(
+        lights, [&](const std::vector<Candidate>& perLight) { return sceneMeasurer.measure(perLight); },
+        [&](int light, const Candidate& candidate) { return sceneMeasurer.valid(light, candidate); });
+    for (int light = 0; light < lights; ++light) measurer.seed(light, sceneMeasurer.current()[light]);
+    std::vector<bool> searched(lights);
+    for (int light = 0; light < lights; ++light) searched[light] = inShard(options.shard, light);
+    const std::vector<LightChoice> choices = searchSettings(measurer, space, goal, searched);
+
+    TuneSummary summary{sceneMeasurer.names(), choices, {}, trial.renders(), gridSize(space, kOffsetLatticeSize),
+                        static_cast<int>(views.size()), goal};
+    for (int light = 0; light < lights; ++light) summary.measured.push_back(measurer.measured(light));
+    std::fputs(reportText(summary, space).c_str(), stdout);
+    std::fflush(stdout);  // before stderr's lines
+    for (int light = 0; light < lights; ++light)
+        if (searched[light] && !goal.feasible(choices[light].chosen))
+            refuseInfeasible(options, sceneMeasurer.names()[light], measurer, light, goal, space);
+
+    // Only changed lights are edited: a light whose setting stays keeps its bytes.
+    std::map<int, nlohmann::json> shadows;
+    for (int light = 0; light < lights; ++light) {
+        if (!choices[light].changed) continue;
+        const int index = sceneMeasurer.lights()[light];
+        nlohmann::json shadow = loaded[index];
+        for (const std::string& key : ownedKeys(space)) shadow.erase(key);
+        for (const auto& [key, value] : choices[light].chosen.setting.items()) shadow[key] = value;
+        shadows[index] = tools::savedShadow(configSettings, loaded[index], shadow);
+    }
+    if (sharded) engine::writeFileAtomically(options.out, partialResult(options.scene, options.shard, shadows));
+    else tools::saveSceneSettings(options.scene, options.out, shadows);
+    if (!options.report.empty())
+        engine::writeFileAtomically(options.report, reportJson(summary, space).dump(2) + "\n");
+    std::fprintf(stderr, "shadowmap-tune: wrote %s (%zu light(s) changed)\n", options.out.c_str(), shadows.size());
+    return 0;
+}
+
+} // namespace
+} // namespace shadowmap_tune
+
+int main(int argc, char** argv) {
+    return tools::toolMain("shadowmap-tune", shadowmap_tune::tuneUsage(), argc, argv, shadowmap_tune::parseTuneOptions,
+                           [](const auto& options, tools::ToolSession& session) {
+                               return shadowmap_tune::run(options, session.context, session.host);
+                           });
+}

@@ -1,0 +1,187 @@
+// shadowmap-tune's search on made-up costs, no GL: it finds what the full grid would, in
+// fewer renders; lockstep renders as many times as the longest list; the offset fit finds
+// a known minimum; the current setting stays unless beaten by more than noise.
+#include "OffsetFit.h"
+#include "Search.h"
+#include "SearchSpace.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+#include <set>
+
+namespace shadowmap_tune {
+namespace {
+
+SearchLimits fullLimits() {
+    return {{"standard", "woo", "backface"}, {"d16", "d24", "d32f"}, {"nearest", "pcf"}, {512, 1024, 2048, 4096}};
+}
+
+// A light whose costs are known in closed form: time grows with texels and with the
+// variant's passes; error falls with resolution and depends on variant, format and filter.
+// `offsetOptimum`: the polygon offset at which standard's error is lowest.
+struct FakeLight {
+    double variantError[3];  // standard, woo, backface at 512 texels
+    std::array<double, 2> offsetOptimum{1.0, 4.0};
+
+    Measured measure(const Candidate& c) const {
+        const std::string variant = c["variant"];
+        const int v = variant == "standard" ? 0 : variant == "woo" ? 1 : 2;
+        const double resolution = c["resolution"].get<int>();
+        const double texels = resolution * resolution / (512.0 * 512.0);
+        Measured m;
+        m.setting = c;
+        m.ms = texels * (v == 1 ? 2.0 : 1.0) * (c["filter"] == "pcf" ? 1.1 : 1.0) *
+               (c["depth_format"] == "d32f" ? 1.2 : c["depth_format"] == "d24" ? 1.05 : 1.0);
+        double error = variantError[v] * 512.0 / resolution;
+        if (c["filter"] == "pcf") error *= 0.8;
+        if (c["depth_format"] == "d16") error *= 1.5;
+        if (v == 0) {
+            // Acne below the optimum offset, leak above it (log scale, as the lattice).
+            const auto offset = c.contains("polygon_offset") ? std::array<double, 2>{c["polygon_offset"][0], c["polygon_offset"][1]}
+                                                             : defaultOffset(c);
+            const auto distance = [](double a, double b) { return std::abs(std::log2(a + 0.5) - std::log2(b + 0.5)); };
+            error += 0.2 * (distance(offset[0], offsetOptimum[0]) + distance(offset[1], offsetOptimum[1]));
+        }
+        m.error = error;
+        m.evaluated = 100000;
+        return m;
+    }
+};
+
+struct FakeScene {
+    std::vector<FakeLight> lights;
+
+    LockstepMeasurer measurer(const std::vector<Candidate>& current) {
+        LockstepMeasurer measurer(
+            static_cast<int>(lights.size()),
+            [this](const std::vector<Candidate>& perLight) {
+                std::vector<std::optional<Measured>> out;
+                for (std::size_t i = 0; i < perLight.size(); ++i) {
+                    out.push_back(lights[i].measure(perLight[i]));
+                }
+                return out;
+            },
+            [](int, const Candidate&) { return true; });
+        for (std::size_t i = 0; i < lights.size(); ++i) measurer.seed(static_cast<int>(i), lights[i].measure(current[i]));
+        return measurer;
+    }
+};
+
+const Candidate kDefault = {{"variant", "standard"}, {"resolution", 2048}, {"depth_format", "d24"}, {"filter", "pcf"}};
+
+// The exhaustive answer over the grid without offsets: what the search must find.
+Measured gridBest(const FakeLight& light, const std::vector<SettingDimension>& space, const Goal& goal) {
+    std::optional<Measured> best;
+    for (const Candidate& coarse : coarseCandidates(space)) {
+        std::vector<Candidate> all = refinedCandidates(space, coarse);
+        all.push_back(coarse);
+        for (const Candidate& c : all) {
+            const Measured m = light.measure(c);
+            if (!best || goal.better(m, *best)) best = m;
+        }
+    }
+    return *best;
+}
+
+TEST(TuneSearch, FindsTheGridsBestWithinTheBudgetInFarFewerRenders) {
+    const std::vector<SettingDimension> space = searchSpace(fullLimits());
+    // Light 0: woo is the accurate one; light 1: backface.
+    FakeScene scene{{FakeLight{{0.9, 0.3, 0.6}}, FakeLight{{0.9, 0.7, 0.2}}}};
+    for (const double budget : {2.5, 5.0, 9.0}) {
+        const Goal goal{Goal::Kind::Budget, budget};
+        LockstepMeasurer measurer = scene.measurer({kDefault, kDefault});
+        const std::vector<LightChoice> choices = searchSettings(measurer, space, goal);
+        for (std::size_t i = 0; i < scene.lights.size(); ++i) {
+            // A new setting must fit the budget with the timing noise to spare.
+            const Measured best = gridBest(scene.lights[i], space, goal.withMargin());
+            SCOPED_TRACE("light " + std::to_string(i) + ", budget " + std::to_string(budget));
+            // Not offset-fitted (standard never wins here), so the grid's best exactly.
+            EXPECT_EQ(choices[i].chosen.setting.dump(), best.setting.dump());
+        }
+        // The grid per light is 3*3*2*4 = 72 settings without offsets (the coarse pass alone
+        // is 18), 1728 with the offset lattice; the search stays under the first.
+        EXPECT_LT(measurer.renders(), gridSize(space, 1));
+        EXPECT_LT(measurer.renders() * 10, gridSize(space, kOffsetLatticeSize));
+        // Nothing is measured twice for a light (a light riding along is not measured again).
+        for (std::size_t i = 0; i < scene.lights.size(); ++i) {
+            std::set<std::string> seen;
+            for (const Measured& m : measurer.measured(static_cast<int>(i)))
+                EXPECT_TRUE(seen.insert(m.setting.dump()).second) << m.setting.dump();
+        }
+    }
+}
+
+TEST(TuneSearch, FindsTheCheapestWithinAnError) {
+    const std::vector<SettingDimension> space = searchSpace(fullLimits());
+    FakeScene scene{{FakeLight{{0.9, 0.3, 0.6}}}};
+    const Goal goal{Goal::Kind::MaxError, 0.2};
+    LockstepMeasurer measurer = scene.measurer({kDefault});
+    const std::vector<LightChoice> choices = searchSettings(measurer, space, goal);
+    EXPECT_EQ(choices[0].chosen.setting.dump(), gridBest(scene.lights[0], space, goal).setting.dump());
+    EXPECT_TRUE(goal.feasible(choices[0].chosen));
+}
+
+TEST(TuneSearch, LockstepRendersAsOftenAsTheLongestList) {
+    FakeScene scene{{FakeLight{{0.5, 0.5, 0.5}}, FakeLight{{0.5, 0.5, 0.5}}}};
+    LockstepMeasurer measurer = scene.measurer({kDefault, kDefault});
+    const Candidate a = {{"variant", "woo"}, {"resolution", 512}, {"depth_format", "d24"}, {"filter", "pcf"}};
+    Candidate b = a, c = a;
+    b["resolution"] = 1024;
+    c["resolution"] = 4096;
+    // Light 0: three new candidates; light 1: one new one and its current one (not again).
+    measurer.measureLists({{a, b, c}, {kDefault, a}});
+    EXPECT_EQ(measurer.renders(), 3);
+    EXPECT_EQ(measurer.measured(0).size(), 4u);  // current + 3
+    EXPECT_EQ(measurer.measured(1).size(), 2u);  // current + 1
+}
+
+TEST(TuneSearch, OffsetFitFindsTheKnownOptimumAndReportsTheDefault) {
+    for (const std::array<double, 2> optimum : {std::array<double, 2>{1.0, 4.0}, std::array<double, 2>{4.0, 32.0}}) {
+        FakeLight light{{0.3, 0.9, 0.9}};
+        light.offsetOptimum = optimum;
+        FakeScene scene{{light}};
+        LockstepMeasurer measurer = scene.measurer({kDefault});
+        const auto fits = fitOffsets(measurer, {kDefault});
+        ASSERT_TRUE(fits[0]);
+        EXPECT_EQ(fits[0]->fitted.setting["polygon_offset"], nlohmann::json({optimum[0], optimum[1]}));
+        EXPECT_EQ(fits[0]->atDefault.setting.dump(), kDefault.dump());
+        EXPECT_LT(fits[0]->fitted.error, fits[0]->atDefault.error);
+    }
+}
+
+TEST(TuneSearch, KeepsTheCurrentSettingUnlessClearlyBeaten) {
+    const Goal budget{Goal::Kind::Budget, 10.0};
+    Measured current, choice;
+    current.ms = 5.0;
+    current.error = 0.5;
+    current.evaluated = 100000;  // one pixel: 0.001 %
+    choice = current;
+    choice.error = 0.5 - 0.0005;  // half a pixel
+    EXPECT_FALSE(budget.clearlyBetter(choice, current));
+    choice.error = 0.4;
+    EXPECT_TRUE(budget.clearlyBetter(choice, current));
+    current.ms = 11.0;  // over the budget: anything within it replaces it
+    choice.error = 0.9;
+    EXPECT_TRUE(budget.clearlyBetter(choice, current));
+
+    const Goal maxError{Goal::Kind::MaxError, 1.0};
+    current.ms = 5.0;
+    choice = current;
+    choice.ms = 4.5;  // 10 % faster: within timing noise
+    EXPECT_FALSE(maxError.clearlyBetter(choice, current));
+    choice.ms = 2.0;
+    EXPECT_TRUE(maxError.clearlyBetter(choice, current));
+}
+
+TEST(TuneSearch, GridCountsOffsetsOnlyForVariantsThatUseOne) {
+    const std::vector<SettingDimension> space = searchSpace(fullLimits());
+    // standard: 4*3*2 settings x lattice; woo, backface: 2*4*3*2.
+    EXPECT_EQ(gridSize(space, kOffsetLatticeSize), 24 * kOffsetLatticeSize + 48);
+    EXPECT_TRUE(usesPolygonOffset({{"variant", "standard"}}));
+    EXPECT_FALSE(usesPolygonOffset({{"variant", "woo"}}));
+}
+
+} // namespace
+} // namespace shadowmap_tune
