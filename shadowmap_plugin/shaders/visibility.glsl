@@ -112,20 +112,9 @@ vec4 comparisonCascades(int slot, vec3 eyePosition, sampler2DArray depth, int co
     return shadowData.params[slot].x > 0.5 ? comparisonColor(stored, p.z) : comparisonColor(p.z, stored);
 }
 
-vec4 comparisonCube(int slot, vec3 toPoint, samplerCube depth) {
-    float major = cubeMajorAxisDistance(toPoint);
-    float reference = cubeReferenceDepth(slot, major);
-    bool reversed = shadowData.params[slot].x > 0.5;
-    if (major < shadowData.pointLight[slot].w || (reversed ? reference < 0.0 : reference > 1.0))
-        return vec4(0.4, 0.4, 0.4, 1.0);
-    float stored = texture(depth, toPoint).r;
-    return reversed ? comparisonColor(stored, reference) : comparisonColor(reference, stored);
-}
-
-// toPoint: light -> point along world axes, from the vertex part (texgen.glsl).
-float shadowMapCube(int slot, vec3 toPoint, samplerCubeShadow map) {
-    float major = cubeMajorAxisDistance(toPoint);
-    if (major < shadowData.pointLight[slot].w) return 1.0;
+// The depth a point at `major` along its cube face's axis is compared with: its window depth
+// minus the lookup's biases, so the comparison view judges exactly what the lookup judges.
+float cubeBiasedReference(int slot, float major) {
     float depth = cubeReferenceDepth(slot, major) - shadowData.params[slot].y;
     bool reversed = shadowData.params[slot].x > 0.5;
     // Lowered by the depth a 45-degree surface spans across kCubeTexelBias texels here
@@ -135,6 +124,25 @@ float shadowMapCube(int slot, vec3 toPoint, samplerCubeShadow map) {
     // with an infinite far, and falls (reversed Z) as fast.
     float n = shadowData.pointLight[slot].w, f = shadowData.pointFar[slot].x;
     float texelBias = (f <= 0.0 ? n / major : n * f / ((f - n) * major)) * shadowData.pointFar[slot].y;
-    depth += reversed ? texelBias : -texelBias;
+    return depth + (reversed ? texelBias : -texelBias);
+}
+
+vec4 comparisonCube(int slot, vec3 toPoint, samplerCube depth) {
+    float major = cubeMajorAxisDistance(toPoint);
+    float reference = cubeReferenceDepth(slot, major);
+    bool reversed = shadowData.params[slot].x > 0.5;
+    if (major < shadowData.pointLight[slot].w || (reversed ? reference < 0.0 : reference > 1.0))
+        return vec4(0.4, 0.4, 0.4, 1.0);
+    float stored = texture(depth, toPoint).r;
+    float biased = cubeBiasedReference(slot, major);
+    return reversed ? comparisonColor(stored, biased) : comparisonColor(biased, stored);
+}
+
+// toPoint: light -> point along world axes, from the vertex part (texgen.glsl).
+float shadowMapCube(int slot, vec3 toPoint, samplerCubeShadow map) {
+    float major = cubeMajorAxisDistance(toPoint);
+    if (major < shadowData.pointLight[slot].w) return 1.0;
+    float depth = cubeBiasedReference(slot, major);
+    bool reversed = shadowData.params[slot].x > 0.5;
     return texture(map, vec4(toPoint, reversed ? max(depth, 0.0) : min(depth, 1.0)));
 }
