@@ -3,6 +3,8 @@
 #include "AnimationPlayback.h"
 #include "OptionValues.h"
 
+#include "ErrorOf.h"
+
 #include <gtest/gtest.h>
 
 #include <functional>
@@ -11,15 +13,7 @@
 
 namespace {
 
-std::string errorOf(const std::function<void()>& parse) {
-    try {
-        parse();
-    } catch (const std::invalid_argument& error) {
-        return error.what();
-    }
-    ADD_FAILURE() << "no std::invalid_argument thrown";
-    return {};
-}
+using tools::test::errorOf;
 
 TEST(OptionValues, NumbersAreRead) {
     EXPECT_EQ(tools::parseNumber("--time", "0", 0, 1e6), 0.0);

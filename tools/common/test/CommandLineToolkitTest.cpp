@@ -8,6 +8,8 @@
 
 #include "engine/util/Error.h"
 
+#include "ErrorOf.h"
+
 #include <gtest/gtest.h>
 
 #include <map>
@@ -17,17 +19,7 @@
 
 namespace {
 
-// The message of the std::invalid_argument `parse` throws; fails the test when none is.
-template <typename Parse>
-std::string errorOf(Parse parse) {
-    try {
-        parse();
-    } catch (const std::invalid_argument& error) {
-        return error.what();
-    }
-    ADD_FAILURE() << "no std::invalid_argument thrown";
-    return {};
-}
+using tools::test::errorOf;
 
 TEST(OptionValues, IntegersInRangeAreRead) {
     EXPECT_EQ(tools::parseInteger("--width", "1", 1, 16384), 1);
