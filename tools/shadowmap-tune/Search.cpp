@@ -2,8 +2,6 @@
 
 #include "OffsetFit.h"
 
-#include "Pareto.h"
-
 #include <algorithm>
 
 namespace shadowmap_tune {
@@ -21,10 +19,27 @@ constexpr double kErrorEpsilon = 1e-4;
 
 bool lowerError(const Measured& a, const Measured& b) { return a.error < b.error - kErrorEpsilon; }
 
-// Faster by more than timing noise: a time difference smaller than that is no ranking, so
-// the search's order decides (the first measured wins; lists go cheapest first), and the
-// choice does not flip between runs.
+// Faster by more than timing noise: a time difference smaller than that is no ranking.
 bool clearlyFaster(const Measured& a, const Measured& b) { return a.ms < b.ms * (1.0 - kTimeNoise); }
+
+bool cheaper(const Measured& a, const Measured& b) { return expectedCost(a.setting) < expectedCost(b.setting); }
+
+// The coarse results no other beats in error and expected cost: another as accurate and no
+// costlier, better in one. By expected cost, not measured time: an exact front of measured
+// times keeps or drops a setting by noise (one frame of one setting measured 0.25 to 2.7 ms
+// at 160x120), and a shard and the single run would search different settings. The
+// coarse list's order is kept: it is the measuring order, which settles what still ties.
+std::vector<Measured> survivors(const std::vector<Measured>& coarse) {
+    const auto beats = [](const Measured& a, const Measured& b) {
+        if (lowerError(b, a) || cheaper(b, a)) return false;
+        return lowerError(a, b) || cheaper(a, b);
+    };
+    std::vector<Measured> out;
+    for (const Measured& b : coarse)
+        if (std::none_of(coarse.begin(), coarse.end(), [&](const Measured& a) { return beats(a, b); }))
+            out.push_back(b);
+    return out;
+}
 
 } // namespace
 
@@ -34,11 +49,12 @@ bool Goal::better(const Measured& a, const Measured& b) const {
     if (kind == Kind::Budget) {
         if (!fa) return a.ms < b.ms;
         if (lowerError(a, b) || lowerError(b, a)) return lowerError(a, b);
-        return clearlyFaster(a, b);
+        return cheaper(a, b);
     }
     if (!fa) return lowerError(a, b);
     if (clearlyFaster(a, b) || clearlyFaster(b, a)) return clearlyFaster(a, b);
-    return lowerError(a, b);
+    if (lowerError(a, b) || lowerError(b, a)) return lowerError(a, b);
+    return cheaper(a, b);
 }
 
 Goal Goal::withMargin() const {
@@ -109,16 +125,14 @@ std::vector<LightChoice> searchSettings(LockstepMeasurer& measurer, const std::v
         if (isSearched(light)) coarseLists[light] = coarse;
     measurer.measureLists(coarseLists);
 
-    // 2-3. Prune to each light's Pareto front, refine the survivors.
+    // 2-3. Prune to each light's front of error against expected cost, refine the survivors.
     std::vector<std::vector<Candidate>> fine(lights);
     for (int light = 0; light < lights; ++light) {
         if (!isSearched(light)) continue;
         std::vector<Measured> coarseResults;
         for (const Candidate& candidate : coarse)
             if (const Measured* m = measurer.find(light, candidate)) coarseResults.push_back(*m);
-        const std::vector<Measured> front = tools::paretoFront(
-            coarseResults, [](const Measured& m) { return m.ms; }, [](const Measured& m) { return m.error; });
-        for (const Measured& survivor : front) {
+        for (const Measured& survivor : survivors(coarseResults)) {
             // The refined dimensions' first values are the cheapest: over the budget there,
             // over it everywhere.
             if (goal.kind == Goal::Kind::Budget && !goal.feasible(survivor)) continue;

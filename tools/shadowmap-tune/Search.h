@@ -10,7 +10,8 @@
 // Stages, per light:
 //  1. coarse: every combination of the non-refined dimensions at the cheapest value of the
 //     refined ones (resolution);
-//  2. prune: only the coarse results on the light's Pareto front of time against error go on;
+//  2. prune: only the coarse results on the light's Pareto front of error against expected
+//     cost (SearchSpace.h) go on;
 //  3. fine: each survivor at the refined dimensions' other values;
 //  4. offset: the best setting that uses a polygon offset gets its offset fitted (OffsetFit.h);
 //  5. choose by the goal among everything measured, keeping the light's current setting
@@ -40,9 +41,10 @@ struct Goal {
     double limit = 0.0;  // ms (Budget) or percent (MaxError)
 
     bool feasible(const Measured& m) const { return kind == Kind::Budget ? m.ms <= limit : m.error <= limit; }
-    // Budget: the lower error within the budget (ties: faster by more than timing noise);
-    // MaxError: the faster by more than noise within the error (else: lower error). Neither:
-    // not better, so of equals the first met wins. A feasible result beats an infeasible one; of two
+    // Budget: the lower error within the budget (ties: the lower expected cost, so that
+    // timing noise never decides); MaxError: the faster by more than noise within the error
+    // (else: lower error, then expected cost). Neither: not better, so of equals the first
+    // met wins. A feasible result beats an infeasible one; of two
     // infeasible ones the nearer to feasible wins.
     bool better(const Measured& a, const Measured& b) const;
     // The goal with timing noise taken off a budget: what a new setting must fit, so that a

@@ -92,6 +92,15 @@ bool usesPolygonOffset(const Candidate& candidate) {
     return offset.x != 0.0f || offset.y != 0.0f;
 }
 
+std::array<long, 3> expectedCost(const Candidate& candidate) {
+    const shadowmap::ShadowSettings settings = shadowmap::parseSettings(candidate, "shadowmap-tune", "candidate");
+    const long passes = settings.variant == shadowmap::Variant::Woo ? 2 : 1;
+    const long texels = static_cast<long>(settings.resolution) * settings.resolution * passes * settings.cascades;
+    const long taps = settings.filter == shadowmap::Filter::Pcf ? 4 : 1;
+    const long bytes = settings.depthFormat == shadowmap::DepthFormat::D16 ? 2 : settings.depthFormat == shadowmap::DepthFormat::D24 ? 3 : 4;
+    return {texels, taps, bytes};
+}
+
 long gridSize(const std::vector<SettingDimension>& space, long offsetLatticeSize) {
     long withOffset = 1, withoutOffset = 1;
     for (const SettingDimension& dimension : space) {

@@ -5,6 +5,7 @@
 // is fitted per light around the best setting that uses one (OffsetFit.h).
 #include <nlohmann/json.hpp>
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -49,6 +50,14 @@ std::string describe(const Candidate& candidate, const std::vector<SettingDimens
 // True when the candidate's variant draws with a polygon offset (the plugin's settings API:
 // its default offset is not zero), i.e. when an offset fit can change anything.
 bool usesPolygonOffset(const Candidate& candidate);
+
+// What a setting is expected to cost, from what it draws and reads rather than from a
+// measurement: compared lexicographically, the depth texels it renders (resolution squared
+// x passes x cascades; woo draws two passes), then the filter's taps, then the depth
+// format's bytes. Measured times cannot rank settings of similar cost (one setting's times
+// scatter by 30 % and more between runs), and a choice that follows noise differs between
+// two runs, or between a shard and the single run; the search ranks by this where errors tie.
+std::array<long, 3> expectedCost(const Candidate& candidate);
 
 // The full grid's size per light: the product of the dimensions, counting each setting that
 // uses a polygon offset once per offset of the fit's lattice (offsetLatticeSize).

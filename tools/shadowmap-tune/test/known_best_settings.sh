@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # On scenes whose best setting is known, the tuner picks it. With a budget no setting can
-# exceed, the choice is the lowest error (time only breaks exact ties), and at one size,
+# exceed, the choice is the lowest error (expected cost, not time, breaks exact ties), and at one size,
 # format and filter the variants compete on error alone (the offset fit is error-driven
 # too), so the result does not depend on the machine's load.
 #  - closed boxes under a low light: backface measured 0.050 % error, standard with its
