@@ -3,13 +3,12 @@
 #include "JsonSpans.h"
 
 #include "engine/util/Error.h"
+#include "engine/util/InputFile.h"
 #include "engine/util/OutputFile.h"
 
 #include <algorithm>
 #include <cstdint>
 #include <cstring>
-#include <fstream>
-#include <sstream>
 #include <stdexcept>
 
 #include <unistd.h>
@@ -22,14 +21,6 @@ struct Edit {
     std::size_t begin, end;  // replace [begin, end) with text
     std::string text;
 };
-
-std::string readFile(const std::filesystem::path& path) {
-    std::ifstream file(path, std::ios::binary);
-    if (!file) engine::throwInputError(path.string(), "", "cannot read the scene");
-    std::stringstream bytes;
-    bytes << file.rdbuf();
-    return bytes.str();
-}
 
 std::uint32_t readU32(const std::string& bytes, std::size_t at) {
     std::uint32_t value = 0;
@@ -112,7 +103,7 @@ struct SceneFile {
 
 SceneFile readScene(const std::filesystem::path& scene) {
     SceneFile file;
-    file.bytes = readFile(scene);
+    file.bytes = engine::readWholeFile(scene, "the scene");
     file.glb = file.bytes.size() >= 20 && file.bytes.compare(0, 4, "glTF") == 0;
     if (file.glb) {
         file.jsonLength = readU32(file.bytes, 12);

@@ -1,10 +1,10 @@
 #include "Script.h"
 
 #include "engine/util/Error.h"
+#include "engine/util/InputFile.h"
 
 #include <cerrno>
 #include <cstdlib>
-#include <fstream>
 #include <map>
 #include <sstream>
 
@@ -46,11 +46,7 @@ std::string knownCommands() {
 } // namespace
 
 Script Script::load(const std::filesystem::path& path) {
-    std::ifstream file(path, std::ios::binary);
-    if (!file) engine::throwInputError(path.string(), "", "cannot open the script");
-    std::stringstream text;
-    text << file.rdbuf();
-    return parse(text.str(), path.string());
+    return parse(engine::readWholeFile(path, "the script"), path.string());
 }
 
 void Script::fail(const Command& command, const std::string& reason) const {

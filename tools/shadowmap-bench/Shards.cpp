@@ -4,24 +4,19 @@
 #include "ResultsCsv.h"
 
 #include "engine/util/Error.h"
+#include "engine/util/InputFile.h"
 
 #include <nlohmann/json.hpp>
 
-#include <fstream>
-#include <sstream>
 #include <stdexcept>
 
 namespace shadowmap_bench {
 
 namespace {
 
-
-std::string readText(const std::filesystem::path& path) {
-    std::ifstream file(path, std::ios::binary);
-    if (!file) engine::throwInputError(path.string(), "", "cannot read it (is the folder a finished shard?)");
-    std::stringstream text;
-    text << file.rdbuf();
-    return text.str();
+// What --merge reads of a shard's folder; a file missing means the shard did not finish.
+std::string readShardFile(const std::filesystem::path& path) {
+    return engine::readWholeFile(path, "it (is the folder a finished shard?)");
 }
 
 // One record of RFC 4180 CSV from `at` (quoted fields may hold commas, quotes, line breaks).
@@ -115,7 +110,7 @@ std::vector<BenchRow> parseResultsCsv(const std::string& text, const std::string
 
 ShardResult readShard(const std::filesystem::path& dir) {
     const std::filesystem::path manifestPath = dir / "shard.json";
-    const nlohmann::json manifest = nlohmann::json::parse(readText(manifestPath), nullptr, false);
+    const nlohmann::json manifest = nlohmann::json::parse(readShardFile(manifestPath), nullptr, false);
     ShardResult result;
     try {
         result.shard = {manifest.at("shard").get<int>(), manifest.at("of").get<int>()};
@@ -127,7 +122,7 @@ ShardResult readShard(const std::filesystem::path& dir) {
         engine::throwInputError(manifestPath.string(), "", std::string("not a shard manifest: ") + error.what());
     }
     const std::filesystem::path csv = dir / "results.csv";
-    result.rows = parseResultsCsv(readText(csv), csv.string());
+    result.rows = parseResultsCsv(readShardFile(csv), csv.string());
     return result;
 }
 

@@ -1,10 +1,9 @@
 #include "TuneShards.h"
 
 #include "engine/util/Error.h"
+#include "engine/util/InputFile.h"
 
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 namespace shadowmap_tune {
 
@@ -32,11 +31,8 @@ std::map<int, nlohmann::json> mergePartialResults(const std::vector<std::string>
     std::vector<bool> seen;
     int count = 0;
     for (const std::string& file : files) {
-        std::ifstream in(file);
-        if (!in) engine::throwInputError(file, "", "cannot read the partial result");
-        std::stringstream text;
-        text << in.rdbuf();
-        const nlohmann::json part = nlohmann::json::parse(text.str(), nullptr, false);
+        const nlohmann::json part =
+            nlohmann::json::parse(engine::readWholeFile(file, "the partial result"), nullptr, false);
         int index = 0, of = 0;
         try {
             index = part.at("shard").get<int>();

@@ -1,11 +1,10 @@
 #include "engine/config/EngineConfig.h"
 
 #include "engine/util/Error.h"
+#include "engine/util/InputFile.h"
 #include "engine/util/InstallLayout.h"
 #include "engine/util/JsonRead.h"
 
-#include <fstream>
-#include <sstream>
 
 namespace engine {
 
@@ -83,11 +82,7 @@ EngineConfig parseEngineConfig(const std::string& jsonText, const std::filesyste
 }
 
 EngineConfig loadEngineConfig(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throwInputError(path.string(), "", "cannot open the engine config");
-    std::ostringstream text;
-    text << in.rdbuf();
-    return parseEngineConfig(text.str(), path);
+    return parseEngineConfig(readWholeFile(path, "the engine config"), path);
 }
 
 std::vector<std::filesystem::path> defaultEngineConfigCandidates() {
