@@ -4,28 +4,20 @@
 // At each --time the mask of 'mover' agrees with ray-traced truth of the posed scene
 // and the shadow moves with the box; over an --animate run the cached and uncached masks are
 // equal, and the map of 'still' is never re-rendered while that of 'mover' is.
-#include "engine/util/OutputFile.h"
+#include "EngineRenderRun.h"
 #include "../unit/gltf_test_support.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include <cstdio>
-#include <cstdlib>
-#include <fstream>
-
-#include <sys/wait.h>
 
 namespace {
 
 using namespace gltf_test;
+using namespace engine_render_test;
 
 constexpr int kWidth = 160, kHeight = 120;
-
-int run(const std::string& command) {
-    const int status = std::system((command + " > /dev/null 2>&1").c_str());
-    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
 
 // A floor quad of half size `half` in the XZ plane (facing +Y) centred at (x, 0, z).
 int addFloor(GltfBuilder& b, float x, float z, float half) {
@@ -83,27 +75,14 @@ protected:
 
     // engine-render with `flags`, writing the mask of 'mover' and the stats; returns the stats.
     nlohmann::json render(const std::string& name, const std::string& flags, std::vector<std::uint8_t>* mask = nullptr) {
-        const fs::path maskFile = dir_ / (name + "_mask.png"), statsFile = dir_ / (name + ".json");
-        const std::string command = std::string(ENGINE_RENDER_BIN) + " --config " + CONTENT_DIR +
-                                    "/engine.json --scene '" + scene_.string() + "' --out '" +
-                                    (dir_ / (name + ".png")).string() + "' --width " + std::to_string(kWidth) +
-                                    " --height " + std::to_string(kHeight) + " --shadow-mask mover='" +
-                                    maskFile.string() + "' --stats '" + statsFile.string() + "' " + flags;
-        EXPECT_EQ(run(command), 0) << command;
-        if (mask) {
-            int width = 0, height = 0;
-            *mask = engine::readPng(maskFile, 1, width, height);
-        }
-        std::ifstream in(statsFile);
-        return in ? nlohmann::json::parse(in, nullptr, false) : nlohmann::json();
+        const fs::path maskFile = dir_ / (name + "_mask.png");
+        const nlohmann::json stats =
+            renderWithStats(scene_, dir_ / name, kWidth, kHeight, flags + " --shadow-mask mover='" + maskFile.string() + "'");
+        if (mask) *mask = readMask(maskFile);
+        return stats;
     }
 
-    static const nlohmann::json* light(const nlohmann::json& list, const std::string& name) {
-        for (const nlohmann::json& entry : list)
-            if (entry.value("light", "") == name) return &entry;
-        ADD_FAILURE() << "no light '" << name << "' in " << list.dump();
-        return nullptr;
-    }
+    static const nlohmann::json* light(const nlohmann::json& list, const std::string& name) { return lightEntry(list, name); }
 
     TempDir dir_;
     fs::path scene_;
@@ -129,8 +108,7 @@ TEST_F(AnimatedShadow, MaskAgreesWithTruthOfThePoseAtEachTime) {
         last = mask;
     }
     // The shadow moved with the box: the first and last masks shadow different pixels.
-    int differing = 0;
-    for (std::size_t i = 0; i < first.size(); ++i) differing += (first[i] < 128) != (last[i] < 128);
+    const int differing = differingPixels(first, last);
     std::printf("masks at 0 s and 2 s differ in %d pixels\n", differing);
     // Measured 912: the box's shadow at each end, about 456 pixels each; a shadow that
     // stayed put would differ in none.

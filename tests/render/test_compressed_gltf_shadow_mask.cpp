@@ -5,30 +5,24 @@
 // moves vertices by up to 0.11 (Draco) and 0.04 (gltfpack) units on a 745-unit model, so
 // pixels on shadow and silhouette edges may flip; the counts are bounded by what was
 // measured plus a margin.
-#include "engine/util/OutputFile.h"
+#include "EngineRenderRun.h"
 #include "../support/AssimpTestModels.h"
 
 #include <gtest/gtest.h>
 
 #include <cstdio>
-#include <cstdlib>
 #include <filesystem>
 
-#include <sys/wait.h>
 #include <unistd.h>
 
 namespace {
 
+using namespace engine_render_test;
 namespace fs = std::filesystem;
 
 constexpr int kWidth = 160, kHeight = 120;
 
 fs::path plainEngine() { return engine::test::kAssimpGltf2Models / "2CylinderEngine-glTF-Binary/2CylinderEngine.glb"; }
-
-int run(const std::string& command) {
-    const int status = std::system((command + " > /dev/null 2>&1").c_str());
-    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
 
 class CompressedGltfShadowMask : public ::testing::Test {
 protected:
@@ -45,7 +39,7 @@ protected:
                                     scene.string() + "' --out '" + (dir_ / (name + ".png")).string() + "' --width " +
                                     std::to_string(kWidth) + " --height " + std::to_string(kHeight) +
                                     " --key-light spot --shadow-mask key_light='" + mask.string() + "'";
-        EXPECT_EQ(run(command), 0) << command;
+        EXPECT_EQ(runQuietly(command), 0) << command;
         int width = 0, height = 0;
         std::vector<std::uint8_t> pixels = engine::readPng(mask, 1, width, height);
         EXPECT_EQ(width, kWidth);
@@ -53,12 +47,6 @@ protected:
         return pixels;
     }
 
-    // Pixels whose shadow state (lit above 127) differs.
-    static int differingPixels(const std::vector<std::uint8_t>& a, const std::vector<std::uint8_t>& b) {
-        int count = 0;
-        for (std::size_t i = 0; i < std::min(a.size(), b.size()); ++i) count += (a[i] > 127) != (b[i] > 127);
-        return count;
-    }
     static int litPixels(const std::vector<std::uint8_t>& mask) {
         int count = 0;
         for (std::uint8_t value : mask) count += value > 127;
@@ -71,7 +59,7 @@ protected:
 TEST_F(CompressedGltfShadowMask, DracoAndMeshoptShadowLikeThePlainFile) {
     ASSERT_TRUE(engine::test::assimpTestModelsInstalled());
     const fs::path packed = dir_ / "packed.glb";
-    ASSERT_EQ(run("gltfpack -i '" + plainEngine().string() + "' -o '" + packed.string() + "' -cc"), 0);
+    ASSERT_EQ(runQuietly("gltfpack -i '" + plainEngine().string() + "' -o '" + packed.string() + "' -cc"), 0);
 
     const auto plain = shadowMask(plainEngine(), "plain");
     const auto draco = shadowMask(engine::test::kAssimpGltf2Models / "draco/2CylinderEngine.gltf", "draco");

@@ -1,0 +1,61 @@
+#pragma once
+// What the engine-render tests share: running the tool quietly, reading a shadow mask and
+// the stats it wrote, and counting pixels whose shadow state differs between two masks.
+#include "engine/util/OutputFile.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cstdint>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include <sys/wait.h>
+
+namespace engine_render_test {
+
+// Runs a shell command with its output discarded; its exit status, -1 if it did not exit.
+inline int runQuietly(const std::string& command) {
+    const int status = std::system((command + " > /dev/null 2>&1").c_str());
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+// engine-render with the repository's config on `scene` at width x height plus `flags`;
+// returns the stats it wrote (null JSON if none). Fails the test if the tool fails.
+inline nlohmann::json renderWithStats(const std::filesystem::path& scene, const std::filesystem::path& outputStem,
+                                      int width, int height, const std::string& flags) {
+    const std::filesystem::path stats = outputStem.string() + ".json";
+    const std::string command = std::string(ENGINE_RENDER_BIN) + " --config " + CONTENT_DIR + "/engine.json --scene '" +
+                                scene.string() + "' --out '" + outputStem.string() + ".png' --width " +
+                                std::to_string(width) + " --height " + std::to_string(height) + " --stats '" +
+                                stats.string() + "' " + flags;
+    EXPECT_EQ(runQuietly(command), 0) << command;
+    std::ifstream in(stats);
+    return in ? nlohmann::json::parse(in, nullptr, false) : nlohmann::json();
+}
+
+inline std::vector<std::uint8_t> readMask(const std::filesystem::path& file) {
+    int width = 0, height = 0;
+    return engine::readPng(file, 1, width, height);
+}
+
+// The entry of `list` (the stats' "lights" or "shadow_maps") for light `name`.
+inline const nlohmann::json* lightEntry(const nlohmann::json& list, const std::string& name) {
+    for (const nlohmann::json& entry : list)
+        if (entry.value("light", "") == name) return &entry;
+    ADD_FAILURE() << "no light '" << name << "' in " << list.dump();
+    return nullptr;
+}
+
+// Pixels whose shadow state (lit above 127) differs between two masks.
+inline int differingPixels(const std::vector<std::uint8_t>& a, const std::vector<std::uint8_t>& b) {
+    int count = 0;
+    for (std::size_t i = 0; i < std::min(a.size(), b.size()); ++i) count += (a[i] > 127) != (b[i] > 127);
+    return count;
+}
+
+} // namespace engine_render_test
