@@ -194,4 +194,28 @@ inline int addSlideTurnGrowAnimation(GltfBuilder& b, int node) {
                   {"channels", {channel(0, "translation"), channel(1, "rotation"), channel(2, "scale")}}});
 }
 
+// A unit quad in z = 0 (vertices (0,0), (1,0), (1,1), (0,1)) on node 0 'Skinned', whose own
+// translation (100, 0, 0) a skinned mesh must ignore. Vertices 0, 1 follow joint 0 'Root'
+// (node 1, at the origin); vertex 2 follows joint 1 'Tip' (node 2, child of Root at y = 1,
+// bound there: inverse bind matrix T(0, -1, 0)); vertex 3 is half Root, half Tip.
+inline GltfBuilder skinnedQuad() {
+    GltfBuilder b;
+    const int positions = b.addFloats({0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0}, 3, "VEC3");
+    const std::vector<std::uint8_t> joints = {0, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0};
+    const int jointAccessor = b.addAccessor(b.addView(joints.data(), joints.size()), kUnsignedByte, 4, "VEC4");
+    const int weights = b.addFloats({1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 0.5f, 0.5f, 0, 0}, 4, "VEC4");
+    const int indices = b.addIndices(std::vector<std::uint16_t>{0, 1, 2, 0, 2, 3});
+    b.addMesh({{"attributes", {{"POSITION", positions}, {"JOINTS_0", jointAccessor}, {"WEIGHTS_0", weights}}},
+               {"indices", indices}});
+    const int inverseBind = b.addFloats({1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1,    // identity
+                                         1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, -1, 0, 1},  // T(0, -1, 0)
+                                        16, "MAT4");
+    b.add("skins", {{"joints", {1, 2}}, {"inverseBindMatrices", inverseBind}});
+    b.addNode({{"name", "Skinned"}, {"mesh", 0}, {"skin", 0}, {"translation", {100, 0, 0}}});
+    b.addNode({{"name", "Root"}, {"children", {2}}});
+    b.addNode({{"name", "Tip"}, {"translation", {0, 1, 0}}});
+    b.setScene({0, 1});
+    return b;
+}
+
 } // namespace gltf_writer

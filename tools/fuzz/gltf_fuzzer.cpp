@@ -7,6 +7,7 @@
 // libFuzzer limits), or a loaded Scene that breaks the contract in Scene.h (an index out
 // of range, a primitive that is not a triangle list...).
 #include "engine/gltf/GltfLoader.h"
+#include "engine/scene/Deform.h"
 #include "engine/util/Error.h"
 
 #include <algorithm>
@@ -187,6 +188,14 @@ void checkAnimationContract(engine::Scene scene) {
             for (const engine::Node& node : scene.nodes)
                 for (int c = 0; c < 16; ++c)
                     if (!std::isfinite(node.local[c / 4][c % 4])) finding(name + ": pose not finite");
+            // Skinned and morphed instances are posed here (Deform.h), under the sanitizers.
+            scene.updateWorldTransforms();
+            for (const engine::MeshInstance& instance : scene.meshInstances)
+                if (instance.deformed)
+                    for (const engine::DeformedPrimitive& primitive : instance.deformed->primitives)
+                        for (const glm::vec3& p : primitive.positions)
+                            if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+                                finding(name + ": deformed vertex not finite");
         }
     }
 }

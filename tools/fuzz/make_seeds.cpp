@@ -213,6 +213,27 @@ GltfBuilder animatedTriangle() {
     return b;
 }
 
+// The skinned quad (gltf_writer.h) with a morph target lifting it, mesh weights, and an
+// animation turning its tip joint and running the weights: skins, morphs and both channels.
+GltfBuilder skinnedMorphedQuad() {
+    GltfBuilder b = skinnedQuad();
+    b.doc["asset"]["generator"] = "tools/fuzz/make_seeds";
+    const int lift = b.addFloats({0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1}, 3, "VEC3");
+    b.doc["meshes"][0]["primitives"][0]["targets"] = json::array({{{"POSITION", lift}}});
+    b.doc["meshes"][0]["weights"] = {0.25};
+    const int times = b.addFloats({0, 1}, 1, "SCALAR");
+    b.doc["accessors"][times]["min"] = {0};
+    b.doc["accessors"][times]["max"] = {1};
+    const int turn = b.addFloats({0, 0, 0, 1, 0, 0, 0.70710678f, 0.70710678f}, 4, "VEC4");
+    const int weights = b.addFloats({0, 1}, 1, "SCALAR");
+    b.add("animations", {{"name", "BendAndLift"},
+                         {"samplers", {{{"input", times}, {"output", turn}}, {{"input", times}, {"output", weights}}}},
+                         {"channels",
+                          {{{"sampler", 0}, {"target", {{"node", 2}, {"path", "rotation"}}}},
+                           {{"sampler", 1}, {"target", {{"node", 0}, {"path", "weights"}}}}}}});
+    return b;
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -248,6 +269,8 @@ int main(int argc, char** argv) {
         glb(compressed_seeds::meshoptQuad(), "meshopt-quad.glb");
         gltf(animatedTriangle(), "animated.gltf");
         glb(animatedTriangle(), "animated.glb");
+        gltf(skinnedMorphedQuad(), "skinned-morphed.gltf");
+        glb(skinnedMorphedQuad(), "skinned-morphed.glb");
     } catch (const std::exception& error) {
         std::fprintf(stderr, "make_seeds: %s\n", error.what());
         return 1;

@@ -2,6 +2,7 @@
 
 #include "truth/TextureAlpha.h"
 
+#include "engine/scene/Deform.h"
 #include "engine/scene/Scene.h"
 
 #include <embree3/rtcore.h>
@@ -104,8 +105,13 @@ RayTracedVisibility::RayTracedVisibility(const engine::Scene& scene)
 
     for (const engine::MeshInstance& instance : scene.meshInstances) {
         if (!instance.castShadows) continue;
-        for (const engine::Primitive& primitive : scene.meshes.at(instance.mesh).primitives) {
+        const std::vector<engine::Primitive>& primitives = scene.meshes.at(instance.mesh).primitives;
+        for (std::size_t p = 0; p < primitives.size(); ++p) {
+            const engine::Primitive& primitive = primitives[p];
             if (!primitive.castShadows) continue;  // KHR_lights_shadows on the primitive
+            // A skinned or morphed instance: the posed floats the passes draw (Deform.h).
+            const engine::DeformedPrimitive* posed =
+                instance.deformed ? &instance.deformed->primitives.at(p) : nullptr;
             const std::size_t vertexCount = primitive.positions.size();
             const std::size_t triangleCount = primitive.indices.size() / 3;
             if (triangleCount == 0) continue;
@@ -129,8 +135,9 @@ RayTracedVisibility::RayTracedVisibility(const engine::Scene& scene)
             // World in double, then relative to the bounds' centre: only small numbers are
             // rounded to float.
             for (std::size_t v = 0; v < vertexCount; ++v) {
-                const glm::dvec3 world =
-                    glm::dvec3(instance.world * glm::dvec4(glm::dvec3(primitive.positions[v]), 1.0));
+                const glm::dvec3 object = posed ? instance.deformed->origin + glm::dvec3(posed->positions[v])
+                                                : glm::dvec3(primitive.positions[v]);
+                const glm::dvec3 world = glm::dvec3(instance.world * glm::dvec4(object, 1.0));
                 const glm::vec3 relative(world - origin_);
                 vertices[3 * v + 0] = relative.x;
                 vertices[3 * v + 1] = relative.y;

@@ -139,7 +139,7 @@ SurfaceBuffer SurfaceCapture::capture(const engine::Scene& scene, const engine::
         const MeshInstance& instance = scene.meshInstances[i];
         const glm::mat4 modelView(view * gpu.modelMatrix(instance));  // double, then cast
         glFrontFace(glm::determinant(glm::dmat3(instance.world)) < 0.0 ? GL_CW : GL_CCW);
-        for (const SceneGpu::Primitive& primitive : gpu.primitives(instance.mesh)) {
+        for (const SceneGpu::Primitive& primitive : gpu.primitives(instance)) {
             const unsigned features = materialFeatures(scene, gpu, primitive, MaterialUse::Shading);
             const gl::Program& drawing = program(features);
             drawing.use();

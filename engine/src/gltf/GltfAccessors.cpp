@@ -157,9 +157,12 @@ std::vector<float> readFloatComponents(const LoadContext& context, const tinyglt
 std::vector<std::uint32_t> readUnsignedIntegers(const LoadContext& context, const tinygltf::Model& model,
                                                 int accessorIndex, const AccessorUse& use) {
     const tinygltf::Accessor& accessor = accessorFitting(context, model, accessorIndex, use);
-    std::vector<std::uint32_t> values(accessor.count);
+    const std::size_t components = componentsPerElement(accessor.type);
+    const std::size_t bytesPerComponent = componentSize(accessor.componentType);
+    std::vector<std::uint32_t> values(accessor.count * components);
     forEachElement(model, accessor, [&](std::size_t element, const std::uint8_t* bytes) {
-        values[element] = componentAsUnsigned(bytes, accessor.componentType);
+        for (std::size_t c = 0; c < components; ++c)
+            values[element * components + c] = componentAsUnsigned(bytes + c * bytesPerComponent, accessor.componentType);
     });
     return values;
 }

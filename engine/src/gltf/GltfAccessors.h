@@ -38,7 +38,8 @@ struct AccessorUse {
 std::vector<float> readFloatComponents(const LoadContext& context, const tinygltf::Model& model,
                                        int accessorIndex, const AccessorUse& use);
 
-// The values of a SCALAR accessor of unsigned integers (indices).
+// All components of an accessor of unsigned integers (indices, JOINTS_0), count x
+// components per element.
 std::vector<std::uint32_t> readUnsignedIntegers(const LoadContext& context, const tinygltf::Model& model,
                                                 int accessorIndex, const AccessorUse& use);
 

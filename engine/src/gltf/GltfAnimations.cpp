@@ -121,8 +121,6 @@ private:
             context_.fail(object, "uses " + samplerObject(*sampler) + " for " + pathJson->get<std::string>() +
                                       ", but another channel uses it for values of another size");
         samplerUse = use;
-        if (*path == AnimationPath::Weights)
-            context_.warn(object, "morph target weights are sampled but not applied yet (the mesh keeps its base shape)");
         animation_.channels.push_back({nodeIndex, *path, static_cast<int>(*sampler)});
     }
 

@@ -5,6 +5,7 @@
 #include "GltfImages.h"
 #include "GltfLights.h"
 #include "GltfMeshes.h"
+#include "GltfSkins.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
@@ -96,7 +97,6 @@ std::vector<Node> convertNodes(const LoadContext& context, const tinygltf::Model
         node.camera = source.camera;
         node.light = nodeLightIndex(context, source, i);
         readShadowFlags(context, source, object, node);
-        if (source.skin >= 0) context.warn(object, "skin is ignored (no skinning)");
     }
     for (std::size_t i = 0; i < nodes.size(); ++i)
         for (int child : nodes[i].children) nodes[child].parent = static_cast<int>(i);
@@ -126,6 +126,8 @@ Scene convertToScene(const LoadContext& context, const ParsedGltf& parsed, const
     // Materials first: a primitive's warning about a missing UV set names its material's.
     scene.materials = convertMaterials(context, model, document);
     scene.meshes = convertMeshes(context, model, document, scene.materials);
+    scene.skins = readSkins(context, model);
+    attachDeformers(context, model, scene.skins, scene.meshes, scene.nodes);
     scene.images = decodeImages(context, parsed);
     scene.cameras = convertCameras(context, model);
     scene.lights = std::move(lights);

@@ -3,6 +3,7 @@
 #include "GltfAccessors.h"
 #include "GltfLightsShadows.h"
 
+#include <cmath>
 #include <limits>
 #include <numeric>
 #include <optional>
@@ -64,6 +65,8 @@ public:
         primitive.texcoords = readTexcoords(source, "TEXCOORD_0", vertexCount);
         primitive.texcoords1 = readTexcoords(source, "TEXCOORD_1", vertexCount);
         primitive.colors = readColors(source, vertexCount);
+        readSkinWeights(source, vertexCount, primitive);
+        primitive.targets = readMorphTargets(source, vertexCount);
         const ShadowFlags shadows = readLightsShadows(JsonFields(context_, object_, json, ""), ShadowFlagsOwner::Primitive);
         primitive.castShadows = shadows.castShadows;
         primitive.receiveShadows = shadows.receiveShadows;
@@ -119,6 +122,62 @@ private:
         return colors;
     }
 
+    // JOINTS_0 (unsigned byte or short) and WEIGHTS_0 (float or normalized unsigned), both
+    // or neither. Each vertex's weights are normalized to sum to 1 (glTF requires the sum to
+    // be 1 within the quantization's precision; exporters round); a vertex whose weights sum
+    // to 0 has no pose and is refused. Whether a joint index exists is checked per skin
+    // (GltfSkins.cpp): the mesh does not know which skin poses it.
+    void readSkinWeights(const tinygltf::Primitive& source, std::size_t vertexCount, Primitive& primitive) const {
+        const std::optional<int> joints = attribute(source, "JOINTS_0");
+        const std::optional<int> weights = attribute(source, "WEIGHTS_0");
+        if (!joints && !weights) return;
+        if (!joints || !weights)
+            context_.fail(object_, std::string("has ") + (joints ? "JOINTS_0 without WEIGHTS_0" : "WEIGHTS_0 without JOINTS_0"));
+        if (attribute(source, "JOINTS_1"))
+            context_.warn(object_, "JOINTS_1/WEIGHTS_1 ignored: four joints per vertex are used");
+        const std::vector<std::uint32_t> indices = readUnsignedIntegers(
+            context_, model_, *joints, vectorUse("JOINTS_0", TINYGLTF_TYPE_VEC4, AccessorUse::Components::UnsignedInteger));
+        requireVertexCount("JOINTS_0", indices.size() / 4, vertexCount);
+        primitive.weights = readFloatVectors<4>(
+            context_, model_, *weights, vectorUse("WEIGHTS_0", TINYGLTF_TYPE_VEC4, AccessorUse::Components::FloatOrNormalized));
+        requireVertexCount("WEIGHTS_0", primitive.weights.size(), vertexCount);
+        primitive.joints.resize(vertexCount);
+        for (std::size_t v = 0; v < vertexCount; ++v) {
+            primitive.joints[v] = {indices[4 * v], indices[4 * v + 1], indices[4 * v + 2], indices[4 * v + 3]};
+            glm::vec4& w = primitive.weights[v];
+            const float sum = w.x + w.y + w.z + w.w;
+            if (glm::any(glm::lessThan(w, glm::vec4(0.0f))) || !(sum > 0.0f))
+                context_.fail(object_, "WEIGHTS_0 of vertex " + std::to_string(v) + " are (" + formatNumber(w.x) + ", " +
+                                           formatNumber(w.y) + ", " + formatNumber(w.z) + ", " + formatNumber(w.w) +
+                                           "): weights must be >= 0 and not all 0");
+            w /= sum;
+        }
+    }
+
+    // Morph targets: POSITION and NORMAL offsets per vertex (TANGENT is not used).
+    std::vector<MorphTarget> readMorphTargets(const tinygltf::Primitive& source, std::size_t vertexCount) const {
+        std::vector<MorphTarget> targets(source.targets.size());
+        for (std::size_t t = 0; t < source.targets.size(); ++t) {
+            const auto& attributes = source.targets[t];
+            const std::string name = indexed("targets", t);
+            if (const auto found = attributes.find("POSITION"); found != attributes.end()) {
+                targets[t].positions = readFloatVectors<3>(
+                    context_, model_, found->second,
+                    vectorUse((name + " POSITION").c_str(), TINYGLTF_TYPE_VEC3, AccessorUse::Components::Quantized));
+                requireVertexCount((name + " POSITION").c_str(), targets[t].positions.size(), vertexCount);
+            } else {
+                targets[t].positions.assign(vertexCount, glm::vec3(0.0f));
+            }
+            if (const auto found = attributes.find("NORMAL"); found != attributes.end()) {
+                targets[t].normals = readFloatVectors<3>(
+                    context_, model_, found->second,
+                    vectorUse((name + " NORMAL").c_str(), TINYGLTF_TYPE_VEC3, AccessorUse::Components::FloatOrSignedNormalized));
+                requireVertexCount((name + " NORMAL").c_str(), targets[t].normals.size(), vertexCount);
+            }
+        }
+        return targets;
+    }
+
     // A material textured from a UV set the primitive lacks still draws, sampling every
     // vertex at uv (0,0); worth a warning, not a refusal (exporters drop unused sets).
     void warnAboutMissingUvSet(const Primitive& primitive) const {
@@ -163,6 +222,28 @@ private:
     std::string object_;
 };
 
+// Every primitive of a mesh has the same number of morph targets (glTF 2.0 section
+// 3.7.2.2); the mesh's weights, when given, one per target (else zeros).
+void readMorphWeights(const LoadContext& context, const tinygltf::Mesh& source, const std::string& object, Mesh& mesh) {
+    const std::size_t targets = mesh.primitives.empty() ? 0 : mesh.primitives.front().targets.size();
+    for (std::size_t p = 0; p < mesh.primitives.size(); ++p)
+        if (mesh.primitives[p].targets.size() != targets)
+            context.fail(object, "its primitives have " + std::to_string(targets) + " and " +
+                                     std::to_string(mesh.primitives[p].targets.size()) +
+                                     " morph targets (glTF requires the same count in every primitive)");
+    if (source.weights.empty()) {
+        mesh.weights.assign(targets, 0.0f);
+        return;
+    }
+    if (source.weights.size() != targets)
+        context.fail(object, "weights has " + std::to_string(source.weights.size()) + " entries for " +
+                                 std::to_string(targets) + " morph targets");
+    for (const double weight : source.weights) {
+        if (!std::isfinite(weight)) context.fail(object, "weights holds " + formatNumber(weight) + ", not a finite number");
+        mesh.weights.push_back(static_cast<float>(weight));
+    }
+}
+
 Mesh convertMesh(const LoadContext& context, const tinygltf::Model& model, const nlohmann::json& document,
                  const std::vector<Material>& materials, std::size_t meshIndex) {
     const tinygltf::Mesh& source = model.meshes[meshIndex];
@@ -179,6 +260,7 @@ Mesh convertMesh(const LoadContext& context, const tinygltf::Model& model, const
         }
     }
     mesh.closed = isClosedSurface(mesh);
+    readMorphWeights(context, source, meshObject, mesh);
     return mesh;
 }
 

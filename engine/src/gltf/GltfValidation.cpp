@@ -81,6 +81,10 @@ void validateMeshReferences(const LoadContext& context, const tinygltf::Model& m
                 requireIndex(context, object, ("attribute " + semantic + ": accessor").c_str(), accessor,
                              model.accessors.size(), false);
             requireIndex(context, object, "indices: accessor", primitive.indices, model.accessors.size(), true);
+            for (std::size_t t = 0; t < primitive.targets.size(); ++t)
+                for (const auto& [semantic, accessor] : primitive.targets[t])
+                    requireIndex(context, object, (indexed("targets", t) + " " + semantic + ": accessor").c_str(),
+                                 accessor, model.accessors.size(), false);
             requireIndex(context, object, "material", primitive.material, model.materials.size(), true);
             // -1: tinygltf's "absent", which means TRIANGLES.
             if (primitive.mode < -1 || primitive.mode > TINYGLTF_MODE_TRIANGLE_FAN)
@@ -110,9 +114,16 @@ void validateNodeReferences(const LoadContext& context, const tinygltf::Model& m
         const std::string object = indexedNamed("nodes", i, node.name);
         requireIndex(context, object, "mesh", node.mesh, model.meshes.size(), true);
         requireIndex(context, object, "camera", node.camera, model.cameras.size(), true);
+        requireIndex(context, object, "skin", node.skin, model.skins.size(), true);
         requireIndex(context, object, "KHR_lights_punctual light", nodeLightIndex(context, node, i), lightCount, true);
         for (int child : node.children)
             requireIndex(context, object, "child node", child, model.nodes.size(), false);
+    }
+    for (std::size_t k = 0; k < model.skins.size(); ++k) {
+        const std::string object = indexedNamed("skins", k, model.skins[k].name);
+        for (int joint : model.skins[k].joints) requireIndex(context, object, "joint node", joint, model.nodes.size(), false);
+        requireIndex(context, object, "inverseBindMatrices: accessor", model.skins[k].inverseBindMatrices,
+                     model.accessors.size(), true);
     }
     for (std::size_t s = 0; s < model.scenes.size(); ++s)
         for (int root : model.scenes[s].nodes)

@@ -82,7 +82,7 @@ int lightTypeCode(Light::Type type) {
 std::vector<unsigned> variantsInUse(const Scene& scene, const SceneGpu& gpu) {
     std::vector<unsigned> variants;
     for (int mesh = 0; mesh < static_cast<int>(scene.meshes.size()); ++mesh)
-        for (const SceneGpu::Primitive& primitive : gpu.primitives(mesh))
+        for (const SceneGpu::Primitive& primitive : gpu.meshPrimitives(mesh))
             if (const unsigned variant = materialFeatures(scene, gpu, primitive, MaterialUse::Shading);
                 std::find(variants.begin(), variants.end(), variant) == variants.end())
                 variants.push_back(variant);
@@ -184,7 +184,7 @@ void LitPass::drawScene(const Frame& frame, const Variants& programs, PassContex
         const glm::dmat3 normalMatrix = glm::transpose(glm::inverse(glm::dmat3(modelView)));
         // A mirroring transform turns counter-clockwise triangles clockwise on screen.
         glFrontFace(glm::determinant(glm::dmat3(instance.world)) < 0.0 ? GL_CW : GL_CCW);
-        for (const SceneGpu::Primitive& primitive : frame.gpu().primitives(instance.mesh)) {
+        for (const SceneGpu::Primitive& primitive : frame.gpu().primitives(instance)) {
             const Material& material = materialOf(scene, primitive);
             const unsigned variant = materialFeatures(scene, frame.gpu(), primitive, MaterialUse::Shading);
             const gl::Program& program = *programs[variant];

@@ -80,6 +80,8 @@ FrameResult Renderer::renderFrame(const FrameRequest& request) {
     if (!color_.id() || color_.width() != width || color_.height() != height)
         color_ = gl::Texture::create2D(GL_SRGB8_ALPHA8, width, height);
 
+    // Skinned and morphed instances posed since the last frame (the scene is the caller's).
+    gpu_->updateDeformed(*scene_);
     RenderGraph graph;
     Frame frame(*scene_, *gpu_, graph, request.camera, frameIndex_++);
     const ResourceHandle color =

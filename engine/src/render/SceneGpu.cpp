@@ -1,10 +1,12 @@
 #include "engine/render/SceneGpu.h"
 
+#include "engine/scene/Deform.h"
 #include "engine/scene/Scene.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 
 namespace engine {
@@ -12,17 +14,28 @@ namespace engine {
 namespace {
 
 template <typename T>
-gl::Buffer uploadArray(const std::vector<T>& data) {
-    return gl::Buffer::create(data.size() * sizeof(T), data.data());
+gl::Buffer uploadArray(const std::vector<T>& data, GLbitfield storageFlags = 0) {
+    return gl::Buffer::create(data.size() * sizeof(T), data.data(), storageFlags);
 }
 
-SceneGpu::Primitive uploadPrimitive(const engine::Primitive& source, const glm::dvec3& origin) {
+template <typename T>
+void updateArray(gl::Buffer& buffer, const std::vector<T>& data) {
+    buffer.update(0, data.size() * sizeof(T), data.data());
+}
+
+std::vector<glm::vec3> relativeTo(const std::vector<glm::vec3>& positions, const glm::dvec3& origin) {
+    std::vector<glm::vec3> relative(positions.size());
+    for (std::size_t i = 0; i < relative.size(); ++i) relative[i] = glm::vec3(glm::dvec3(positions[i]) - origin);
+    return relative;
+}
+
+// The source primitive's buffers with the given positions (relative to the draw's origin)
+// and normals; `storageFlags` lets those two be updated (deformed instances).
+SceneGpu::Primitive uploadPrimitive(const engine::Primitive& source, const std::vector<glm::vec3>& positions,
+                                    const std::vector<glm::vec3>& normals, GLbitfield storageFlags = 0) {
     SceneGpu::Primitive gpu;
-    std::vector<glm::vec3> relative(source.positions.size());
-    for (std::size_t i = 0; i < relative.size(); ++i)
-        relative[i] = glm::vec3(glm::dvec3(source.positions[i]) - origin);
-    gpu.positions = uploadArray(relative);
-    gpu.normals = uploadArray(source.normals);
+    gpu.positions = uploadArray(positions, storageFlags);
+    gpu.normals = uploadArray(normals, storageFlags);
     gpu.indices = uploadArray(source.indices);
     gpu.indexCount = static_cast<std::int32_t>(source.indices.size());
     gpu.material = source.material;
@@ -73,7 +86,8 @@ SceneGpu::SceneGpu(const Scene& scene) {
         const glm::dvec3 origin = mesh.bounds.empty() ? glm::dvec3(0.0) : mesh.bounds.center();
         std::vector<Primitive> primitives;
         for (const engine::Primitive& primitive : mesh.primitives)
-            if (!primitive.indices.empty()) primitives.push_back(uploadPrimitive(primitive, origin));
+            if (!primitive.indices.empty())
+                primitives.push_back(uploadPrimitive(primitive, relativeTo(primitive.positions, origin), primitive.normals));
         meshes_.push_back(std::move(primitives));
         meshOrigins_.push_back(origin);
     }
@@ -93,9 +107,52 @@ SceneGpu::SceneGpu(const Scene& scene) {
         }
         materialTexture_.push_back(static_cast<int>(found - uploaded.begin()));
     }
+    updateDeformed(scene);
+}
+
+void SceneGpu::updateDeformed(const Scene& scene) {
+    std::unordered_map<int, DeformedInstance> kept;
+    for (const MeshInstance& instance : scene.meshInstances) {
+        if (!instance.deformed) continue;
+        auto found = deformed_.find(instance.node);
+        DeformedInstance gpu;
+        if (found != deformed_.end() && found->second.mesh == instance.mesh) gpu = std::move(found->second);
+        if (gpu.pose != instance.deformed) upload(gpu, scene.meshes.at(instance.mesh), *instance.deformed);
+        gpu.mesh = instance.mesh;
+        gpu.pose = instance.deformed;
+        kept.emplace(instance.node, std::move(gpu));
+    }
+    deformed_ = std::move(kept);
+}
+
+void SceneGpu::upload(DeformedInstance& gpu, const Mesh& mesh, const DeformedMesh& pose) {
+    const bool fresh = gpu.primitives.empty();
+    std::size_t drawn = 0;
+    for (std::size_t p = 0; p < mesh.primitives.size(); ++p) {
+        if (mesh.primitives[p].indices.empty()) continue;  // as the meshes' list skips them
+        const DeformedPrimitive& posed = pose.primitives.at(p);
+        if (fresh) {
+            gpu.primitives.push_back(uploadPrimitive(mesh.primitives[p], posed.positions, posed.normals, GL_DYNAMIC_STORAGE_BIT));
+        } else {
+            updateArray(gpu.primitives.at(drawn).positions, posed.positions);
+            updateArray(gpu.primitives.at(drawn).normals, posed.normals);
+        }
+        ++drawn;
+    }
+}
+
+const std::vector<SceneGpu::Primitive>& SceneGpu::primitives(const MeshInstance& instance) const {
+    if (instance.deformed) {
+        const auto found = deformed_.find(instance.node);
+        assert(found != deformed_.end() && found->second.pose == instance.deformed &&
+               "SceneGpu::updateDeformed(scene) was not called after the scene changed");
+        if (found != deformed_.end()) return found->second.primitives;
+    }
+    return meshes_.at(instance.mesh);
 }
 
 glm::dmat4 SceneGpu::modelMatrix(const MeshInstance& instance) const {
+    if (instance.deformed) return glm::translate(instance.world, instance.deformed->origin);
     return glm::translate(instance.world, meshOrigins_.at(instance.mesh));
 }
 

@@ -2,6 +2,8 @@
 // every pass works from (M: object -> world, see Scene.h).
 #include "engine/scene/Scene.h"
 
+#include "engine/scene/Deform.h"
+
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <cassert>
@@ -19,6 +21,27 @@ std::size_t Mesh::triangleCount() const {
     return std::accumulate(primitives.begin(), primitives.end(), std::size_t{0},
                            [](std::size_t sum, const Primitive& p) { return sum + p.triangleCount(); });
 }
+
+namespace {
+
+// World transforms of nodes the displayed scene does not reach (a skin's joints may lie
+// outside it): composed up their parent chains, each node once.
+void composeUnvisitedWorlds(std::vector<Node>& nodes, std::vector<bool> done) {
+    std::vector<int> chain;
+    for (std::size_t start = 0; start < nodes.size(); ++start) {
+        chain.clear();
+        for (int n = static_cast<int>(start); n >= 0 && !done[n]; n = nodes[n].parent) {
+            chain.push_back(n);
+            done[n] = true;  // also ends the walk if a hand-built scene has a parent cycle
+        }
+        for (auto n = chain.rbegin(); n != chain.rend(); ++n) {
+            const Node& node = nodes[*n];
+            nodes[*n].world = node.parent >= 0 ? nodes[node.parent].world * node.local : node.local;
+        }
+    }
+}
+
+} // namespace
 
 void Scene::updateWorldTransforms() {
     // The previous call's instances by node, to carry revisions of instances that stayed put.
@@ -63,11 +86,6 @@ void Scene::updateWorldTransforms() {
             instance.worldBounds = meshes[node.mesh].bounds.transformed(node.world);
             instance.castShadows = node.castShadows;
             instance.receiveShadows = node.receiveShadows;
-            const auto before = previousByNode.find(pending.node);
-            const bool unchanged = before != previousByNode.end() && before->second->mesh == node.mesh &&
-                                   before->second->world == node.world;
-            instance.revision = unchanged ? before->second->revision : ++lastInstanceRevision;
-            worldBounds.extend(instance.worldBounds);
             meshInstances.push_back(instance);
         }
         if (node.light >= 0) {
@@ -80,6 +98,29 @@ void Scene::updateWorldTransforms() {
         }
         for (auto child = node.children.rbegin(); child != node.children.rend(); ++child)
             stack.push_back({*child, node.world});
+    }
+    composeUnvisitedWorlds(nodes, visited);
+
+    // Deformed instances after the traversal: a skin's joints may come after its mesh.
+    for (MeshInstance& instance : meshInstances) {
+        const Node& node = nodes[instance.node];
+        const auto before = previousByNode.find(instance.node);
+        const MeshInstance* previousInstance = before != previousByNode.end() ? before->second : nullptr;
+        if (isDeformed(*this, node)) {
+            auto deformed = std::make_shared<const DeformedMesh>(deformMesh(*this, node));
+            // Keep the previous pose's object when the vertices did not move, so the GPU
+            // copy and the revision stay.
+            if (previousInstance && previousInstance->deformed && *previousInstance->deformed == *deformed)
+                deformed = previousInstance->deformed;
+            if (node.skin >= 0) instance.world = glm::dmat4(1.0);
+            instance.worldBounds = deformed->bounds.transformed(instance.world);
+            instance.deformed = std::move(deformed);
+        }
+        const bool unchanged = previousInstance && previousInstance->mesh == instance.mesh &&
+                               previousInstance->world == instance.world &&
+                               previousInstance->deformed == instance.deformed;
+        instance.revision = unchanged ? previousInstance->revision : ++lastInstanceRevision;
+        worldBounds.extend(instance.worldBounds);
     }
 }
 

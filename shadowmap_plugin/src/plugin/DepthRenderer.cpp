@@ -122,7 +122,7 @@ DepthDrawCounts DepthRenderer::draw(const engine::Frame& frame, engine::PassCont
         glFrontFace(glm::determinant(glm::dmat3(instance.world)) < 0.0 ? GL_CW : GL_CCW);
         // P_light * L^-1 * M in double: only the light-relative product is rounded.
         const glm::mat4 lightModelViewProjection(viewProjection * gpu.modelMatrix(instance));
-        for (const auto& primitive : gpu.primitives(instance.mesh)) {
+        for (const auto& primitive : gpu.primitives(instance)) {
             if (!primitive.castShadows) continue;  // KHR_lights_shadows on the primitive
             const unsigned features =
                 engine::materialFeatures(scene, gpu, primitive, engine::MaterialUse::ShadowCasting);

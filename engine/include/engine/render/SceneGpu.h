@@ -8,12 +8,16 @@
 #include <glm/glm.hpp>
 
 #include <cstdint>
+#include <memory>
+#include <unordered_map>
 #include <vector>
 
 namespace engine {
 
 struct Scene;
+struct Mesh;
 struct MeshInstance;
+struct DeformedMesh;
 
 // Vertex attribute locations every engine and plugin shader uses.
 constexpr unsigned kAttribPosition = 0;
@@ -37,11 +41,20 @@ public:
 
     explicit SceneGpu(const Scene& scene);
 
-    const std::vector<Primitive>& primitives(int mesh) const { return meshes_.at(mesh); }
+    // Uploads the posed vertices of the scene's deformed instances (skinned or morphed,
+    // MeshInstance::deformed) that changed since the last call, and drops those that are
+    // gone. Call after Scene::updateWorldTransforms, before drawing (Renderer does).
+    void updateDeformed(const Scene& scene);
+
+    // What to draw for an instance: its posed copy when deformed, else its mesh's.
+    const std::vector<Primitive>& primitives(const MeshInstance& instance) const;
+    // A mesh's primitives as loaded (materials, counts; not for drawing an instance).
+    const std::vector<Primitive>& meshPrimitives(int mesh) const { return meshes_.at(mesh); }
     // The model matrix to draw an instance's primitives with: M times the translation to the
-    // mesh's bounds centre. Vertices are uploaded relative to that centre (subtracted in
-    // double), so a mesh whose vertices sit 10^6 from the origin keeps its float precision;
-    // every drawer must use this, not MeshInstance::world alone.
+    // mesh's bounds centre (a deformed instance: its pose's origin). Vertices are uploaded
+    // relative to that centre (subtracted in double), so a mesh whose vertices sit 10^6
+    // from the origin keeps its float precision; every drawer must use this, not
+    // MeshInstance::world alone.
     glm::dmat4 modelMatrix(const MeshInstance& instance) const;
     // Binds the primitive's vertex array and draws it; returns its triangle count.
     std::uint64_t draw(const Primitive& primitive) const;
@@ -50,7 +63,17 @@ public:
     unsigned baseColorTexture(int material) const;
 
 private:
+    // A deformed instance's own vertex buffers (positions and normals updatable; the rest
+    // copied from its mesh), by node.
+    struct DeformedInstance {
+        int mesh = -1;
+        std::shared_ptr<const DeformedMesh> pose;  // what was uploaded
+        std::vector<Primitive> primitives;
+    };
+    static void upload(DeformedInstance& gpu, const Mesh& mesh, const DeformedMesh& pose);
+
     std::vector<std::vector<Primitive>> meshes_;
+    std::unordered_map<int, DeformedInstance> deformed_;
     std::vector<glm::dvec3> meshOrigins_;      // per mesh: its bounds' centre
     // One texture per distinct (image, sampler) the materials use: the sampler's state
     // lives on the texture, so binding it is all a pass does (no sampler object left bound

@@ -10,6 +10,7 @@ struct Aabb {
     glm::dvec3 min{std::numeric_limits<double>::infinity()};
     glm::dvec3 max{-std::numeric_limits<double>::infinity()};
 
+    bool operator==(const Aabb&) const = default;
     bool empty() const { return min.x > max.x || min.y > max.y || min.z > max.z; }
     void extend(const glm::dvec3& p) { min = glm::min(min, p); max = glm::max(max, p); }
     void extend(const Aabb& other) {

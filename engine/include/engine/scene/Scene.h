@@ -10,11 +10,21 @@
 #include <nlohmann/json.hpp>
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 namespace engine {
+
+struct DeformedMesh;
+
+// A morph target of a primitive: per-vertex offsets added, weighted, to the base shape
+// (glTF 2.0 section 3.7.2.2). `normals` is empty when the target moves no normal.
+struct MorphTarget {
+    std::vector<glm::vec3> positions;
+    std::vector<glm::vec3> normals;
+};
 
 // Triangles only: the loader converts strips and fans; points and lines are dropped with
 // a warning. Positions are in object space (float, as glTF stores them).
@@ -25,6 +35,11 @@ struct Primitive {
     std::vector<glm::vec2> texcoords1;  // empty when the primitive has no TEXCOORD_1
     // COLOR_0 as linear RGBA (vec3 colors get alpha 1); empty when absent (white).
     std::vector<glm::vec4> colors;
+    // JOINTS_0 / WEIGHTS_0 (empty when absent): four joints per vertex, as indices into the
+    // node's Skin::joints, and their weights, normalized by the loader to sum to 1.
+    std::vector<glm::uvec4> joints;
+    std::vector<glm::vec4> weights;
+    std::vector<MorphTarget> targets;    // the same count in every primitive of a mesh
     std::vector<std::uint32_t> indices;  // triangle list; 3 per triangle
     int material = -1;                   // index into Scene::materials, -1 = default material
     // KHR_lights_shadows on the primitive (default true). They combine with the node's
@@ -42,7 +57,8 @@ struct Mesh {
     // triangles that traverse it in opposite directions (a watertight, consistently wound
     // surface). The backface shadow variant is only valid for closed meshes.
     bool closed = false;
-    Aabb bounds;  // object space, union of the primitives
+    Aabb bounds;  // object space, union of the primitives (the base shape)
+    std::vector<float> weights;  // default morph target weights (one per target; zeros if unset)
     std::size_t triangleCount() const;
 };
 
@@ -136,6 +152,16 @@ struct Light {
     nlohmann::json extras = nlohmann::json::object();
 };
 
+// glTF skin: the nodes whose world transforms pose a skinned mesh, with each joint's inverse
+// bind matrix (identity when the file gives none). A skinned vertex's world position is
+// sum_i w_i * world(joints[j_i]) * inverseBindMatrices[j_i] * p; the mesh node's own
+// transform is not applied (glTF 2.0 section 3.7.3).
+struct Skin {
+    std::string name;
+    std::vector<int> joints;  // valid node indices, at least one
+    std::vector<glm::dmat4> inverseBindMatrices;  // one per joint
+};
+
 struct Node {
     std::string name;
     int parent = -1;
@@ -146,7 +172,10 @@ struct Node {
     glm::dvec3 translation{0.0};
     glm::dquat rotation{1.0, 0.0, 0.0, 0.0};  // unit, (w, x, y, z) as glm stores it
     glm::dvec3 scale{1.0};
-    std::vector<float> weights;  // morph target weights an animation set (none at rest)
+    // Morph target weights: the node's own (glTF node.weights) or an animation's; empty =
+    // the mesh's defaults.
+    std::vector<float> weights;
+    int skin = -1;  // index into Scene::skins, -1 = none (only with a mesh)
     glm::dmat4 trsMatrix() const;  // T * R * S
     glm::dmat4 world{1.0};  // filled by Scene::updateWorldTransforms
     int mesh = -1, camera = -1, light = -1;
@@ -167,7 +196,12 @@ struct MeshInstance {
     // world matrix did not change between them; a changed instance gets a value the scene
     // never used before. Caches of what an instance looks like (a light's shadow map) key
     // on it, so they see a caster move and keep their contents while it stands still.
+    // A deformed instance's revision also changes when its vertices do.
     std::uint64_t revision = 0;
+    // Skinned or morphed: the vertices as posed now (Deform.h), shared by every pass and by
+    // the truth; world is then the frame they are given in (identity for a skinned mesh).
+    // Null for an instance drawn from its mesh as loaded.
+    std::shared_ptr<const DeformedMesh> deformed;
 };
 
 // A light or camera placed by a node: world = L (light -> world) or V (eye -> world).
@@ -194,6 +228,7 @@ struct Scene {
     std::vector<Camera> cameras;
     std::vector<Light> lights;
     std::vector<Animation> animations;
+    std::vector<Skin> skins;
 
     // Filled by updateWorldTransforms(), in depth-first order from the roots.
     std::vector<MeshInstance> meshInstances;
