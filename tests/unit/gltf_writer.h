@@ -200,7 +200,7 @@ inline int addSlideTurnGrowAnimation(GltfBuilder& b, int node) {
 // bound there: inverse bind matrix T(0, -1, 0)); vertex 3 is half Root, half Tip.
 inline GltfBuilder skinnedQuad() {
     GltfBuilder b;
-    const int positions = b.addFloats({0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0}, 3, "VEC3");
+    const int positions = b.addPositions({0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0});
     const std::vector<std::uint8_t> joints = {0, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0};
     const int jointAccessor = b.addAccessor(b.addView(joints.data(), joints.size()), kUnsignedByte, 4, "VEC4");
     const int weights = b.addFloats({1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 0.5f, 0.5f, 0, 0}, 4, "VEC4");

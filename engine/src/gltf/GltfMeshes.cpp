@@ -235,13 +235,7 @@ void readMorphWeights(const LoadContext& context, const tinygltf::Mesh& source, 
         mesh.weights.assign(targets, 0.0f);
         return;
     }
-    if (source.weights.size() != targets)
-        context.fail(object, "weights has " + std::to_string(source.weights.size()) + " entries for " +
-                                 std::to_string(targets) + " morph targets");
-    for (const double weight : source.weights) {
-        if (!std::isfinite(weight)) context.fail(object, "weights holds " + formatNumber(weight) + ", not a finite number");
-        mesh.weights.push_back(static_cast<float>(weight));
-    }
+    mesh.weights = checkedMorphWeights(context, object, source.weights, targets, "morph targets");
 }
 
 Mesh convertMesh(const LoadContext& context, const tinygltf::Model& model, const nlohmann::json& document,
@@ -265,6 +259,19 @@ Mesh convertMesh(const LoadContext& context, const tinygltf::Model& model, const
 }
 
 } // namespace
+
+std::vector<float> checkedMorphWeights(const LoadContext& context, const std::string& object,
+                                       const std::vector<double>& weights, std::size_t targets, const char* targetsName) {
+    if (weights.size() != targets)
+        context.fail(object, "weights has " + std::to_string(weights.size()) + " entries for " + std::to_string(targets) +
+                                 " " + targetsName);
+    std::vector<float> out;
+    for (const double weight : weights) {
+        if (!std::isfinite(weight)) context.fail(object, "weights holds " + formatNumber(weight) + ", not a finite number");
+        out.push_back(static_cast<float>(weight));
+    }
+    return out;
+}
 
 std::vector<std::uint32_t> triangleList(int mode, const std::vector<std::uint32_t>& indices) {
     if (mode == TINYGLTF_MODE_TRIANGLES) return indices;

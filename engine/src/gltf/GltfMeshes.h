@@ -17,6 +17,11 @@ namespace engine::gltf {
 // TRIANGLE_STRIP / TRIANGLE_FAN with the winding the glTF spec defines for each).
 std::vector<std::uint32_t> triangleList(int mode, const std::vector<std::uint32_t>& indices);
 
+// glTF `weights` (of a mesh or a node) as floats: exactly `targets` finite values, else a
+// failure naming `object` ("... entries for 2 <targetsName>").
+std::vector<float> checkedMorphWeights(const LoadContext& context, const std::string& object,
+                                       const std::vector<double>& weights, std::size_t targets, const char* targetsName);
+
 // `document` is our own parse (primitive extensions); `materials` the converted materials,
 // so a primitive lacking the UV set its material's texture samples can be reported.
 std::vector<Mesh> convertMeshes(const LoadContext& context, const tinygltf::Model& model,

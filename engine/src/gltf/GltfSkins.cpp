@@ -1,8 +1,8 @@
 #include "GltfSkins.h"
 
 #include "GltfAccessors.h"
+#include "GltfMeshes.h"
 
-#include <cmath>
 #include <set>
 #include <string>
 
@@ -82,13 +82,7 @@ void attachDeformers(const LoadContext& context, const tinygltf::Model& model, c
         if (source.weights.empty()) continue;
         const std::size_t targets =
             node.mesh >= 0 && !meshes[node.mesh].primitives.empty() ? meshes[node.mesh].primitives.front().targets.size() : 0;
-        if (source.weights.size() != targets)
-            context.fail(object, "weights has " + std::to_string(source.weights.size()) + " entries for " +
-                                     std::to_string(targets) + " morph targets of its mesh");
-        for (const double weight : source.weights) {
-            if (!std::isfinite(weight)) context.fail(object, "weights holds " + formatNumber(weight) + ", not a finite number");
-            node.weights.push_back(static_cast<float>(weight));
-        }
+        node.weights = checkedMorphWeights(context, object, source.weights, targets, "morph targets of its mesh");
     }
 }
 
