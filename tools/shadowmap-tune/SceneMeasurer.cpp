@@ -83,15 +83,17 @@ std::vector<std::optional<Measured>> SceneMeasurer::collect(const evaluation::Tr
         const auto found = byLight.find(lights_[i]);
         if (found == byLight.end()) continue;
         Measured m;
-        std::vector<truth::ShadowErrors> errors;
+        std::vector<truth::ShadowErrors> errors, areaErrors;
         for (const evaluation::LightResult* instance : found->second) {
             m.ms += instance->shadowMs;
             errors.push_back(instance->errors);
+            areaErrors.push_back(instance->areaErrors);
         }
         const truth::ShadowErrors pooled = evaluation::pooledErrors(errors);
-        m.acne = 100.0 * pooled.acne;
-        m.leak = 100.0 * pooled.leak;
-        m.error = 100.0 * pooled.error;
+        const truth::ShadowErrors area = evaluation::pooledErrors(areaErrors);
+        m.acne = 100.0 * area.acne;
+        m.leak = 100.0 * area.leak;
+        m.error = 100.0 * area.error;
         m.errorNoEdge = 100.0 * pooled.errorNoEdge;
         m.evaluated = pooled.evaluated;
         out[i] = m;

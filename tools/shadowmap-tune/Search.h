@@ -30,7 +30,9 @@ namespace shadowmap_tune {
 struct Measured {
     Candidate setting;
     double ms = 0.0;  // shadow passes' wall time per frame
-    // Percent of the evaluation set, pooled over the views (docs/metrics.md).
+    // Percent of the evaluation set, pooled over the views (docs/metrics.md): acne, leak and
+    // error against the area truth (the lit fraction of each pixel, what the search ranks
+    // by); errorNoEdge against the one-ray truth, away from its shadow edges.
     double acne = 0.0, leak = 0.0, error = 0.0, errorNoEdge = 0.0;
     std::size_t evaluated = 0;  // |E| over all views
 };

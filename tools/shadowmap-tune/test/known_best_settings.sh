@@ -3,8 +3,10 @@
 # exceed, the choice is the lowest error (expected cost, not time, breaks exact ties), and at one size,
 # format and filter the variants compete on error alone (the offset fit is error-driven
 # too), so the result does not depend on the machine's load.
-#  - closed boxes under a low light: backface measured 0.050 % error, standard with its
-#    fitted offset 0.057 %, woo 0.064 % (1024 d24 nearest, 160x120, both cameras);
+#  - closed boxes under a low light: backface measured 0.412 % area error, standard with
+#    its fitted offset 0.420 %, woo 0.427 % (1024 d24 nearest, 160x120, both cameras; most
+#    of it is the hard edges' partial pixels, which all three share; off edges backface errs
+#    on no pixel, the others on one);
 #  - open cards: backface would be standard by another name (the plugin draws open casters
 #    two-sided), so it is never measured and never chosen.
 source "$(dirname "$0")/common.sh" "$@"

@@ -8,14 +8,18 @@ tune --scene "$work/zero_offset.gltf" --variants standard --budget-ms 100000 --o
   --report "$work/zero.json" > "$work/zero.log"
 cat "$work/zero.log"
 light="r['lights'][0]"
-# Zero offset: acne measured 4.6 % (160x120, both cameras); asserting above 1 % leaves room for
-# any rasterizer difference while staying far above the tuned value.
+# Area errors (the tuner's): zero offset acne measured 4.74 % (160x120, both cameras);
+# asserting above 1 % leaves room for any rasterizer difference while staying far above the
+# tuned value.
 json "$work/zero.json" "$light['before']['acne'] > 1.0" | grep -qx True || fail "the zero offset shows no acne"
-# Tuned: acne 0.036 % and leak 0.021 % measured (6 and 4 pixels of the pooled evaluation set
-# of 17k pixels, at the boxes' outlines, where the low light's grazing texels cut them).
-# Bound 0.1 % (17 pixels) each: room for another rasterizer's rounding, and still 1/46 of the
-# zero offset's acne; a leak beyond it would be shadows lifted off the boxes' feet.
-json "$work/zero.json" "$light['after']['acne'] < 0.1 and $light['after']['leak'] < 0.1" | grep -qx True \
+# Tuned: area acne 0.185 % and leak 0.234 % measured. Both are the hard edge's partial
+# pixels (a binary shade on a pixel the edge crosses), not self-shadowing: away from truth's
+# edges the tuned setting errs on 0.008 % (1 pixel of the pooled 14k). Bounds: area acne
+# below 0.4 % (twice the measured, and 1/12 of the zero offset's); leak at most the zero
+# offset's own (0.236 %, the same edges) plus 0.05 % (7 pixels), so the offset lifts no
+# shadow off the boxes' feet; off-edge error below 0.1 % (14 pixels).
+json "$work/zero.json" "$light['after']['acne'] < 0.4 and $light['after']['leak'] <= $light['before']['leak'] + 0.05 \
+  and $light['after']['error_noedge'] < 0.1" | grep -qx True \
   || fail "the tuned offset leaves acne or leak: $(json "$work/zero.json" "$light['after']")"
 # The fit is reported, and the fitted offset errs no more than the default it started from.
 json "$work/zero.json" "'offset_fit' in $light and $light['offset_fit']['fitted']['error'] <= $light['offset_fit']['default']['error']" \
