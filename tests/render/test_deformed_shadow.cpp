@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -39,6 +40,9 @@ const DeformedFile kFiles[] = {
     // The weights run over 4.2 s; at 2 s the cube is thin.
     {"morph_cube", "glTF-Sample-Models/AnimatedMorphCube-glTF/AnimatedMorphCube.gltf", {"0", "1", "2"}, 350},
 };
+
+// gtest names a parameter by this (else it prints the struct's bytes).
+void PrintTo(const DeformedFile& file, std::ostream* out) { *out << file.name; }
 
 class DeformedShadow : public ::testing::TestWithParam<DeformedFile> {
 protected:
