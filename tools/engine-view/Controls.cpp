@@ -10,6 +10,8 @@ namespace engine_view {
 
 namespace {
 
+constexpr double kScrubStep = 0.1;  // seconds per Left / Right press
+
 Controls& controlsOf(GLFWwindow* window) { return *static_cast<Controls*>(glfwGetWindowUserPointer(window)); }
 
 } // namespace
@@ -28,6 +30,9 @@ int Controls::keyFromName(const std::string& name) {
         }
     }
     if (name == "Tab") return GLFW_KEY_TAB;
+    if (name == "Space") return GLFW_KEY_SPACE;
+    if (name == "Left") return GLFW_KEY_LEFT;
+    if (name == "Right") return GLFW_KEY_RIGHT;
     if (name == "Esc" || name == "Escape") return GLFW_KEY_ESCAPE;
     if (name == "comma") return GLFW_KEY_COMMA;
     if (name == "period") return GLFW_KEY_PERIOD;
@@ -48,6 +53,9 @@ void Controls::pressKey(int key) {
     case GLFW_KEY_PERIOD: state_.addDimming(0.05); break;
     case GLFW_KEY_D: state_.nextView(); break;
     case GLFW_KEY_O: requests_.overlay = !requests_.overlay; break;
+    case GLFW_KEY_SPACE: playback_.togglePlaying(); break;
+    case GLFW_KEY_LEFT: playback_.seek(playback_.seconds() - kScrubStep); break;
+    case GLFW_KEY_RIGHT: playback_.seek(playback_.seconds() + kScrubStep); break;
     case GLFW_KEY_S: requests_.save = true; break;
     case GLFW_KEY_ESCAPE: requests_.quit = true; break;
     case GLFW_KEY_0: camera_.select(-1); break;

@@ -3,6 +3,7 @@
 // into one edit of the ViewerState, a move of the OrbitCamera, or a request to the frame
 // loop (save, quit, overlay, status message).
 #include "OrbitCamera.h"
+#include "Playback.h"
 #include "ViewerState.h"
 
 #include <string>
@@ -31,8 +32,8 @@ struct LoopRequests {
 
 class Controls {
 public:
-    Controls(ViewerState& state, OrbitCamera& camera, LoopRequests& requests)
-        : state_(state), camera_(camera), requests_(requests) {}
+    Controls(ViewerState& state, OrbitCamera& camera, Playback& playback, LoopRequests& requests)
+        : state_(state), camera_(camera), playback_(playback), requests_(requests) {}
 
     // Installs the key, mouse, scroll, size and refresh callbacks (the window's user
     // pointer is this object, which must outlive the window's events).
@@ -40,19 +41,23 @@ public:
 
     // One press of a key (GLFW_KEY_*); unbound keys do nothing.
     void pressKey(int key);
-    // A key by the name a script uses: a letter or digit, "Tab", "Esc", "[", "]", ",", ".";
+    // A key by the name a script uses: a letter or digit, "Tab", "Esc", "Space", "Left",
+    // "Right", "[", "]", ",", ".";
     // GLFW_KEY_UNKNOWN (-1) for any other name.
     static int keyFromName(const std::string& name);
 
     void orbit(double dx, double dy) { camera_.orbit(dx, dy); requests_.redraw = true; }
     void pan(double dx, double dy, int viewportHeight) { camera_.pan(dx, dy, viewportHeight); requests_.redraw = true; }
     void zoom(double steps) { camera_.zoom(steps); requests_.redraw = true; }
+    void seek(double seconds) { playback_.seek(seconds); requests_.redraw = true; }
+    void setPlaying(bool playing) { playback_.setPlaying(playing); requests_.redraw = true; }
 
 private:
     void cursorMoved(GLFWwindow* window, double x, double y);
 
     ViewerState& state_;
     OrbitCamera& camera_;
+    Playback& playback_;
     LoopRequests& requests_;
     int dragButton_ = -1;  // GLFW_MOUSE_BUTTON_* held, -1 none
     double lastX_ = 0.0, lastY_ = 0.0;

@@ -40,7 +40,8 @@ void OverlayText::recordFrame(const engine::FrameResult& frame, const ViewerStat
 
 std::vector<OverlayLine> OverlayText::lines(const ViewerState& state, const engine::FrameResult& frame,
                                             const std::vector<std::string>& notes, const std::string& camera,
-                                            const std::string& status, bool statusIsError) const {
+                                            const std::string& animation, const std::string& status,
+                                            bool statusIsError) const {
     std::vector<OverlayLine> out;
     const int selected = state.selected();
     out.push_back({format("frame %.1f ms   view: %s%s   camera: %s", frame.frameMs, viewName(state.view()),
@@ -75,6 +76,7 @@ std::vector<OverlayLine> OverlayText::lines(const ViewerState& state, const engi
         }
         out.push_back({line, static_cast<int>(i) == selected ? kSelected : kPlain});
     }
+    if (!animation.empty()) out.push_back({animation, kNote});
     for (const std::string& note : notes) out.push_back({note, kNote});
     if (!status.empty()) out.push_back({status, statusIsError ? kError : kNote});
     out.push_back({"Tab light  V variant  R size  F format  P filter  [ ] offset units  , . dimming", kHelp});

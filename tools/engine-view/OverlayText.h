@@ -22,7 +22,7 @@ public:
 
     std::vector<OverlayLine> lines(const ViewerState& state, const engine::FrameResult& frame,
                                    const std::vector<std::string>& notes, const std::string& camera,
-                                   const std::string& status, bool statusIsError) const;
+                                   const std::string& animation, const std::string& status, bool statusIsError) const;
 
     // Where the frame's lit pass took light `slot`'s shade from, from FrameResult::shadeCache:
     // "shade reused" (shade cache), "shade computed" (and cached), "shade live" (evaluated,

@@ -21,7 +21,8 @@ const std::map<std::string, Arity> kCommands = {
     {"key", {1, 1}},     {"select", {1, 1}},     {"set", {3, 1 << 20}}, {"view", {1, 1}},
     {"camera", {1, 1}},  {"orbit", {2, 2}},      {"pan", {2, 2}},       {"zoom", {1, 1}},
     {"frames", {1, 1}},  {"screenshot", {1, 1}}, {"save", {0, 1}},      {"overlay", {1, 1}},
-    {"resize", {2, 2}},  {"quit", {0, 0}}};
+    {"resize", {2, 2}},  {"quit", {0, 0}},       {"time", {1, 1}},      {"play", {0, 0}},
+    {"pause", {0, 0}}};
 
 bool parseNumber(const std::string& text, double& value) {
     char* end = nullptr;
@@ -90,6 +91,8 @@ Script Script::parse(const std::string& text, const std::string& fileName) {
             !(parseNumber(command.words[0], number_) && parseNumber(command.words[1], number_)))
             script.fail(command, "DX and DY must be numbers");
         if (command.verb == "zoom" && !parseNumber(command.words[0], number_)) script.fail(command, "STEPS must be a number");
+        if (command.verb == "time" && !(parseNumber(command.words[0], number_) && number_ >= 0.0 && number_ <= 1e6))
+            script.fail(command, "T must be a number of seconds in [0, 1e6]");
         if (command.verb == "frames" && !parseCount(command.words[0], 100000, count_))
             script.fail(command, "N must be an integer in [1, 100000]");
         if (command.verb == "resize" &&
@@ -158,6 +161,12 @@ void Script::step(Controls& controls, ViewerState& state, OrbitCamera& camera, L
     } else if (command.verb == "resize") {
         requests.resizeWidth = static_cast<int>(number(w[0]));
         requests.resizeHeight = static_cast<int>(number(w[1]));
+    } else if (command.verb == "time") {
+        controls.seek(number(w[0]));
+    } else if (command.verb == "play") {
+        controls.setPlaying(true);
+    } else if (command.verb == "pause") {
+        controls.setPlaying(false);
     } else if (command.verb == "quit") {
         requests.quit = true;
     }

@@ -2,7 +2,8 @@
 // --script FILE: a text file of viewer commands, one per line, run one per frame (the
 // frame after a command shows its effect). Blank lines and lines starting with '#' are
 // skipped. The grammar:
-//   key NAME               press a key (Controls::keyFromName: V, Tab, Esc, [, ], ",", ".", 1...)
+//   key NAME               press a key (Controls::keyFromName: V, Tab, Esc, Space, Left, Right,
+//                          [, ], ",", ".", 1...)
 //   select LIGHT           select a light by name
 //   set LIGHT KEY VALUE    set a key of the light's extras.shadow; VALUE is JSON, or a bare
 //                          word taken as a string: `set sun resolution 1024`, `set sun
@@ -17,6 +18,8 @@
 //   save [FILE]            write the scene with the lights' settings (default --save-settings)
 //   overlay on|off         show or hide the text
 //   resize W H             set the window's size
+//   time T                 pose the scene at T seconds and pause (Playback.h)
+//   play / pause           start or stop the animations (1/30 s per scripted frame)
 //   quit                   close the viewer (exit 0)
 // Load checks every line (unknown command, wrong argument count, bad number) and throws
 // InputError "FILE:LINE: reason"; so does a command that cannot be done when it runs (no

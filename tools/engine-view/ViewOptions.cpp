@@ -21,9 +21,12 @@ const char* const kViewUsage =
     "  [--light NAME=VARIANT]...        (--light-set NAME.variant=VARIANT)\n"
     "  [--key-light spot|point|directional] [--ground]  (add a light placed from the bounds,\n"
     "                            printed; a ground under the model to receive its shadow)\n"
+    "  [--time T]               (the scene posed at T seconds; default: at rest)\n"
+    "  [--animate NAME|all]     (play that animation, or all, from T; Space plays all)\n"
     "keys: Tab light, V variant, R resolution, F depth format, P filter, [ ] offset units,\n"
     "      , . dimming, 1-9 glTF cameras, 0 framing camera, D debug view, O overlay,\n"
-    "      S save settings, Esc quit; mouse: left orbit, right/middle pan, wheel zoom\n";
+    "      S save settings, Space play/pause, Left/Right step 0.1 s, Esc quit;\n"
+    "      mouse: left orbit, right/middle pan, wheel zoom\n";
 
 // The largest window or image side the viewer accepts: a typo bound, not a GL limit.
 constexpr int kMaxSize = 16384;
@@ -38,6 +41,8 @@ ViewOptions parseViewOptions(int argc, char** argv) {
         else if (flag == "--width") options.width = tools::parseInteger(flag, value, 1, kMaxSize);
         else if (flag == "--height") options.height = tools::parseInteger(flag, value, 1, kMaxSize);
         else if (flag == "--script") options.script = value;
+        else if (flag == "--time") options.time = tools::parseNumber(flag, value, 0.0, 1e6);
+        else if (flag == "--animate") options.animate = value;
         else if (flag == "--stay") options.stay = true;
         else if (flag == "--screenshot") options.screenshot = value;
         else if (flag == "--save-settings") options.saveSettings = value;

@@ -3,6 +3,7 @@
 #include "LightOverrides.h"
 #include "SceneLighting.h"
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -19,6 +20,8 @@ struct ViewOptions {
     std::string saveSettings;    // --save-settings OUT.gltf|.glb: where S (and `save`) write
     std::vector<tools::LightOverride> lightSettings;  // --light-set NAME.KEY=JSON, --light NAME=VARIANT
     tools::SceneLighting lighting;  // --key-light spot|point|directional, --ground
+    std::optional<double> time;  // --time T: the scene posed at T seconds (Playback.h)
+    std::string animate;         // --animate NAME|all: what plays, playing from the start
     bool help = false;
 };
 

@@ -8,6 +8,7 @@
 #include "OrbitCamera.h"
 #include "Overlay.h"
 #include "OverlayText.h"
+#include "Playback.h"
 #include "Presenter.h"
 #include "SaveSettings.h"
 #include "Script.h"
@@ -30,6 +31,7 @@
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
+#include <chrono>
 #include <cstdio>
 #include <iostream>
 #include <optional>
@@ -72,6 +74,22 @@ void applyLightOptions(const ViewOptions& options, const engine::Scene& scene, V
     }
 }
 
+// A scripted run advances a playing clock by this per frame, whatever the machine's speed.
+constexpr double kScriptedFrameSeconds = 1.0 / 30.0;
+
+// --time and --animate: every animation is chosen (Space plays them), or the one --animate
+// names; the scene is posed at --time (or 0 with --animate), else left at rest.
+Playback startPlayback(const ViewOptions& options, engine::Scene& scene) {
+    tools::AnimationPlayback choice;
+    choice.animations = tools::selectAnimations(scene, options.scene, "--animate",
+                                                options.animate.empty() ? "all" : options.animate);
+    choice.startSeconds = options.time.value_or(0.0);
+    Playback playback(scene, choice);
+    if (options.time || !options.animate.empty()) playback.seek(choice.startSeconds);
+    playback.setPlaying(!options.animate.empty());
+    return playback;
+}
+
 // `context` and `host` live in main(), outside the try block that reports errors: an
 // exception thrown by plugin code must be read before the plugin is unloaded, and the
 // plugin's GL objects must be deleted while the context still exists (host first).
@@ -105,8 +123,9 @@ int run(const ViewOptions& options, std::unique_ptr<engine::GlContext>& context,
     ViewerState state(scene, tools::shadowPluginSettings(config));
     applyLightOptions(options, scene, state, renderer);
     OrbitCamera camera(scene, options.scene, options.camera);
+    Playback playback = startPlayback(options, scene);
     LoopRequests requests;
-    Controls controls(state, camera, requests);
+    Controls controls(state, camera, playback, requests);
     controls.attach(window);
     DebugViews views(renderer, scene);
     Presenter presenter;
@@ -122,7 +141,13 @@ int run(const ViewOptions& options, std::unique_ptr<engine::GlContext>& context,
         requests.say(error.what(), true);
     };
 
+    auto lastFrame = std::chrono::steady_clock::now();
     while (!requests.quit && !context->shouldClose()) {
+        // A playing clock: wall-clock time between frames, or 1/30 s per scripted frame.
+        const auto now = std::chrono::steady_clock::now();
+        const double elapsed = script ? kScriptedFrameSeconds : std::chrono::duration<double>(now - lastFrame).count();
+        lastFrame = now;
+        if (playback.advance(elapsed)) requests.redraw = true;
         const glm::ivec2 size = context->framebufferSize();
         if (size.x > 0 && size.y > 0 && requests.redraw) {
             requests.redraw = false;
@@ -138,8 +163,8 @@ int run(const ViewOptions& options, std::unique_ptr<engine::GlContext>& context,
             overlayText.recordFrame(shown.frame, state);
             presenter.present(shown.image, size.x, size.y);
             if (requests.overlay)
-                overlay.draw(overlayText.lines(state, shown.frame, shown.notes, camera.describe(), requests.status,
-                                               requests.statusIsError),
+                overlay.draw(overlayText.lines(state, shown.frame, shown.notes, camera.describe(), playback.describe(),
+                                               requests.status, requests.statusIsError),
                              size.x, size.y);
             if (!requests.screenshot.empty()) {
                 presenter.screenshot(requests.screenshot, size.x, size.y);

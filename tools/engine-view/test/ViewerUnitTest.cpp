@@ -3,10 +3,12 @@
 #include "DepthImage.h"
 #include "JsonSpans.h"
 #include "OverlayText.h"
+#include "Playback.h"
 #include "SaveSettings.h"
 #include "Script.h"
 #include "ViewerState.h"
 
+#include "engine/gltf/GltfLoader.h"
 #include "engine/util/Error.h"
 
 #include "shadowmap/ShadowSettings.h"
@@ -292,6 +294,34 @@ TEST(OverlayText, SaysWhereEachLightsShadeCameFrom) {
 // The cube strip's face labels (engine-render --shadow-map, the depth view): each face
 // carries its own name in its top-left corner, black on white, and nothing else changes but
 // the one-pixel seam between faces.
+// Debian's simple_skin: one animation over 0-5.5 s turning a skin joint.
+TEST(Playback, SeeksPausesAndWrapsOverTheAnimationsSpan) {
+    engine::Scene scene = engine::loadGltf("/usr/share/assimp/models/glTF2/simple_skin/simple_skin.gltf");
+    ASSERT_EQ(scene.animations.size(), 1u);
+    tools::AnimationPlayback choice;
+    choice.animations = {0};
+    engine_view::Playback playback(scene, choice);
+    EXPECT_FALSE(playback.playing());
+    EXPECT_EQ(playback.describe().rfind("animation: 0.00 s of 0.00-5.50 s, at rest", 0), 0u) << playback.describe();
+    const engine::Aabb rest = scene.meshInstances.at(0).worldBounds;
+    playback.seek(1.5);
+    EXPECT_FALSE(scene.meshInstances.at(0).worldBounds == rest) << "the pose at 1.5 s bends the strip";
+    EXPECT_EQ(playback.describe().rfind("animation: 1.50 s of 0.00-5.50 s, paused", 0), 0u) << playback.describe();
+    EXPECT_FALSE(playback.advance(1.0)) << "a paused clock does not move";
+    playback.setPlaying(true);
+    ASSERT_TRUE(playback.advance(5.0));
+    EXPECT_NEAR(playback.seconds(), 1.0, 1e-9);  // 1.5 + 5 = 6.5, wrapped over 5.5 s
+    playback.seek(-2.0);
+    EXPECT_EQ(playback.seconds(), 0.0);
+    EXPECT_FALSE(playback.playing()) << "seeking pauses";
+
+    engine::Scene still = engine::loadGltf("/usr/share/assimp/models/glTF2/simple_skin/simple_skin.gltf");
+    engine_view::Playback none(still, tools::AnimationPlayback{});
+    none.setPlaying(true);
+    EXPECT_FALSE(none.playing());
+    EXPECT_EQ(none.describe(), "");
+}
+
 TEST(DepthImage, CubeFacesAreLabelledInTheirCorners) {
     constexpr int kFace = 64, kWidth = 6 * kFace, kHeight = 64;
     std::vector<std::uint8_t> gray(kWidth * kHeight, 128);

@@ -26,6 +26,7 @@ expect_error $'frames 1\n# a comment\njump 3' 'bad.txt:3: unknown command "jump"
 expect_error $'frames 2 3' 'bad.txt:1: frames: expected 1 argument(s), got 2'
 expect_error $'view sideways' 'bad.txt:1: view: unknown view "sideways"'
 expect_error $'frames 1\nselect moon' 'bad.txt:2: select: no light "moon" in the scene'
+expect_error $'time soon' 'bad.txt:1: time: T must be a number of seconds in [0, 1e6]'
 # The plugin refuses these when they are applied (the next frame): still the `set` line.
 expect_error $'set sun variant foo\nframes 1' 'engine-view: bad.txt:1: ' 'sun' '"foo"'
 expect_error $'set sun colour 3' 'engine-view: bad.txt:1: ' 'sun' 'colour'
