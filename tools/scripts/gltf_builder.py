@@ -172,6 +172,41 @@ class GltfBuilder:
             self.doc["accessors"].append(accessor)
         return len(self.doc["accessors"]) - 1
 
+    def _raw_accessor(self, fmt, flat, count, kind, component_type, target=None):
+        """An accessor of `count` elements of `kind` packed from `flat` with struct format
+        character `fmt` (e.g. "B" unsigned byte, "f" float)."""
+        view = self._view(struct.pack("<%d%s" % (len(flat), fmt), *flat), target)
+        if target is None:
+            del self.doc["bufferViews"][view]["target"]  # animation and skin data: no GL target
+        self.doc["accessors"].append({"bufferView": view, "componentType": component_type, "count": count, "type": kind})
+        return len(self.doc["accessors"]) - 1
+
+    def skinned_mesh(self, name, geometry, material, joints, weights):
+        """A mesh like mesh(), with JOINTS_0 (four joint indices per vertex, unsigned byte) and
+        WEIGHTS_0 (four floats per vertex)."""
+        index = self.mesh(name, geometry, material)
+        attributes = self.doc["meshes"][index]["primitives"][0]["attributes"]
+        attributes["JOINTS_0"] = self._raw_accessor("B", [j for v in joints for j in v], len(joints), "VEC4", 5121, 34962)
+        attributes["WEIGHTS_0"] = self._accessor(weights, "VEC4")
+        return index
+
+    def skin(self, joints, inverse_bind_matrices):
+        """A skin of node indices `joints` with one column-major 4x4 matrix (16 floats) each."""
+        flat = [c for m in inverse_bind_matrices for c in m]
+        accessor = self._raw_accessor("f", flat, len(joints), "MAT4", 5126)
+        skins = self.doc.setdefault("skins", [])
+        skins.append({"joints": list(joints), "inverseBindMatrices": accessor})
+        return len(skins) - 1
+
+    def rotation_animation(self, name, node, times, quaternions):
+        """A LINEAR animation of `node`'s rotation through `quaternions` (x, y, z, w) at `times`."""
+        inputs = self._raw_accessor("f", list(times), len(times), "SCALAR", 5126)
+        self.doc["accessors"][inputs].update({"min": [min(times)], "max": [max(times)]})
+        outputs = self._raw_accessor("f", [c for q in quaternions for c in q], len(quaternions), "VEC4", 5126)
+        self.doc.setdefault("animations", []).append(
+            {"name": name, "samplers": [{"input": inputs, "output": outputs, "interpolation": "LINEAR"}],
+             "channels": [{"sampler": 0, "target": {"node": node, "path": "rotation"}}]})
+
     def texture(self, name, png, sampler):
         """A texture of one PNG (bytes, embedded as a data URI) with a sampler (dict with
         magFilter, minFilter, wrapS, wrapT). Returns the texture's index."""
