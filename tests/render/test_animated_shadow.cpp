@@ -186,4 +186,66 @@ TEST(PosedBounds, ACasterBoundFarAwayButPosedInViewCastsItsShadow) {
     EXPECT_GT(shadow, 500);
 }
 
+// A right-triangle plate 1.5 above the floor under 'mover', skinned to one joint that turns
+// it half a turn about the vertical over 1 s: at 0 and 1 s its bounds are the same box and the
+// light's frustum is the same, while its shadow points the other way. A map cache keyed on
+// the casters' matrices and the frustum alone (a skinned caster's matrix never changes)
+// would keep the 0 s map at 1 s.
+fs::path writeTurningPlateScene(const fs::path& dir) {
+    GltfBuilder b;
+    const int floor = addFloor(b, 0, 0, 4);
+    const int positions = b.addPositions({-1, 0, -1, 1, 0, -1, -1, 0, 1});
+    const std::vector<std::uint8_t> joints(12, 0);
+    const int jointAccessor = b.addAccessor(b.addView(joints.data(), joints.size()), kUnsignedByte, 3, "VEC4");
+    const int weights = b.addFloats({1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0}, 4, "VEC4");
+    const int plate = b.addMesh({{"attributes", {{"POSITION", positions}, {"JOINTS_0", jointAccessor}, {"WEIGHTS_0", weights}}},
+                                 {"indices", b.addIndices(std::vector<std::uint16_t>{0, 2, 1})},
+                                 {"material", b.add("materials", {{"doubleSided", true}})}});
+    // Bound at the origin (identity), posed by the joint 1.5 above the floor.
+    const int inverseBind = b.addFloats({1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1}, 16, "MAT4");
+    b.add("skins", {{"joints", {2}}, {"inverseBindMatrices", inverseBind}});
+    b.doc["extensionsUsed"] = {"KHR_lights_punctual"};
+    b.doc["extensions"]["KHR_lights_punctual"]["lights"] = {
+        {{"name", "mover"}, {"type", "spot"}, {"intensity", 30}, {"spot", {{"outerConeAngle", 0.6}}}}};
+    b.addNode({{"name", "floor"}, {"mesh", floor}});
+    b.addNode({{"name", "plate"}, {"mesh", plate}, {"skin", 0}});
+    b.addNode({{"name", "turn"}, {"translation", {0, 1.5, 0}}});
+    b.addNode(spotAbove(0, 0, 0, "mover_node"));
+    b.add("cameras", {{"type", "perspective"}, {"perspective", {{"yfov", 0.9}, {"znear", 0.5}, {"zfar", 100}}}});
+    b.addNode({{"name", "eye"}, {"camera", 0}, {"translation", {0, 8, 6}}, {"rotation", {-0.4472136, 0, 0, 0.8944272}}});
+    const int times = b.addFloats({0, 1}, 1, "SCALAR");
+    b.doc["accessors"][times]["min"] = {0};
+    b.doc["accessors"][times]["max"] = {1};
+    // STEP: exactly the identity, then exactly half a turn about +Y.
+    const int turn = b.addFloats({0, 0, 0, 1, 0, 1, 0, 0}, 4, "VEC4");
+    b.add("animations", {{"name", "half_turn"},
+                         {"samplers", {{{"input", times}, {"output", turn}, {"interpolation", "STEP"}}}},
+                         {"channels", {{{"sampler", 0}, {"target", {{"node", 2}, {"path", "rotation"}}}}}}});
+    b.setScene({0, 1, 2, 3, 4});
+    return b.writeGltf(dir, "turning_plate");
+}
+
+TEST(PosedCache, ADeformedCasterReRendersTheMapEvenWhenItsBoundsStay) {
+    TempDir dir;
+    const fs::path scene = writeTurningPlateScene(dir.path());
+    std::vector<std::uint8_t> masks[2];
+    for (const bool cached : {true, false}) {
+        const std::string name = cached ? "cached" : "uncached";
+        const fs::path maskFile = dir / (name + "_mask.png");
+        renderWithStats(scene, dir / name, kWidth, kHeight,
+                        "--animate all --fps 1 --frames 2 --shadow-mask mover='" + maskFile.string() + "'" +
+                            (cached ? "" : " --set shadowmap_plugin.cache_maps=false"));
+        masks[cached] = readMask(maskFile);
+    }
+    // Keyed without the pose, the cached mask kept the 0 s shadow: 800 pixels differed.
+    EXPECT_EQ(differingPixels(masks[0], masks[1]), 0) << "the cached map is the plate's at 0 s";
+    // The half turn moves the shadow (else this test could not fail).
+    std::vector<std::uint8_t> atRest;
+    const fs::path restMask = dir / "rest_mask.png";
+    renderWithStats(scene, dir / "rest", kWidth, kHeight, "--time 0 --shadow-mask mover='" + restMask.string() + "'");
+    const int turned = differingPixels(readMask(restMask), masks[0]);
+    std::printf("the half turn changes %d pixels of the mask\n", turned);
+    EXPECT_GT(turned, 600);  // measured 894
+}
+
 } // namespace

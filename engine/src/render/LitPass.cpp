@@ -56,6 +56,7 @@ std::uint64_t shadeViewKey(const Frame& frame, std::uint64_t sceneGeneration) {
     for (const MeshInstance& instance : frame.scene().meshInstances) {
         hasher.add(instance.mesh);
         hasher.add(instance.world);
+        hasher.add(instance.revision);  // a deformed instance changes shape in place
         hasher.add(instance.receiveShadows);
     }
     for (const Material& material : frame.scene().materials) {

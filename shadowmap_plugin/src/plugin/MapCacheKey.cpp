@@ -33,6 +33,9 @@ void addCasters(engine::Hasher& hasher, const engine::Scene& scene, const std::v
         hasher.add(i);
         hasher.add(instance.mesh);
         hasher.add(instance.world);
+        // A skinned or morphed caster deforms without moving (its world stays identity):
+        // the revision changes whenever its posed vertices do.
+        hasher.add(instance.revision);
     }
 }
 
