@@ -167,8 +167,8 @@ TEST(Script, ErrorsNameTheFileAndLine) {
         return std::string("no error");
     };
     EXPECT_EQ(message("key V\n\nfly away"),
-              "s.txt:3: unknown command \"fly\" (known: camera, frames, key, orbit, overlay, pan, quit, resize, "
-              "save, screenshot, select, set, view, zoom)");
+              "s.txt:3: unknown command \"fly\" (known: camera, frames, key, orbit, overlay, pan, pause, play, "
+              "quit, resize, save, screenshot, select, set, time, view, zoom)");
     EXPECT_EQ(message("frames 0"), "s.txt:1: frames: N must be an integer in [1, 100000]");
     EXPECT_EQ(message("key F13"), "s.txt:1: key: unknown key \"F13\"");
     EXPECT_EQ(message("set sun"), "s.txt:1: set: expected 3 or more argument(s), got 1");
