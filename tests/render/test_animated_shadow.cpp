@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <array>
 #include <cstdio>
 
 namespace {
@@ -134,33 +135,48 @@ TEST_F(AnimatedShadow, CachedAndUncachedMasksAgreeAndTheStillMapIsNeverRerendere
     }
 }
 
-// A skinned caster bound far away and posed into view: its quad's vertices lie at x = 100
-// (the bind pose, outside the camera's and the light's frustum), its one joint's inverse bind
-// matrix T(-100, 0, 0) and the joint at (0, 1.5, 0) put it 1.5 above the floor under 'mover'.
-// Bounds taken from the mesh as loaded would cull it from the map and the shadow would vanish.
-fs::path writePosedFarAwayScene(const fs::path& dir, bool skinned) {
+// The scene of the skinned-caster tests: nodes 0 floor, 1 the caster, 2 its one joint at
+// (0, 1.5, 0), 3 spot 'mover' above, 4 camera 'eye'. Every vertex follows the joint with inverse
+// bind matrix T(bindOffset); `skinned` false leaves the caster where its vertices lie.
+GltfBuilder oneJointCasterScene(const std::vector<float>& positions, const std::vector<std::uint16_t>& indices,
+                                const std::array<float, 3>& bindOffset, bool skinned = true) {
     GltfBuilder b;
     const int floor = addFloor(b, 0, 0, 4);
-    const int positions = b.addPositions({99, 0, 1, 101, 0, 1, 101, 0, -1, 99, 0, -1});
-    const std::vector<std::uint8_t> joints(16, 0);
-    const int jointAccessor = b.addAccessor(b.addView(joints.data(), joints.size()), kUnsignedByte, 4, "VEC4");
-    const int weights = b.addFloats({1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0}, 4, "VEC4");
-    const int caster = b.addMesh({{"attributes", {{"POSITION", positions}, {"JOINTS_0", jointAccessor}, {"WEIGHTS_0", weights}}},
-                                  {"indices", b.addIndices(std::vector<std::uint16_t>{0, 1, 2, 0, 2, 3})},
+    const std::size_t vertices = positions.size() / 3;
+    const std::vector<std::uint8_t> joints(4 * vertices, 0);
+    const int jointAccessor = b.addAccessor(b.addView(joints.data(), joints.size()), kUnsignedByte, vertices, "VEC4");
+    std::vector<float> weights(4 * vertices, 0.0f);
+    for (std::size_t v = 0; v < vertices; ++v) weights[4 * v] = 1.0f;
+    const int caster = b.addMesh({{"attributes", {{"POSITION", b.addPositions(positions)},
+                                                  {"JOINTS_0", jointAccessor},
+                                                  {"WEIGHTS_0", b.addFloats(weights, 4, "VEC4")}}},
+                                  {"indices", b.addIndices(indices)},
                                   {"material", b.add("materials", {{"doubleSided", true}})}});
-    const int inverseBind = b.addFloats({1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, -100, 0, 0, 1}, 16, "MAT4");
+    const int inverseBind = b.addFloats(
+        {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, bindOffset[0], bindOffset[1], bindOffset[2], 1}, 16, "MAT4");
     b.add("skins", {{"joints", {2}}, {"inverseBindMatrices", inverseBind}});
     b.doc["extensionsUsed"] = {"KHR_lights_punctual"};
     b.doc["extensions"]["KHR_lights_punctual"]["lights"] = {
         {{"name", "mover"}, {"type", "spot"}, {"intensity", 30}, {"spot", {{"outerConeAngle", 0.6}}}}};
     b.addNode({{"name", "floor"}, {"mesh", floor}});
-    b.addNode(skinned ? json{{"name", "posed"}, {"mesh", caster}, {"skin", 0}} : json{{"name", "posed"}, {"mesh", caster}});
+    json casterNode = {{"name", "caster"}, {"mesh", caster}};
+    if (skinned) casterNode["skin"] = 0;
+    b.addNode(casterNode);
     b.addNode({{"name", "joint"}, {"translation", {0, 1.5, 0}}});
     b.addNode(spotAbove(0, 0, 0, "mover_node"));
     b.add("cameras", {{"type", "perspective"}, {"perspective", {{"yfov", 0.9}, {"znear", 0.5}, {"zfar", 100}}}});
     b.addNode({{"name", "eye"}, {"camera", 0}, {"translation", {0, 8, 6}}, {"rotation", {-0.4472136, 0, 0, 0.8944272}}});
     b.setScene({0, 1, 2, 3, 4});
-    return b.writeGltf(dir, skinned ? "posed_far_away" : "left_far_away");
+    return b;
+}
+
+// A skinned caster bound far away and posed into view: its quad's vertices lie at x = 100
+// (the bind pose, outside the camera's and the light's frustum), its one joint's inverse bind
+// matrix T(-100, 0, 0) and the joint at (0, 1.5, 0) put it 1.5 above the floor under 'mover'.
+// Bounds taken from the mesh as loaded would cull it from the map and the shadow would vanish.
+fs::path writePosedFarAwayScene(const fs::path& dir, bool skinned) {
+    return oneJointCasterScene({99, 0, 1, 101, 0, 1, 101, 0, -1, 99, 0, -1}, {0, 1, 2, 0, 2, 3}, {-100, 0, 0}, skinned)
+        .writeGltf(dir, skinned ? "posed_far_away" : "left_far_away");
 }
 
 TEST(PosedBounds, ACasterBoundFarAwayButPosedInViewCastsItsShadow) {
@@ -192,27 +208,8 @@ TEST(PosedBounds, ACasterBoundFarAwayButPosedInViewCastsItsShadow) {
 // the casters' matrices and the frustum alone (a skinned caster's matrix never changes)
 // would keep the 0 s map at 1 s.
 fs::path writeTurningPlateScene(const fs::path& dir) {
-    GltfBuilder b;
-    const int floor = addFloor(b, 0, 0, 4);
-    const int positions = b.addPositions({-1, 0, -1, 1, 0, -1, -1, 0, 1});
-    const std::vector<std::uint8_t> joints(12, 0);
-    const int jointAccessor = b.addAccessor(b.addView(joints.data(), joints.size()), kUnsignedByte, 3, "VEC4");
-    const int weights = b.addFloats({1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0}, 4, "VEC4");
-    const int plate = b.addMesh({{"attributes", {{"POSITION", positions}, {"JOINTS_0", jointAccessor}, {"WEIGHTS_0", weights}}},
-                                 {"indices", b.addIndices(std::vector<std::uint16_t>{0, 2, 1})},
-                                 {"material", b.add("materials", {{"doubleSided", true}})}});
     // Bound at the origin (identity), posed by the joint 1.5 above the floor.
-    const int inverseBind = b.addFloats({1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1}, 16, "MAT4");
-    b.add("skins", {{"joints", {2}}, {"inverseBindMatrices", inverseBind}});
-    b.doc["extensionsUsed"] = {"KHR_lights_punctual"};
-    b.doc["extensions"]["KHR_lights_punctual"]["lights"] = {
-        {{"name", "mover"}, {"type", "spot"}, {"intensity", 30}, {"spot", {{"outerConeAngle", 0.6}}}}};
-    b.addNode({{"name", "floor"}, {"mesh", floor}});
-    b.addNode({{"name", "plate"}, {"mesh", plate}, {"skin", 0}});
-    b.addNode({{"name", "turn"}, {"translation", {0, 1.5, 0}}});
-    b.addNode(spotAbove(0, 0, 0, "mover_node"));
-    b.add("cameras", {{"type", "perspective"}, {"perspective", {{"yfov", 0.9}, {"znear", 0.5}, {"zfar", 100}}}});
-    b.addNode({{"name", "eye"}, {"camera", 0}, {"translation", {0, 8, 6}}, {"rotation", {-0.4472136, 0, 0, 0.8944272}}});
+    GltfBuilder b = oneJointCasterScene({-1, 0, -1, 1, 0, -1, -1, 0, 1}, {0, 2, 1}, {0, 0, 0});
     const int times = b.addFloats({0, 1}, 1, "SCALAR");
     b.doc["accessors"][times]["min"] = {0};
     b.doc["accessors"][times]["max"] = {1};
@@ -221,7 +218,6 @@ fs::path writeTurningPlateScene(const fs::path& dir) {
     b.add("animations", {{"name", "half_turn"},
                          {"samplers", {{{"input", times}, {"output", turn}, {"interpolation", "STEP"}}}},
                          {"channels", {{{"sampler", 0}, {"target", {{"node", 2}, {"path", "rotation"}}}}}}});
-    b.setScene({0, 1, 2, 3, 4});
     return b.writeGltf(dir, "turning_plate");
 }
 
