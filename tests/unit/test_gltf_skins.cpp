@@ -67,6 +67,20 @@ TEST(GltfSkins, JointsPoseTheVerticesAndTheNodeTransformIsIgnored) {
     EXPECT_NEAR(normal.z, 1.0f, 1e-6f);
 }
 
+// glTF 2.0 makes inverseBindMatrices optional (each is then the identity); tinygltf 2.7.0
+// reports its absence as an error, which the loader must not pass on.
+TEST(GltfSkins, ASkinWithoutInverseBindMatricesBindsWithTheIdentity) {
+    TempDir dir;
+    GltfBuilder b = skinnedQuad();
+    b.doc["skins"][0].erase("inverseBindMatrices");
+    engine::Scene scene = engine::loadGltf(b.writeGltf(dir.path(), "no_inverse_bind"));
+    ASSERT_EQ(scene.skins.size(), 1u);
+    for (const glm::dmat4& matrix : scene.skins[0].inverseBindMatrices) EXPECT_EQ(matrix, glm::dmat4(1.0));
+    // Root at the origin and Tip at (0, 1, 0) with identity binds: vertex (1, 1, 0), bound to
+    // Tip alone, is carried up by Tip's translation to (1, 2, 0).
+    expectNear(posedVertex(scene, 2), {1, 2, 0});
+}
+
 // One morph target lifting every vertex by (0, 0, 1).
 GltfBuilder morphedQuad(const json& meshWeights) {
     GltfBuilder b = quadScene();

@@ -33,6 +33,19 @@ std::string oneLine(const std::string& text) {
     return joined;
 }
 
+// tinygltf 2.7.0 reports a skin without inverseBindMatrices as an error, but the glTF 2.0
+// specification makes the property optional (each matrix is then the identity; readSkins
+// fills them in). It still parses such a skin (inverseBindMatrices -1), so that one sentence
+// is dropped from the error; any other message stands.
+std::string withoutOptionalPropertyErrors(const std::string& error) {
+    static const std::string kMissingInverseBind = "'inverseBindMatrices' property is missing in Skin.";
+    std::istringstream lines(error);
+    std::string line, kept;
+    while (std::getline(lines, line))
+        if (line != kMissingInverseBind) kept += line + '\n';
+    return kept.find_first_not_of(" \n") == std::string::npos ? std::string() : kept;
+}
+
 void passWarningsOn(const LoadContext& context, const std::string& warnings) {
     std::istringstream lines(warnings);
     std::string line;
@@ -69,6 +82,7 @@ ParsedGltf parseWithTinygltf(const LoadContext& context, const GltfContainer& co
         context.fail("tinygltf", std::string("failed: ") + exception.what());
     }
     passWarningsOn(context, warnings);
+    error = withoutOptionalPropertyErrors(error);
     // tinygltf can return true with an error string (e.g. a misaligned GLB JSON chunk).
     if (!loaded || !error.empty())
         context.fail("tinygltf", error.empty() ? "failed without a message" : oneLine(error));
