@@ -11,6 +11,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -18,9 +19,11 @@
 
 namespace engine_render_test {
 
-// Runs a shell command with its output discarded; its exit status, -1 if it did not exit.
-inline int runQuietly(const std::string& command) {
-    const int status = std::system((command + " > /dev/null 2>&1").c_str());
+// Runs a shell command with its standard output discarded and its error output written to
+// `errorLog` (discarded too when empty); its exit status, -1 if it did not exit.
+inline int runQuietly(const std::string& command, const std::filesystem::path& errorLog = {}) {
+    const std::string errors = errorLog.empty() ? std::string("&1") : " '" + errorLog.string() + "'";
+    const int status = std::system((command + " > /dev/null 2>" + errors).c_str());
     return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
@@ -33,7 +36,14 @@ inline nlohmann::json renderWithStats(const std::filesystem::path& scene, const 
                                 scene.string() + "' --out '" + outputStem.string() + ".png' --width " +
                                 std::to_string(width) + " --height " + std::to_string(height) + " --stats '" +
                                 stats.string() + "' " + flags;
-    EXPECT_EQ(runQuietly(command), 0) << command;
+    // The tool's messages go to a log beside the stats, quoted when it fails.
+    const std::filesystem::path log = outputStem.string() + ".log";
+    const int status = runQuietly(command, log);
+    if (status != 0) {
+        std::ifstream messages(log);
+        const std::string text((std::istreambuf_iterator<char>(messages)), std::istreambuf_iterator<char>());
+        ADD_FAILURE() << command << "\nexited with " << status << ":\n" << text;
+    }
     std::ifstream in(stats);
     return in ? nlohmann::json::parse(in, nullptr, false) : nlohmann::json();
 }

@@ -68,10 +68,12 @@ struct PassSummary {
 
 // A light's map time over the timed frames: the median of each of its passes, summed.
 // `rendered` is false when no timed frame drew the map (served from the cache every time,
-// e.g. a still light after warm-up, or the light has none).
+// e.g. a still light after warm-up, or the light has none); `frames` counts the timed frames
+// that drew it.
 struct MapTime {
     double ms = 0.0;
     bool rendered = false;
+    int frames = 0;
 };
 MapTime mapTime(const engine::ShadowView& view, const std::map<std::string, PassSummary>& passes) {
     MapTime time;
@@ -80,6 +82,7 @@ MapTime mapTime(const engine::ShadowView& view, const std::map<std::string, Pass
         if (found == passes.end() || found->second.wallMs.empty()) continue;
         time.ms += tools::median(found->second.wallMs);
         time.rendered = true;
+        time.frames = std::max(time.frames, found->second.framesRun);
     }
     return time;
 }
@@ -117,7 +120,7 @@ nlohmann::json statsJson(const RenderOptions& options, const std::vector<double>
         const MapTime time = mapTime(view, passes);
         maps.push_back({{"light", view.name}, {"slot", view.slot}, {"variant", view.variant},
                         {"map", mapKind(view)}, {"map_ms", time.rendered ? nlohmann::json(time.ms) : nlohmann::json(nullptr)},
-                        {"map_cached", view.hasMap && !time.rendered}});
+                        {"map_cached", view.hasMap && !time.rendered}, {"frames_rendered", time.frames}});
     }
     stats["shadow_maps"] = maps;
     stats["lit_instances_culled"] = last.litInstancesCulled;
