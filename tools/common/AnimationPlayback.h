@@ -9,6 +9,9 @@
 
 namespace tools {
 
+// The largest time a --time flag takes, in seconds: a bound on typos (11.6 days).
+constexpr double kMaxAnimationSeconds = 1e6;
+
 struct AnimationPlayback {
     std::vector<int> animations;  // indices into Scene::animations
     double startSeconds = 0.0;    // --time: the first frame's time

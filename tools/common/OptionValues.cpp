@@ -89,6 +89,12 @@ std::vector<int> parseIntegerList(const std::string& flag, const std::string& te
     return values;
 }
 
+std::vector<double> parseNumberList(const std::string& flag, const std::string& text, double minimum, double maximum) {
+    std::vector<double> values;
+    for (const std::string& item : parseList(flag, text)) values.push_back(parseNumber(flag, item, minimum, maximum));
+    return values;
+}
+
 Shard parseShard(const std::string& flag, const std::string& text) {
     const auto slash = text.find('/');
     if (slash == std::string::npos) throw std::invalid_argument(flag + ": \"" + text + "\" must be K/N");

@@ -31,6 +31,9 @@ std::vector<std::string> parseNames(const std::string& flag, const std::string& 
 // parseList of integers, each in [minimum, maximum].
 std::vector<int> parseIntegerList(const std::string& flag, const std::string& text, int minimum, int maximum);
 
+// parseList of numbers (parseNumber), each in [minimum, maximum].
+std::vector<double> parseNumberList(const std::string& flag, const std::string& text, double minimum, double maximum);
+
 // --shard K/N of the sweeping tools (shadowmap-bench, shadowmap-tune): shard K of N, 1-based,
 // 1 <= K <= N <= 10000.
 struct Shard {

@@ -1,5 +1,6 @@
 #include "RenderOptions.h"
 
+#include "AnimationPlayback.h"
 #include "CommandLine.h"
 #include "OptionValues.h"
 
@@ -31,7 +32,7 @@ namespace {
 
 // Bounds of typos, not of the GL: the renderer checks what it can allocate.
 constexpr int kMaxSize = 16384, kMaxFrames = 100000, kMaxWarmup = 1000;
-constexpr double kMaxSeconds = 1e6, kMinFps = 1e-3, kMaxFps = 1e4;
+constexpr double kMinFps = 1e-3, kMaxFps = 1e4;
 
 // Every image engine-render writes is PNG (lossless: masks and maps are measured): a file
 // named otherwise would hold PNG bytes under a name that says something else.
@@ -78,7 +79,7 @@ RenderOptions parseRenderOptions(int argc, char** argv) {
         else if (flag == "--graph-dot") options.graphDot = value;
         else if (tools::parseSceneLightingFlag(options.lighting, flag, value)) {}
         else if (flag == "--orbit-light") options.orbitLight = value;
-        else if (flag == "--time") options.time = tools::parseNumber(flag, value, 0.0, kMaxSeconds);
+        else if (flag == "--time") options.time = tools::parseNumber(flag, value, 0.0, tools::kMaxAnimationSeconds);
         else if (flag == "--animate") options.animate = value;
         else if (flag == "--fps") options.fps = tools::parseNumber(flag, value, kMinFps, kMaxFps);
         else return false;

@@ -3,6 +3,7 @@
 #include "SceneLighting.h"
 
 #include "CommandLine.h"
+#include "AnimationPlayback.h"
 #include "OptionValues.h"
 
 #include "engine/util/InstallLayout.h"
@@ -70,6 +71,9 @@ const char* benchUsage() {
         "  [--depth-formats " + joined(knownFormats()) + "] [--filters " + joined(knownFilters()) + "]\n"
         "  [--key-light spot|point|directional|none] [--ground]   (--ground: a ground under each scene\n"
         "                       that receives shadows and casts none)\n"
+        "  [--time T,...]       measure each scene posed at each listed time in seconds (every\n"
+        "                       animation of the file, skins and morph targets included; the truth\n"
+        "                       traces the same pose); the scene column reads <name>@<T>s\n"
         "  [--shard K/N]        run every N-th job only (jobs: scene x setting, numbered in sweep\n"
         "                       order; shard K runs K-1, K-1+N, ...) and write DIR/shard.json beside\n"
         "                       the results\n"
@@ -129,6 +133,7 @@ BenchOptions parseBenchOptions(int argc, char** argv) {
         else if (flag == "--depth-formats") options.depthFormats = tools::parseNames(flag, value, knownFormats());
         else if (flag == "--filters") options.filters = tools::parseNames(flag, value, knownFilters());
         else if (flag == "--key-light") options.keyLight = parseKeyLight(flag, value);
+        else if (flag == "--time") options.times = tools::parseNumberList(flag, value, 0.0, tools::kMaxAnimationSeconds);
         else if (flag == tools::kGroundFlag) options.ground = true;
         else if (flag == "--out") options.out = value;
         else if (flag == "--shard") {

@@ -28,6 +28,10 @@ struct BenchOptions {
     // Added to every scene that has no light (e.g. Debian's 2CylinderEngine.glb);
     // nullopt: --key-light none, such scenes are reported as an error.
     std::optional<engine::Light::Type> keyLight = engine::Light::Type::Spot;
+    // --time T,...: every scene measured posed at each listed time (all its animations, as
+    // engine-render --time poses them); the scene column then reads "<stem>@<T>s". Empty:
+    // the rest pose, the scene column the stem.
+    std::vector<double> times;
     bool ground = false;  // --ground: a receiving ground under every scene (tools/common/SceneLighting.h)
     std::string out;
     // --shard K/N: run every N-th job only (Shards.h); count 1: all of them.

@@ -1,5 +1,6 @@
 #include "Sweep.h"
 
+#include "AnimationPlayback.h"
 #include "SceneLighting.h"
 
 #include "SettingTrial.h"
@@ -8,12 +9,14 @@
 #include "engine/render/CameraSetup.h"
 #include "engine/render/Renderer.h"
 #include "engine/util/Error.h"
+#include "engine/util/FormatNumber.h"
 
 #include "shadowmap/ShadowSettings.h"
 
 #include <algorithm>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 
 namespace shadowmap_bench {
 
@@ -50,12 +53,57 @@ BenchRow makeRow(const BenchScene& scene, const ShadowSetting& setting, double f
 
 } // namespace
 
+namespace {
+
+// One scene of the sweep: `path` loaded, posed at `time` (nullopt: at rest), lit and framed.
+// `taken` are the names of the scenes loaded before it.
+BenchScene loadBenchScene(const BenchOptions& options, const std::string& path, std::optional<double> time,
+                          const std::vector<BenchScene>& taken) {
+    BenchScene bench;
+    bench.name = std::filesystem::path(path).stem().string();
+    if (time) bench.name += std::string("@").append(engine::formatNumber(*time)).append("s");
+    // Two files with one stem (a/scene.gltf, b/scene.gltf) must stay apart in the results.
+    for (const BenchScene& other : taken)
+        if (other.name == bench.name) bench.name += '_' + std::to_string(taken.size() + 1);
+    bench.path = path;
+    std::vector<std::string> warnings;
+    bench.scene = engine::loadGltf(path, &warnings);
+    const bool firstPose = !time || *time == options.times.front();
+    if (firstPose)
+        for (const std::string& warning : warnings) std::cerr << "warning: " << warning << "\n";
+    if (time) {
+        tools::AnimationPlayback playback;
+        playback.animations = tools::selectAnimations(bench.scene, path, "--time", "all");
+        playback.startSeconds = *time;
+        if (playback.animations.empty() && firstPose)
+            std::cerr << "warning: --time: " << path << " has no animations (measured at rest)\n";
+        tools::poseScene(bench.scene, playback, *time);
+    }
+    if (bench.scene.lightInstances.empty() && !options.keyLight)
+        engine::throwInputError(path, "", "the scene has no light (add one with --key-light)");
+    // The same key light and ground as engine-render and engine-view give with the same
+    // options; the key light only where the scene has none (a sweep measures the scene's).
+    tools::SceneLighting lighting;
+    if (bench.scene.lightInstances.empty()) lighting.keyLight = options.keyLight;
+    lighting.ground = options.ground;
+    for (const std::string& note : tools::stageScene(bench.scene, path, lighting).notes)
+        std::cerr << "shadowmap-bench: " << bench.name << ": " << note << "\n";
+    if (bench.scene.meshInstances.empty()) engine::throwInputError(path, "", "the scene has no mesh to shadow");
+    bench.camera = engine::chooseCamera(bench.scene, options.camera, options.width, options.height, path);
+    bench.shadowedLights = std::min<int>(bench.scene.lightInstances.size(), engine::kMaxLights);
+    return bench;
+}
+
+} // namespace
+
 std::vector<BenchScene> loadBenchScenes(const BenchOptions& options) {
     std::vector<BenchScene> scenes;
     const std::vector<ShadowSetting> full = sweepSettings(options), masked = maskedSettings(options);
     std::vector<std::pair<std::string, const std::vector<ShadowSetting>*>> requests;
     for (const std::string& path : options.scenes) requests.emplace_back(path, &full);
     for (const std::string& path : options.maskedScenes) requests.emplace_back(path, &masked);
+    std::vector<std::optional<double>> poses(options.times.begin(), options.times.end());
+    if (poses.empty()) poses.push_back(std::nullopt);
     for (const auto& [path, settings] : requests) {
         if (options.defaultScenes && !std::filesystem::exists(path)) {
             const bool debianModel = path.rfind("/usr/share/", 0) == 0;
@@ -63,29 +111,10 @@ std::vector<BenchScene> loadBenchScenes(const BenchOptions& options) {
                       << (debianModel ? "Debian package assimp-testmodels" : "see tools/scripts/") << ")\n";
             continue;
         }
-        BenchScene bench;
-        bench.name = std::filesystem::path(path).stem().string();
-        // Two files with one stem (a/scene.gltf, b/scene.gltf) must stay apart in the results.
-        for (const BenchScene& other : scenes)
-            if (other.name == bench.name) bench.name += '_' + std::to_string(scenes.size() + 1);
-        bench.path = path;
-        std::vector<std::string> warnings;
-        bench.scene = engine::loadGltf(path, &warnings);
-        for (const std::string& warning : warnings) std::cerr << "warning: " << warning << "\n";
-        if (bench.scene.lightInstances.empty() && !options.keyLight)
-            engine::throwInputError(path, "", "the scene has no light (add one with --key-light)");
-        // The same key light and ground as engine-render and engine-view give with the same
-        // options; the key light only where the scene has none (a sweep measures the scene's).
-        tools::SceneLighting lighting;
-        if (bench.scene.lightInstances.empty()) lighting.keyLight = options.keyLight;
-        lighting.ground = options.ground;
-        for (const std::string& note : tools::stageScene(bench.scene, path, lighting).notes)
-            std::cerr << "shadowmap-bench: " << bench.name << ": " << note << "\n";
-        if (bench.scene.meshInstances.empty()) engine::throwInputError(path, "", "the scene has no mesh to shadow");
-        bench.camera = engine::chooseCamera(bench.scene, options.camera, options.width, options.height, path);
-        bench.shadowedLights = std::min<int>(bench.scene.lightInstances.size(), engine::kMaxLights);
-        bench.settings = *settings;
-        scenes.push_back(std::move(bench));
+        for (const std::optional<double>& time : poses) {
+            scenes.push_back(loadBenchScene(options, path, time, scenes));
+            scenes.back().settings = *settings;
+        }
     }
     if (scenes.empty()) throw engine::InputError("no scene to sweep (give one with --scene)");
     return scenes;

@@ -17,7 +17,7 @@
 namespace shadowmap_bench {
 
 struct BenchScene {
-    std::string name;  // the file's stem, the "scene" column
+    std::string name;  // the file's stem (and pose time), the "scene" column
     std::string path;
     engine::Scene scene;
     engine::FrameCamera camera;
@@ -28,7 +28,8 @@ struct BenchScene {
 // Loads and checks every scene before anything is rendered, so a bad file fails at once,
 // not minutes into the sweep. Adds the key light to scenes without one. With the default
 // scene list a missing file (the optional Debian model) is skipped with a note on stderr.
-// options.scenes get sweepSettings, options.maskedScenes maskedSettings.
+// options.scenes get sweepSettings, options.maskedScenes maskedSettings. With options.times
+// every file gives one scene per time, posed then (BenchScene::name "<stem>@<T>s").
 // Throws engine::InputError naming the file and the reason.
 std::vector<BenchScene> loadBenchScenes(const BenchOptions& options);
 
