@@ -68,7 +68,8 @@ glm::dmat4 placeLooking(const glm::dvec3& position, const glm::dvec3& target) {
 
 class Builder {
 public:
-    Builder(double scale, const glm::dvec3& offset, bool bake) : scale_(scale), offset_(offset), bake_(bake) {
+    Builder(double scale, const glm::dvec3& offset, bool bake, bool skinned)
+        : scale_(scale), offset_(offset), bake_(bake), skinned_(skinned) {
         engine::Material grey;
         grey.name = "grey";
         grey.baseColorFactor = glm::vec4(0.8f, 0.8f, 0.8f, 1.0f);
@@ -162,12 +163,25 @@ public:
         }
         mesh.bounds = {};
         for (const engine::Primitive& primitive : mesh.primitives) mesh.bounds.extend(primitive.bounds);
-        scene_.meshes.push_back(std::move(mesh));
         engine::Node node;
-        node.name = scene_.meshes.back().name;
-        node.mesh = static_cast<int>(scene_.meshes.size()) - 1;
+        node.name = mesh.name;
         node.receiveShadows = receivesShadows;
         node.local = bake_ ? glm::dmat4(1.0) : place;
+        if (skinned_) {
+            for (engine::Primitive& primitive : mesh.primitives) {
+                primitive.joints.assign(primitive.positions.size(), glm::uvec4(0));
+                primitive.weights.assign(primitive.positions.size(), glm::vec4(1, 0, 0, 0));
+            }
+            engine::Node joint;
+            joint.name = mesh.name + "_joint";
+            joint.local = node.local;
+            addNode(joint);
+            scene_.skins.push_back({mesh.name + "_skin", {static_cast<int>(scene_.nodes.size()) - 1}, {glm::dmat4(1.0)}});
+            node.skin = static_cast<int>(scene_.skins.size()) - 1;
+            node.local = glm::dmat4(1.0);  // ignored for a skinned mesh (glTF 2.0 3.7.3)
+        }
+        scene_.meshes.push_back(std::move(mesh));
+        node.mesh = static_cast<int>(scene_.meshes.size()) - 1;
         addNode(node);
     }
 
@@ -212,7 +226,7 @@ private:
 
     double scale_;
     glm::dvec3 offset_;
-    bool bake_;
+    bool bake_, skinned_;
     engine::Scene scene_;
     glm::dmat4 tilt_{1.0};
     glm::dvec3 lightPosition_{0.0};
@@ -266,7 +280,7 @@ engine::Light::Type lightType(LightKind kind) {
 }
 
 StressScene buildStressScene(const SceneSpec& spec, int width, int height) {
-    Builder builder(spec.scale, spec.offset, spec.bakeOffset);
+    Builder builder(spec.scale, spec.offset, spec.bakeOffset, spec.skinned);
     // Straight down, the boxes' sides would be exactly edge-on (N.L = 0): whether such a
     // pixel is in the evaluation set, and what the truth ray grazing it says, is decided by
     // rounding. The light stays exactly vertical; the scene is turned 3 degrees under it.

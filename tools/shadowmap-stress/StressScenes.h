@@ -53,6 +53,10 @@ struct SceneSpec {
     // The offset baked into the mesh positions (float, identity nodes), as a glTF whose
     // vertices were exported in world space holds it, instead of a node translation.
     bool bakeOffset = false;
+    // Every mesh skinned to one joint node that carries the placement (inverse bind matrix
+    // the identity, weight 1), its own node the identity: posed on the CPU (Deform.h), as an
+    // exported character is, instead of placed by its node's matrix. Not with bakeOffset.
+    bool skinned = false;
     // The light's extras.shadow (variant, depth_format, resolution, ...). The two keys
     // below are added by the builder in world units, so they scale with the scene.
     nlohmann::json shadow = nlohmann::json::object();

@@ -4,6 +4,8 @@
 // Sweeps (each point is rendered for every light kind listed, variant and depth format):
 //   distance   everything translated 0, 1e3, 1e5, 1e6, 1e7 units from the origin (node
 //              translations, as glTF scenes place meshes)
+//   distance_skinned  the same offsets with every mesh skinned to a joint that carries its
+//              placement (posed on the CPU, as exported characters are)
 //   distance_baked  the same offsets baked into the float vertex positions
 //   near_far   spot and point lights with near/far forced to 1e-2 ... 1e-7, and an
 //              infinite far plane (near = 1e-3 of the farthest scene corner)
@@ -13,7 +15,8 @@
 //              light straight down (parallel to the usual up vector), an alpha-masked
 //              fence and its opaque twin (reported, not bounded)
 // Depth formats: d16, d24, d32f, and d32f_rz (d32f with "reversed_z": true).
-// The quick version (CI) renders 96x64 pixels with 512-texel maps: distance 0 and 1e6,
+// The quick version (CI) renders 96x64 pixels with 512-texel maps: distance and
+// distance_skinned 0 and 1e6,
 // near/far 1e-2, 1e-7 and infinite, scale 1e-3, 1 and 1e3, the light inside a box and the
 // masked fence under the spot, in d24, d32f and d32f_rz.
 //
@@ -21,7 +24,7 @@
 //   finite          no NaN/Inf anywhere: shadow term, depth map texels, light matrices
 //   has_map         every light that should cast a shadow has a map (no silent skip)
 //   distance        |error(d) - error(0)| <= 0.1 for d = 1e3, 1e5, 1e6, per light kind,
-//                   variant and format
+//                   variant and format, in distance and distance_skinned
 //   distance_1e7    the same at 1e7 (float spacing 1.0 there)
 //   scale           |error(s) - error(1)| <= 0.2 for s in [1e-3, 1e3]
 //   scale_extreme   the same at 1e-4 and 1e4

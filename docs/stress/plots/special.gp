@@ -9,9 +9,9 @@ set ylabel 'error % (log; 0 drawn at 0.001)'
 set xlabel 'case'
 set logscale y
 set yrange [0.001:100]
-set xtics ('light_inside_box' 1, 'light_on_surface' 2, 'camera_at_light' 3, 'light_straight_down' 4) rotate by -15
+set xtics ('light_inside_box' 1, 'light_on_surface' 2, 'camera_at_light' 3, 'light_straight_down' 4, 'masked_fence' 5, 'opaque_fence' 6) rotate by -15
 unset logscale x
-set xrange [0.5:4.5]
+set xrange [0.5:6.5]
 set title 'spot light'
 plot 'plots/special.dat' index 0 using 1:2 with points lc rgb '#1f77b4' dt 3 pt 6 lw 1.5 title 'standard d16', \
      'plots/special.dat' index 1 using 1:2 with points lc rgb '#1f77b4' dt 1 pt 7 lw 1.5 title 'standard d24', \

@@ -44,6 +44,31 @@ double windowDepth(const LightView& view, double d) {
     return c.z / c.w;
 }
 
+// The skinned stress scenes really are posed through their skins (else distance_skinned
+// would silently repeat distance), and land where the node-placed ones stand: a million
+// units out, float positions relative to each pose's centre keep the corners within 1e-3
+// (float spacing at the boxes' half-extents of a few units is below 1e-6; the double
+// subtraction of the centre loses nothing).
+TEST(SkinnedStressScene, EveryMeshIsPosedByItsSkinWhereTheNodePlacedOneStands) {
+    stress::SceneSpec spec;
+    spec.offset = glm::dvec3(0.6, 0.48, 0.64) * 1e6;
+    const stress::StressScene placed = stress::buildStressScene(spec, 64, 48);
+    spec.skinned = true;
+    const stress::StressScene skinned = stress::buildStressScene(spec, 64, 48);
+    ASSERT_EQ(placed.scene.meshInstances.size(), skinned.scene.meshInstances.size());
+    for (std::size_t i = 0; i < placed.scene.meshInstances.size(); ++i) {
+        const engine::MeshInstance& a = placed.scene.meshInstances[i];
+        const engine::MeshInstance& b = skinned.scene.meshInstances[i];
+        EXPECT_FALSE(a.deformed);
+        ASSERT_TRUE(b.deformed) << "mesh " << i << " is not posed by a skin";
+        EXPECT_EQ(b.world, glm::dmat4(1.0));  // a skinned mesh's vertices are in world space
+        for (int axis = 0; axis < 3; ++axis) {
+            EXPECT_NEAR(b.worldBounds.min[axis], a.worldBounds.min[axis], 1e-3) << "mesh " << i;
+            EXPECT_NEAR(b.worldBounds.max[axis], a.worldBounds.max[axis], 1e-3) << "mesh " << i;
+        }
+    }
+}
+
 TEST(ReversedZ, PerspectiveMapsNearToOneAndFarToZero) {
     FrustumFitOptions options;
     options.reversedZ = true;
