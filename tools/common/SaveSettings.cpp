@@ -1,6 +1,6 @@
 #include "SaveSettings.h"
 
-#include "JsonSpans.h"
+#include "JsonEdits.h"
 
 #include "engine/util/Error.h"
 #include "engine/util/InputFile.h"
@@ -16,11 +16,6 @@
 namespace tools {
 
 namespace {
-
-struct Edit {
-    std::size_t begin, end;  // replace [begin, end) with text
-    std::string text;
-};
 
 std::uint32_t readU32(const std::string& bytes, std::size_t at) {
     std::uint32_t value = 0;
@@ -59,7 +54,7 @@ std::string replaceLightShadows(const std::string& json, const std::map<int, nlo
     const JsonSpan* extensions = root.member("extensions");
     const JsonSpan* punctual = extensions ? extensions->member("KHR_lights_punctual") : nullptr;
     const JsonSpan* lights = punctual ? punctual->member("lights") : nullptr;
-    std::vector<Edit> edits;
+    std::vector<JsonEdit> edits;
     for (const auto& [index, shadow] : shadows) {
         if (!lights || index < 0 || index >= static_cast<int>(lights->items.size()) || lights->items[index].kind != '{')
             engine::throwInputError(fileName, "KHR_lights_punctual.lights[" + std::to_string(index) + "]",
@@ -70,22 +65,12 @@ std::string replaceLightShadows(const std::string& json, const std::map<int, nlo
         if (extras && extras->kind != '{')
             engine::throwInputError(fileName, "KHR_lights_punctual.lights[" + std::to_string(index) + "].extras",
                                     "is not an object");
-        if (extras) {
-            if (const JsonSpan* old = extras->member("shadow")) edits.push_back({old->begin, old->end, value});
-            else
-                edits.push_back({extras->begin + 1, extras->begin + 1,
-                                 "\"shadow\":" + value + (extras->members.empty() ? "" : ",")});
-        } else if (light.members.empty()) {
-            edits.push_back({light.begin + 1, light.begin + 1, "\"extras\":{\"shadow\":" + value + "}"});
-        } else {
-            const std::size_t after = light.members.back().second.end;
-            edits.push_back({after, after, ",\"extras\":{\"shadow\":" + value + "}"});
-        }
+        if (!extras) edits.push_back(appendMember(light, "extras", "{\"shadow\":" + value + "}"));
+        else if (const JsonSpan* old = extras->member("shadow")) edits.push_back({old->begin, old->end, value});
+        else edits.push_back(appendMember(*extras, "shadow", value));
         expected["extensions"]["KHR_lights_punctual"]["lights"][index]["extras"]["shadow"] = shadow;
     }
-    std::sort(edits.begin(), edits.end(), [](const Edit& a, const Edit& b) { return a.begin > b.begin; });
-    std::string out = json;
-    for (const Edit& edit : edits) out.replace(edit.begin, edit.end - edit.begin, edit.text);
+    const std::string out = applyJsonEdits(json, std::move(edits));
     if (nlohmann::json::parse(out) != expected)
         throw std::logic_error("saving settings into " + fileName + " changed more than the lights' extras.shadow");
     return out;
@@ -155,7 +140,7 @@ void checkSaveTarget(const std::filesystem::path& scene, const std::filesystem::
 }
 
 void saveSceneSettings(const std::filesystem::path& scene, const std::filesystem::path& out,
-                       const std::map<int, nlohmann::json>& shadows) {
+                       const std::map<int, nlohmann::json>& shadows, const std::vector<AddedLight>& added) {
     const SceneFile file = readScene(scene);
     checkTarget(scene, file, out);
     const std::string& bytes = file.bytes;
@@ -163,7 +148,7 @@ void saveSceneSettings(const std::filesystem::path& scene, const std::filesystem
     const bool glb = file.glb;
     const std::size_t jsonLength = file.jsonLength;
 
-    std::string edited = replaceLightShadows(json, shadows, scene.string());
+    std::string edited = addLights(replaceLightShadows(json, shadows, scene.string()), added, scene.string());
     if (!glb) {
         engine::writeFileAtomically(out, edited);
         return;

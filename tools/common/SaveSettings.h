@@ -14,11 +14,14 @@
 // files (e.g. showcase.bin) must be saved in the same folder as the scene it was loaded
 // from; anything else is an InputError saying so (data: URIs and .glb files go anywhere).
 // The file is written through a temporary file and a rename (engine::writeFileAtomically).
+#include "AddedLights.h"
+
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
 #include <map>
 #include <string>
+#include <vector>
 
 namespace tools {
 
@@ -30,8 +33,9 @@ namespace tools {
 void checkSaveTarget(const std::filesystem::path& scene, const std::filesystem::path& out);
 
 // `shadows`: glTF light index (KHR_lights_punctual.lights[i]) -> its new extras.shadow.
+// `added`: lights the tool added to the scene, written into the file too (AddedLights.h).
 void saveSceneSettings(const std::filesystem::path& scene, const std::filesystem::path& out,
-                       const std::map<int, nlohmann::json>& shadows);
+                       const std::map<int, nlohmann::json>& shadows, const std::vector<AddedLight>& added = {});
 
 // The JSON text with those edits, every other byte kept. Throws InputError naming
 // `fileName` when a light index does not exist, and std::logic_error if the result does

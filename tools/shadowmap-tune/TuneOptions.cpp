@@ -43,6 +43,8 @@ const char* tuneUsage() {
         "  [--views cameras|orbit:N] [--config CONFIG.json] [--width W --height H] [--frames N]\n"
         "  [--variants standard,woo,backface] [--resolutions 512,1024,2048]\n"
         "  [--depth-formats d16,d24,d32f] [--filters nearest,pcf] [--report REPORT.json]\n"
+        "  [--key-light spot|point|directional]   a scene without lights gets this key light (placed\n"
+        "                  from its bounds as engine-render places it), tuned and written into --out\n"
         "  [--shard K/N]   search every N-th light only and write --out as a partial result (JSON)\n"
         "usage: shadowmap-tune --scene SCENE --merge PART.json... --out TUNED.gltf|.glb\n"
         "                  write the scene from shards 1..N's partial results (renders nothing)\n"
@@ -85,6 +87,7 @@ TuneOptions parseTuneOptions(int argc, char** argv) {
         } else if (flag == "--shard") options.shard = tools::parseShard(flag, value);
         else if (flag == "--merge") options.merge.push_back(value);
         else if (flag == "--views") options.views = parseViewSpec(flag, value);
+        else if (flag == "--key-light") options.keyLight = tools::parseLightType(flag, value);
         else if (flag == "--width") options.width = tools::parseInteger(flag, value, 1, 16384);
         else if (flag == "--height") options.height = tools::parseInteger(flag, value, 1, 16384);
         else if (flag == "--frames") options.frames = tools::parseInteger(flag, value, 1, 10000);
@@ -102,6 +105,9 @@ TuneOptions parseTuneOptions(int argc, char** argv) {
     if (options.help) return options;
     if (options.scene.empty()) throw std::invalid_argument("--scene is required");
     if (options.out.empty()) throw std::invalid_argument("--out is required");
+    if (options.keyLight && (options.shard.count > 1 || !options.merge.empty()))
+        throw std::invalid_argument(std::string("--key-light and ") + (options.merge.empty() ? "--shard" : "--merge") +
+                                    " exclude each other: the key light is the scene's only light, nothing to split");
     if (!options.merge.empty()) {
         if (options.shard.count > 1) throw std::invalid_argument("--merge and --shard exclude each other");
         return options;  // the goal and the views were the shards'

@@ -4,6 +4,9 @@
 #include "OptionValues.h"
 #include "SearchSpace.h"
 
+#include "engine/scene/Scene.h"
+
+#include <optional>
 #include <string>
 
 namespace shadowmap_tune {
@@ -26,6 +29,9 @@ struct TuneOptions {
     ViewSpec views;
     int width = 0, height = 0, frames = 0;
     SearchLimits limits;
+    // --key-light: a scene without lights gets this key light (placed as engine-render and the
+    // bench place it), which is tuned and written into --out with its setting.
+    std::optional<engine::Light::Type> keyLight;
     tools::Shard shard;               // --shard K/N: --out is then a partial result (JSON)
     std::vector<std::string> merge;   // --merge PART.json...: write --out from these, render nothing
     bool help = false;

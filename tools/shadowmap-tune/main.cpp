@@ -11,6 +11,7 @@
 #include "TuneViews.h"
 
 #include "SaveSettings.h"
+#include "SceneLighting.h"
 #include "SavedShadow.h"
 #include "SettingTrial.h"
 #include "ShadowPluginConfig.h"
@@ -74,7 +75,19 @@ int run(const TuneOptions& options, std::unique_ptr<engine::GlContext>& context,
     std::vector<std::string> warnings;
     engine::Scene scene = engine::loadGltf(options.scene, &warnings);
     for (const std::string& warning : warnings) std::cerr << "warning: " << warning << "\n";
-    if (scene.lightInstances.empty()) engine::throwInputError(options.scene, "", "the scene has no lights: nothing to tune");
+    // The key light only where the scene has none, as the bench adds it.
+    int keyLightNode = -1;
+    if (scene.lightInstances.empty() && options.keyLight) {
+        tools::SceneLighting lighting;
+        lighting.keyLight = options.keyLight;
+        for (const std::string& note : tools::stageScene(scene, options.scene, lighting).notes)
+            std::fprintf(stderr, "shadowmap-tune: %s\n", note.c_str());
+        keyLightNode = scene.lightInstances.at(0).node;
+    } else if (options.keyLight) {
+        std::fprintf(stderr, "shadowmap-tune: %s has lights: --key-light ignored\n", options.scene.c_str());
+    }
+    if (scene.lightInstances.empty())
+        engine::throwInputError(options.scene, "", "the scene has no lights: nothing to tune (add one with --key-light)");
     const bool sharded = options.shard.count > 1;
     if (!sharded) tools::checkSaveTarget(options.scene, options.out);
     const std::vector<engine::FrameCamera> views =
@@ -117,21 +130,27 @@ int run(const TuneOptions& options, std::unique_ptr<engine::GlContext>& context,
         if (searched[light] && !goal.feasible(choices[light].chosen))
             refuseInfeasible(options, sceneMeasurer.names()[light], measurer, light, goal, space);
 
-    // Only changed lights are edited: a light whose setting stays keeps its bytes.
+    // Only changed lights are edited: a light whose setting stays keeps its bytes. The key
+    // light is not in the file: it is added with its setting, changed or not.
+    const int keyLight = keyLightNode >= 0 ? scene.nodes[keyLightNode].light : -1;
     std::map<int, nlohmann::json> shadows;
+    std::vector<tools::AddedLight> added;
     for (int light = 0; light < lights; ++light) {
-        if (!choices[light].changed) continue;
         const int index = sceneMeasurer.lights()[light];
+        if (!choices[light].changed && index != keyLight) continue;
         nlohmann::json shadow = loaded[index];
         for (const std::string& key : ownedKeys(space)) shadow.erase(key);
         for (const auto& [key, value] : choices[light].chosen.setting.items()) shadow[key] = value;
-        shadows[index] = tools::savedShadow(configSettings, loaded[index], shadow);
+        const nlohmann::json saved = tools::savedShadow(configSettings, loaded[index], shadow);
+        if (index == keyLight) added.push_back(tools::addedLightOf(scene, keyLightNode, saved));
+        else shadows[index] = saved;
     }
     if (sharded) engine::writeFileAtomically(options.out, partialResult(options.scene, options.shard, shadows));
-    else tools::saveSceneSettings(options.scene, options.out, shadows);
+    else tools::saveSceneSettings(options.scene, options.out, shadows, added);
     if (!options.report.empty())
         engine::writeFileAtomically(options.report, reportJson(summary, space).dump(2) + "\n");
-    std::fprintf(stderr, "shadowmap-tune: wrote %s (%zu light(s) changed)\n", options.out.c_str(), shadows.size());
+    std::fprintf(stderr, "shadowmap-tune: wrote %s (%zu light(s) changed%s)\n", options.out.c_str(), shadows.size(),
+                 added.empty() ? "" : ", the key light added with its setting");
     return 0;
 }
 
