@@ -222,7 +222,9 @@ int run(const RenderOptions& options, std::unique_ptr<engine::GlContext>& contex
     renderer.setScene(scene);
 
     engine::FrameRequest request;
-    request.camera = engine::chooseCamera(scene, options.camera, options.width, options.height, options.scene);
+    const int cameraInstance = engine::chooseCameraInstance(scene, options.camera, options.scene);
+    request.camera = cameraInstance < 0 ? engine::framingCamera(scene, options.width, options.height)
+                                        : engine::cameraFromScene(scene, cameraInstance, options.width, options.height);
     request.timing = true;
     for (const auto& [light, file] : options.shadowMasks)
         request.shadowMaskSlots.push_back(lightSlot(scene, options.scene, light));
@@ -243,7 +245,12 @@ int run(const RenderOptions& options, std::unique_ptr<engine::GlContext>& contex
     // rendering, not shader compilation. --warmup 0 times the cold start.
     if (options.warmup > 0) renderer.warmUp(request, options.warmup, options.warmup + kExtraWarmupFrames);
     for (int frame = 0; frame < options.frames; ++frame) {
-        if (frame > 0 && playback.animating) tools::poseScene(scene, playback, playback.secondsAtFrame(frame));
+        if (frame > 0 && playback.animating) {
+            tools::poseScene(scene, playback, playback.secondsAtFrame(frame));
+            // A glTF camera is followed as its node animates (--orbit-camera moves it instead).
+            if (cameraInstance >= 0 && !options.orbitCamera)
+                request.camera = engine::cameraFromScene(scene, cameraInstance, options.width, options.height);
+        }
         if (frame > 0 && orbitingLight >= 0) engine::orbitNode(scene, orbitingLight, orbitCenter, kOrbitStep);
         if (frame > 0 && options.orbitCamera)
             request.camera.eyeToWorld = engine::orbitTransform(request.camera.eyeToWorld, orbitCenter, kOrbitStep);

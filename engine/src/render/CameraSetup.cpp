@@ -52,14 +52,17 @@ FrameCamera cameraFromScene(const Scene& scene, int instance, int width, int hei
     return frame;
 }
 
+int chooseCameraInstance(const Scene& scene, const std::string& name, const std::string& sceneFile) {
+    if (name.empty()) return scene.cameraInstances.empty() ? -1 : 0;
+    const int instance = findCameraInstanceByNameOrNumber(scene, name);
+    if (instance < 0)
+        throwInputError(sceneFile, "camera \"" + name + "\"", "no such camera (" + describeCameraInstances(scene) + ")");
+    return instance;
+}
+
 FrameCamera chooseCamera(const Scene& scene, const std::string& name, int width, int height,
                          const std::string& sceneFile) {
-    int instance = scene.cameraInstances.empty() ? -1 : 0;
-    if (!name.empty()) {
-        instance = findCameraInstanceByNameOrNumber(scene, name);
-        if (instance < 0)
-            throwInputError(sceneFile, "camera \"" + name + "\"", "no such camera (" + describeCameraInstances(scene) + ")");
-    }
+    const int instance = chooseCameraInstance(scene, name, sceneFile);
     return instance < 0 ? framingCamera(scene, width, height)
                         : cameraFromScene(scene, instance, width, height);
 }

@@ -32,6 +32,11 @@ for key in dark:
 assert keyed["nodes"][:node] == dark["nodes"]
 PY
 
+# Valid glTF by the Khronos validator the repository vendors (0 errors, 0 warnings).
+validator=$content/../tools/validate-gltf
+node "$validator/validate.mjs" --validator "$validator/vendor/node_modules/gltf-validator" --max-warnings 0 \
+  "$work/keyed.gltf" > "$work/validation" 2>&1 || fail "the tuned file is not valid glTF: $(cat "$work/validation")"
+
 tune --scene "$work/keyed.gltf" --budget-ms 100000 --out "$work/again.gltf" --report "$work/second.json"
 cmp "$work/keyed.gltf" "$work/again.gltf" || fail "tuning the tuned file changed it: $(diff "$work/keyed.gltf" "$work/again.gltf" | head)"
 first=$(json "$work/first.json" "r['lights'][0]['after']['error']")

@@ -19,4 +19,8 @@ FrameCamera framingCamera(const Scene& scene, int width, int height);
 FrameCamera chooseCamera(const Scene& scene, const std::string& name, int width, int height,
                          const std::string& sceneFile);
 
+// The scene.cameraInstances index chooseCamera takes, -1 for the framing camera: a tool
+// that poses an animation re-reads it (cameraFromScene) to follow an animated camera.
+int chooseCameraInstance(const Scene& scene, const std::string& name, const std::string& sceneFile);
+
 } // namespace engine
