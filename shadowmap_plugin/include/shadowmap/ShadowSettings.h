@@ -72,8 +72,10 @@
 //                   (spot at 0.5 deg: 0.30% error unclamped, 0.61% with S = 10, 19% with
 //                   S = 3; tools/shadowmap-stress elevation).
 // Cascades (directional lights only; spot and point lights ignore them):
-//   cascades        1 .. 4: slices of the camera's view depth,  1 (one map fitted to every
-//                   one array layer (and depth pass) each       visible receiver)
+//   cascades        auto, or 1 .. 4 slices of the camera's view  auto
+//                   depth, one array layer (and depth pass) each; 1: one map fitted to
+//                   every visible receiver; auto: the count the view needs, per frame
+//                   (math/CascadeFit.h autoCascadeCount)
 //   cascade_lambda  0 .. 1: the practical split scheme's weight  0.75
 //                   of logarithmic over uniform splits (math/CascadeFit.h)
 //   stable          true: each cascade a texel-snapped square    true
@@ -111,6 +113,9 @@ const char* toString(Filter);
 glm::vec2 defaultPolygonOffset(Variant variant, Filter filter, bool reversedZ);
 
 // Default-constructed: the built-in defaults (the table above).
+// ShadowSettings::cascades for "auto".
+inline constexpr int kAutoCascades = 0;
+
 struct ShadowSettings {
     Variant variant = Variant::Standard;
     int resolution = 2048;
@@ -133,7 +138,7 @@ struct ShadowSettings {
     double farPlane = 0.0;
     bool reversedZ = false;
     float polygonOffsetClamp = 0.0f;
-    int cascades = 1;
+    int cascades = kAutoCascades;
     double cascadeLambda = 0.75;
     bool stable = true;
 
@@ -176,7 +181,8 @@ double jsonNumber(float value);
 
 enum class SettingKind {
     Choice,      // a string among `choices`
-    Integer,     // a whole number in [minimum, maximum]
+    Integer,     // a whole number in [minimum, maximum]; `choices` lists words accepted
+                 // instead of a number ("auto")
     Number,      // a finite number; `minimum`/`maximum` bound it where set; `choices` lists
                  // words accepted instead of a number ("infinite")
     NumberPair,  // [a, b] of finite numbers

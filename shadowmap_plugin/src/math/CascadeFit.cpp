@@ -234,4 +234,64 @@ CascadeViews fitDirectionalCascades(const engine::LightInstance& instance, const
     return out;
 }
 
+namespace {
+
+// World units per texel of a view's orthographic map: its wider side over the resolution.
+double texelSize(const LightView& view, int resolution) {
+    return std::max(2.0 / std::abs(view.projection[0][0]), 2.0 / std::abs(view.projection[1][1])) / resolution;
+}
+
+}  // namespace
+
+CascadeNeed cascadeNeed(const engine::LightInstance& instance, const engine::Light& light, const ShadowBounds& bounds,
+                        const engine::Aabb& sceneBounds, const CascadeCamera& camera, const CascadeOptions& options,
+                        int viewportHeight) {
+    CascadeNeed need;
+    for (int count = 0; count <= kMaxCascades; ++count) need.texelsPerPixel[count] = need.meanTexel[count] = kInf;
+    double nearDepth, farDepth;
+    if (viewportHeight <= 0 || !receiverDepthRange(camera, bounds.receivers, nearDepth, farDepth)) return need;
+    nearDepth = std::max(nearDepth, farDepth * 1e-6);
+    // A pixel's height in world units at the nearest receiver (P11 = cot(fovy / 2), or
+    // 2 / height of an orthographic view).
+    const bool perspective = camera.projection[2][3] != 0.0;
+    const double pixel = (perspective ? nearDepth : 1.0) * 2.0 / (std::abs(camera.projection[1][1]) * viewportHeight);
+    const LightView single = fitDirectionalLight(instance, light, bounds, options.fit);
+    if (single.valid && !single.empty) {
+        need.meanTexel[1] = texelSize(single, options.resolution);
+        need.texelsPerPixel[1] = need.meanTexel[1] / pixel;
+    }
+    for (int count = 2; count <= kMaxCascades; ++count) {
+        CascadeOptions sliced = options;
+        sliced.count = count;
+        const CascadeViews views = fitDirectionalCascades(instance, light, bounds, sceneBounds, camera, sliced);
+        if (!views.valid) continue;
+        // Each slice's texel weighted by its share of the depth range as pixels see it (a
+        // perspective pixel grows with depth: log depth; an orthographic one does not).
+        double weights = 0.0, logTexels = 0.0;
+        for (std::size_t c = 0; c < views.cascades.size(); ++c) {
+            const LightView& view = views.cascades[c];
+            if (view.empty) continue;
+            const double texel = texelSize(view, options.resolution);
+            if (!std::isfinite(need.texelsPerPixel[count])) need.texelsPerPixel[count] = texel / pixel;
+            const double d0 = views.splits[c], d1 = views.splits[c + 1];
+            const double weight = perspective ? std::log(d1 / d0) : d1 - d0;
+            weights += weight;
+            logTexels += weight * std::log(texel);
+        }
+        if (weights > 0.0) need.meanTexel[count] = std::exp(logTexels / weights);
+    }
+    return need;
+}
+
+int autoCascadeCount(const CascadeNeed& need, int previous) {
+    int count = 1;
+    while (count < kMaxCascades && need.texelsPerPixel[count] > kEnoughTexelsPerPixel) {
+        const double gain = need.meanTexel[count] / need.meanTexel[count + 1];
+        // A cascade already in use stays while it gains kKeepGain; a new one must gain kAddGain.
+        if (!(gain >= (count + 1 <= previous ? kKeepGain : kAddGain))) break;
+        ++count;
+    }
+    return count;
+}
+
 }  // namespace shadowmap

@@ -4,6 +4,7 @@
 
 #include <epoxy/gl.h>
 
+#include <cmath>
 #include <string>
 
 namespace shadowmap {
@@ -121,6 +122,19 @@ nlohmann::json LightShadow::stats() const {
                                 {"depth", view.farPlane - view.nearPlane}});
         }
         out["cascades"] = cascades;
+    }
+    if (frame.autoCascades) {
+        // cascades: auto: what it weighed for 1..4 (CascadeNeed; null where a count gives no
+        // map) and the count it chose.
+        const auto perCount = [](const double (&values)[kMaxCascades + 1]) {
+            nlohmann::json list = nlohmann::json::array();
+            for (int count = 1; count <= kMaxCascades; ++count)
+                list.push_back(std::isfinite(values[count]) ? nlohmann::json(values[count]) : nlohmann::json(nullptr));
+            return list;
+        };
+        out["cascades_auto"] = {{"count", frame.cascadeCount},
+                                {"texels_per_pixel", perCount(frame.cascadeNeed.texelsPerPixel)},
+                                {"mean_texel", perCount(frame.cascadeNeed.meanTexel)}};
     }
     return out;
 }

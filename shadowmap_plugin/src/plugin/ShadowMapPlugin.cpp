@@ -82,8 +82,6 @@ float offsetClamp(const LightShadow& light) {
     return static_cast<float>(std::abs(offset.x) * settings.polygonOffsetClamp * perTexel + units);
 }
 
-// The map cache key (MapCacheKey.h) with the depth settings that change a map without
-// changing its view-projection: reversed Z's depth state and the slope-offset clamp.
 // Every receiver and caster of the scene, seen or not: what a stable cascade anchors to.
 engine::Aabb sceneBounds(const engine::Scene& scene) {
     engine::Aabb bounds;
@@ -92,6 +90,32 @@ engine::Aabb sceneBounds(const engine::Scene& scene) {
     return bounds;
 }
 
+CascadeOptions cascadeOptions(const ShadowSettings& settings, const FrustumFitOptions& fit) {
+    CascadeOptions options;
+    options.count = settings.cascades;
+    options.lambda = settings.cascadeLambda;
+    options.stable = settings.stable;
+    options.resolution = settings.resolution;
+    options.fit = fit;
+    return options;
+}
+
+// A directional light's cascade count this frame: the setting's, or with `auto` the count
+// the view needs (CascadeFit.h autoCascadeCount), remembered for the next frame.
+int cascadeCount(LightShadow& light, const engine::LightInstance& placed, const engine::Light& source,
+                 const ShadowBounds& bounds, const engine::Frame& frame, const FrustumFitOptions& fit) {
+    if (light.settings.cascades != kAutoCascades) return light.settings.cascades;
+    LightShadowFrame& plan = light.frame;
+    plan.autoCascades = true;
+    plan.cascadeNeed = cascadeNeed(placed, source, bounds, sceneBounds(frame.scene()),
+                                   {frame.camera().eyeToWorld, frame.camera().projection},
+                                   cascadeOptions(light.settings, fit), frame.camera().height);
+    light.autoCascadeCount = autoCascadeCount(plan.cascadeNeed, light.autoCascadeCount);
+    return light.autoCascadeCount;
+}
+
+// The map cache key (MapCacheKey.h) with the depth settings that change a map without
+// changing its view-projection: reversed Z's depth state and the slope-offset clamp.
 std::uint64_t withDepthSettings(std::uint64_t key, const ShadowSettings& settings) {
     engine::Hasher hasher;
     hasher.add(key);
@@ -223,7 +247,7 @@ bool ShadowMapPlugin::planLight(LightShadow& light, const engine::Frame& frame,
     }
     // Cascades slice a directional light's parallel projection; a spot or point light's
     // perspective already spends its texels near the light (said once).
-    if (light.type != engine::Light::Type::Directional && light.settings.cascades > 1)
+    if (light.type != engine::Light::Type::Directional && light.settings.cascades > 1)  // auto says nothing
         warnOnce(light, "cascades apply to directional lights only: " + std::to_string(light.settings.cascades) +
                             " ignored");
     // Forced near/far and reversed Z (shadowmap/ShadowSettings.h). A directional light's depth is
@@ -244,13 +268,10 @@ bool ShadowMapPlugin::planLight(LightShadow& light, const engine::Frame& frame,
         valid = plan.pointViews.valid;
         invalidReason = plan.pointViews.invalidReason;
         for (const LightView& face : plan.pointViews.faces) empty = empty && face.empty;
-    } else if (light.type == engine::Light::Type::Directional && light.settings.cascades > 1) {
-        CascadeOptions options;
-        options.count = light.settings.cascades;
-        options.lambda = light.settings.cascadeLambda;
-        options.stable = light.settings.stable;
-        options.resolution = light.settings.resolution;
-        options.fit = fitOptions;
+    } else if (light.type == engine::Light::Type::Directional &&
+               (plan.cascadeCount = cascadeCount(light, placed, source, bounds, frame, fitOptions)) > 1) {
+        CascadeOptions options = cascadeOptions(light.settings, fitOptions);
+        options.count = plan.cascadeCount;
         plan.cascades = fitDirectionalCascades(placed, source, bounds, sceneBounds(scene),
                                                {frame.camera().eyeToWorld, frame.camera().projection}, options);
         valid = plan.cascades.valid;

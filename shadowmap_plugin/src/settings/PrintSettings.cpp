@@ -22,7 +22,8 @@ nlohmann::json printSettings(const ShadowSettings& settings) {
                           {"dimming", jsonNumber(settings.dimming)},
                           {"reversed_z", settings.reversedZ},
                           {"polygon_offset_clamp", jsonNumber(settings.polygonOffsetClamp)},
-                          {"cascades", settings.cascades},
+                          {"cascades", settings.cascades == kAutoCascades ? nlohmann::json("auto")
+                                                                          : nlohmann::json(settings.cascades)},
                           {"cascade_lambda", settings.cascadeLambda},
                           {"stable", settings.stable}};
     if (settings.polygonOffset)

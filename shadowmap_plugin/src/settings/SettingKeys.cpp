@@ -116,9 +116,11 @@ std::vector<SettingKey> makeKeys() {
     cascades.minimum = 1;
     cascades.maximum = 4;
     cascades.steps = {1, 2, 3, 4};
-    cascades.values = "1 … 4";
+    cascades.choices = {"auto"};
+    cascades.values = "`auto`, 1 … 4";
     cascades.description = "directional lights: slices of the camera's view depth, each with its own map "
-                           "(a layer of the light's array map); 1: one map for every visible receiver";
+                           "(a layer of the light's array map); 1: one map for every visible receiver; "
+                           "`auto`: the count the view needs, chosen per frame";
     keys.push_back(cascades);
 
     SettingKey lambda = makeKey("cascade_lambda", SettingKind::Number);

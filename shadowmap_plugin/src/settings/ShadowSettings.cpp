@@ -127,13 +127,18 @@ void applySettings(ShadowSettings& settings, const nlohmann::json& json, const s
         settings.polygonOffsetClamp = static_cast<float>(clamp);
     }
     if (json.contains("cascades")) {
-        const double cascades = json_read::readNumber(json["cascades"], source, key("cascades"));
         static const SettingKey& range = settingKey("cascades");
-        if (cascades < *range.minimum || cascades > *range.maximum || cascades != std::floor(cascades))
-            engine::throwInputError(source, key("cascades"),
-                                    "must be a whole number in [" + engine::formatNumber(*range.minimum) + ", " +
-                                        engine::formatNumber(*range.maximum) + "], got " + json["cascades"].dump());
-        settings.cascades = static_cast<int>(cascades);
+        const std::string expected = "must be \"auto\" or a whole number in [" + engine::formatNumber(*range.minimum) +
+                                     ", " + engine::formatNumber(*range.maximum) + "], got " + json["cascades"].dump();
+        if (json["cascades"] == "auto") {
+            settings.cascades = kAutoCascades;
+        } else {
+            if (!json["cascades"].is_number()) engine::throwInputError(source, key("cascades"), expected);
+            const double cascades = json_read::readNumber(json["cascades"], source, key("cascades"));
+            if (cascades < *range.minimum || cascades > *range.maximum || cascades != std::floor(cascades))
+                engine::throwInputError(source, key("cascades"), expected);
+            settings.cascades = static_cast<int>(cascades);
+        }
     }
     if (json.contains("cascade_lambda")) {
         const double lambda = json_read::readNumber(json["cascade_lambda"], source, key("cascade_lambda"));

@@ -398,9 +398,10 @@ TEST_F(EngineRenderShadows, EveryVariantStaysWithinItsErrorBoundAt2048) {
     }
 }
 
-// cascades 1 (the default) is the one fitted map the plugin drew before cascades existed:
-// the showcase renders to the very bytes of the reference image made then (see
-// tests/shadowmap/data/README.md), with the setting left out and with it given.
+// cascades 1 is the one fitted map the plugin drew before cascades existed, and on the
+// showcase the default (auto) chooses it: the showcase renders to the very bytes of the
+// reference image made then (see tests/shadowmap/data/README.md), with the setting left out
+// and with it given.
 TEST_F(EngineRenderShadows, OneCascadeRendersTheShowcaseAsBeforeCascades) {
     int width = 0, height = 0;
     const auto reference =

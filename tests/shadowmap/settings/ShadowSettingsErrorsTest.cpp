@@ -57,9 +57,11 @@ TEST(ShadowSettingsErrors, UnknownKeyListsTheKnownOnes) {
 }
 
 TEST(ShadowSettingsErrors, CascadeSettingsOutOfRangeAreNamed) {
-    expectNamed({"cascades 0", {{"cascades", 0}}, "cascades", "must be a whole number in [1, 4], got 0"});
-    expectNamed({"cascades 5", {{"cascades", 5}}, "cascades", "must be a whole number in [1, 4], got 5"});
-    expectNamed({"cascades 2.5", {{"cascades", 2.5}}, "cascades", "must be a whole number in [1, 4], got 2.5"});
+    expectNamed({"cascades 0", {{"cascades", 0}}, "cascades", "must be \"auto\" or a whole number in [1, 4], got 0"});
+    expectNamed({"cascades 5", {{"cascades", 5}}, "cascades", "must be \"auto\" or a whole number in [1, 4], got 5"});
+    expectNamed({"cascades 2.5", {{"cascades", 2.5}}, "cascades", "must be \"auto\" or a whole number in [1, 4], got 2.5"});
+    expectNamed({"cascades many", {{"cascades", "many"}}, "cascades",
+                 "must be \"auto\" or a whole number in [1, 4], got \"many\""});
     expectNamed({"lambda 1.5", {{"cascade_lambda", 1.5}}, "cascade_lambda", "must be in [0, 1], got 1.5"});
     expectNamed({"stable type", {{"stable", "yes"}}, "stable", "must be true or false"});
 }

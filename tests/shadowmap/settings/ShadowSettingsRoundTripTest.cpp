@@ -58,7 +58,7 @@ TEST(ShadowSettingsRoundTrip, DefaultsPrintAsDocumented) {
     // planes, no explicit offset, no reversal, no clamp.
     const nlohmann::json expected = {{"variant", "standard"}, {"resolution", 2048}, {"depth_format", "d24"},
                                      {"filter", "pcf"},       {"dimming", 0.4},     {"reversed_z", false},
-                                     {"polygon_offset_clamp", 0.0}, {"cascades", 1},
+                                     {"polygon_offset_clamp", 0.0}, {"cascades", "auto"},
                                      {"cascade_lambda", 0.75},     {"stable", true}};
     EXPECT_EQ(shadowmap::printSettings(ShadowSettings{}), expected);
     EXPECT_EQ(roundTrip(ShadowSettings{}), ShadowSettings{});

@@ -1,14 +1,16 @@
 // Cascades of a directional light (math/CascadeFit.h): the practical split distances, each
 // cascade's box fitted to its slice of the camera frustum and the casters over it, and the
 // stable mode's snapping (a camera moved by less than one texel keeps a cascade's matrix,
-// by one texel moves it by exactly one).
+// by one texel moves it by exactly one), and what `cascades: auto` weighs and chooses.
 #include "math/CascadeFit.h"
 
 #include <gtest/gtest.h>
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <array>
 #include <cmath>
+#include <limits>
 
 namespace {
 
@@ -184,6 +186,72 @@ TEST(CascadeStable, RadiusIsQuantizedUpAndSnappingRoundsToTheNearestTexel) {
     EXPECT_EQ(shadowmap::snapToTexel(0.26, 0.5), 0.5);
     EXPECT_EQ(shadowmap::snapToTexel(0.24, 0.5), 0.0);
     EXPECT_EQ(shadowmap::snapToTexel(-0.74, 0.5), -0.5);
+}
+
+// A need whose nearest texels per pixel are `nearest` and whose mean texels are `mean`.
+shadowmap::CascadeNeed needOf(const std::array<double, 4>& nearest, const std::array<double, 4>& mean) {
+    shadowmap::CascadeNeed need;
+    for (int count = 1; count <= 4; ++count) {
+        need.texelsPerPixel[count] = nearest[count - 1];
+        need.meanTexel[count] = mean[count - 1];
+    }
+    return need;
+}
+
+TEST(CascadeAuto, AddsACascadeWhileItShrinksTheMeanTexelEnough) {
+    using shadowmap::autoCascadeCount;
+    // Mean gains as measured (CascadeFit.h): the showcase's sun 0.90 (one map), the outdoor
+    // scene 7.86, 1.54, 1.23 (three cascades) and, with the camera's near plane at 20 m,
+    // 3.62, 1.28, 1.15 (two).
+    EXPECT_EQ(autoCascadeCount(needOf({2.9, 2.1, 1.4, 1.1}, {1.0, 1.0 / 0.90, 1.0 / 0.90 / 1.26, 0.7}), 0), 1);
+    EXPECT_EQ(autoCascadeCount(needOf({2260, 180, 107, 82}, {786, 100, 100 / 1.54, 100 / 1.54 / 1.23}), 0), 3);
+    EXPECT_EQ(autoCascadeCount(needOf({11, 2, 1.3, 1.0}, {362, 100, 100 / 1.28, 60}), 0), 2);
+    // Every gain large: all four.
+    EXPECT_EQ(autoCascadeCount(needOf({1000, 100, 10, 2}, {1000, 100, 10, 1}), 0), 4);
+    // A map whose nearest texel is a pixel or less needs nothing finer, whatever the gain.
+    EXPECT_EQ(autoCascadeCount(needOf({0.9, 0.1, 0.01, 0.001}, {10, 1, 0.1, 0.01}), 0), 1);
+    EXPECT_EQ(autoCascadeCount(needOf({50, 1.0, 0.1, 0.01}, {10, 1, 0.1, 0.01}), 0), 2);
+    // A count that gives no map (infinite need) is never chosen, nor what lies past it.
+    constexpr double kNone = std::numeric_limits<double>::infinity();
+    EXPECT_EQ(autoCascadeCount(needOf({10, kNone, 1, 0.5}, {10, kNone, 1, 0.5}), 0), 1);
+    EXPECT_EQ(autoCascadeCount(needOf({kNone, kNone, kNone, kNone}, {kNone, kNone, kNone, kNone}), 0), 1);
+}
+
+TEST(CascadeAuto, ACascadeInUseStaysWhileItGainsAlmostEnough) {
+    using shadowmap::autoCascadeCount;
+    // Gain 1.32 from one map to two: not enough to add the second, enough to keep it.
+    const shadowmap::CascadeNeed borderline = needOf({10, 8, 7, 6}, {13.2, 10, 9, 8.5});
+    EXPECT_EQ(autoCascadeCount(borderline, 0), 1);
+    EXPECT_EQ(autoCascadeCount(borderline, 1), 1);
+    EXPECT_EQ(autoCascadeCount(borderline, 2), 2);
+    // Below the keeping gain (1.28) it goes.
+    EXPECT_EQ(autoCascadeCount(needOf({10, 8, 7, 6}, {12.8, 10, 9, 8.5}), 2), 1);
+}
+
+// On the ground-and-post scene seen from street level, one map spreads 1 km of ground over
+// its texels while the nearest cascade covers metres: the need drops by orders of magnitude
+// from one map to two, and each further cascade shrinks the nearest slice and the mean again.
+TEST(CascadeAuto, NeedIsTheNearestTexelOverThePixelThere) {
+    CascadeOptions options;
+    options.lambda = 0.5;
+    options.stable = true;
+    options.resolution = 1024;
+    const CascadeCamera camera = cameraAt({0, 1.7, 0}, {0, 1.0, -20});
+    const shadowmap::CascadeNeed need = shadowmap::cascadeNeed(
+        sunShining(kSun), engine::Light{}, groundAndPost(), sceneBox(), camera, options, 720);
+    for (int count = 1; count <= 4; ++count) EXPECT_TRUE(std::isfinite(need.texelsPerPixel[count])) << count;
+    EXPECT_GT(need.texelsPerPixel[1] / need.texelsPerPixel[2], 10.0);
+    EXPECT_GT(need.texelsPerPixel[2], need.texelsPerPixel[3]);
+    EXPECT_GT(need.texelsPerPixel[3], need.texelsPerPixel[4]);
+    for (int count = 1; count < 4; ++count) EXPECT_GT(need.meanTexel[count], need.meanTexel[count + 1]) << count;
+    // One map's texel: the ground box in the light frame (about 1 km across) over 1024; a
+    // pixel at the nearest receiver depth (the camera's near plane, 0.1: the ground's box
+    // holds the camera) is 0.1 * 2 tan(0.45) / 720. The ratio is in the thousands.
+    EXPECT_GT(need.texelsPerPixel[1], 1000.0);
+    // No viewport height, no need: every count infinite (auto then keeps one map).
+    const shadowmap::CascadeNeed unknown = shadowmap::cascadeNeed(
+        sunShining(kSun), engine::Light{}, groundAndPost(), sceneBox(), camera, options, 0);
+    EXPECT_TRUE(std::isinf(unknown.texelsPerPixel[1]));
 }
 
 } // namespace
