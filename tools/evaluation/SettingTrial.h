@@ -48,6 +48,9 @@ public:
     // stays on the GPU).
     TrialResult measure();
 
+    // Each light's shimmer under the settings of the last measure() (ShadowEvaluator::shimmer).
+    std::vector<LightShimmer> shimmer(const std::vector<engine::FrameCamera>& path) { return evaluator_.shimmer(path); }
+
     // Also score every light against the area truth (ShadowEvaluator::setAreaTruth).
     void setAreaTruth(bool enabled) { evaluator_.setAreaTruth(enabled); }
 

@@ -65,4 +65,43 @@ ViewResult ShadowEvaluator::evaluate(const engine::FrameCamera& camera, int fram
     return result;
 }
 
+std::vector<LightShimmer> ShadowEvaluator::shimmer(const std::vector<engine::FrameCamera>& path) {
+    std::vector<LightShimmer> lights;
+    if (path.empty()) return lights;
+    engine::FrameRequest request;
+    request.camera = path.front();
+    for (const engine::ShadowView& view : renderer_.renderFrame(request).shadowViews)
+        if (view.variant != "none") {
+            request.shadowMaskSlots.push_back(view.slot);
+            lights.push_back({view.name, view.slot, {}});
+        }
+    if (lights.empty()) return lights;
+
+    // The previous frame's capture and, per light, its mask, truth and evaluation set.
+    struct LightFrame {
+        std::vector<std::uint8_t> mask, truth, evaluated;
+    };
+    truth::SurfaceBuffer previous;
+    std::vector<LightFrame> previousLights;
+    for (std::size_t frame = 0; frame < path.size(); ++frame) {
+        request.camera = path[frame];
+        renderer_.renderFrame(request);
+        truth::SurfaceBuffer surfaces = capture_.capture(scene_, renderer_.gpu(), request.camera);
+        std::vector<LightFrame> current;
+        for (LightShimmer& light : lights) {
+            LightFrame here{renderer_.readShadowMask(light.slot), visibility_.visibility(scene_, light.slot, surfaces),
+                            truth::evaluationSet(scene_, light.slot, surfaces)};
+            if (frame > 0) {
+                const LightFrame& before = previousLights[current.size()];
+                light.count += truth::shimmerBetween({&previous, before.mask, before.truth, before.evaluated},
+                                                     {&surfaces, here.mask, here.truth, here.evaluated});
+            }
+            current.push_back(std::move(here));
+        }
+        previous = std::move(surfaces);
+        previousLights = std::move(current);
+    }
+    return lights;
+}
+
 } // namespace evaluation

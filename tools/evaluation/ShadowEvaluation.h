@@ -5,6 +5,7 @@
 // ray-traced truth (truth/RayTracedVisibility.h) on the evaluation set of docs/metrics.md.
 #include "truth/RayTracedVisibility.h"
 #include "truth/ShadowMetrics.h"
+#include "truth/Shimmer.h"
 #include "truth/SurfaceCapture.h"
 
 #include "engine/render/Renderer.h"
@@ -29,6 +30,13 @@ struct LightResult {
     std::size_t nonFinitePixels = 0;  // NaN/Inf anywhere in its shade (must stay 0)
 };
 
+// One light's shimmer over a camera path (truth/Shimmer.h), pooled over consecutive frames.
+struct LightShimmer {
+    std::string light;
+    int slot = -1;
+    truth::ShimmerCount count;
+};
+
 struct ViewResult {
     double frameMs = 0.0;  // median over the timed frames
     std::vector<LightResult> lights;
@@ -47,6 +55,11 @@ public:
     // Renders `frames` timed frames of `camera` (0: none, errors only), then evaluates every
     // light that has a shadow (variant other than none).
     ViewResult evaluate(const engine::FrameCamera& camera, int frames);
+
+    // Renders the cameras of `path` in turn (the plugin keeps or re-renders maps as it would
+    // for a moving viewer) with every shadowed light's mask, and pools each light's shimmer
+    // over consecutive frames.
+    std::vector<LightShimmer> shimmer(const std::vector<engine::FrameCamera>& path);
 
 private:
     engine::Renderer& renderer_;

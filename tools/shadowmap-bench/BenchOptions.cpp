@@ -71,6 +71,10 @@ const char* benchUsage() {
         "  [--depth-formats " + joined(knownFormats()) + "] [--filters " + joined(knownFilters()) + "]\n"
         "  [--key-light spot|point|directional|none] [--ground]   (--ground: a ground under each scene\n"
         "                       that receives shadows and casts none)\n"
+        "  [--shimmer N]        also measure shimmer: N frames of the camera panning one pixel a\n"
+        "                       frame (Sweep.h shimmerPath); results.csv's shimmer column\n"
+        "                       (percent of surface points whose shadow state changed between frames\n"
+        "                       while the truth did not; docs/metrics.md)\n"
         "  [--time T,...]       measure each scene posed at each listed time in seconds (every\n"
         "                       animation of the file, skins and morph targets included; the truth\n"
         "                       traces the same pose); the scene column reads <name>@<T>s\n"
@@ -128,6 +132,7 @@ BenchOptions parseBenchOptions(int argc, char** argv) {
         else if (flag == "--width") options.width = tools::parseInteger(flag, value, 1, 16384);
         else if (flag == "--height") options.height = tools::parseInteger(flag, value, 1, 16384);
         else if (flag == "--frames") options.frames = tools::parseInteger(flag, value, 1, 10000);
+        else if (flag == "--shimmer") options.shimmerFrames = tools::parseInteger(flag, value, 2, 10000);
         else if (flag == "--variants") options.variants = tools::parseNames(flag, value, knownVariants());
         else if (flag == "--resolutions") options.resolutions = tools::parseIntegerList(flag, value, minResolution, maxResolution);
         else if (flag == "--depth-formats") options.depthFormats = tools::parseNames(flag, value, knownFormats());

@@ -25,6 +25,8 @@ struct BenchOptions {
     std::vector<std::string> depthFormats;
     std::vector<std::string> filters;
     int frames = 0;
+    // --shimmer N: also measure shimmer on N frames of a slow pan (Sweep.h shimmerPath); 0: not.
+    int shimmerFrames = 0;
     // Added to every scene that has no light (e.g. Debian's 2CylinderEngine.glb);
     // nullopt: --key-light none, such scenes are reported as an error.
     std::optional<engine::Light::Type> keyLight = engine::Light::Type::Spot;

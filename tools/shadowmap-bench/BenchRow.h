@@ -1,6 +1,7 @@
 #pragma once
 // One measured point of the sweep: one light of one scene under one shadow setting. The
 // row of results.csv, and what the summary and the plot are made of.
+#include <optional>
 #include <string>
 
 namespace shadowmap_bench {
@@ -29,6 +30,9 @@ struct BenchRow {
     // settings are ranked by, since it does not count a filter's partial shade at an edge as
     // error when the edge really crosses the pixel.
     double areaAcne = 0.0, areaLeak = 0.0, areaError = 0.0;
+    // With --shimmer: percent of the compared surface points whose shadow state changed
+    // between consecutive frames of the camera path (truth/Shimmer.h); none without.
+    std::optional<double> shimmer;
 };
 
 } // namespace shadowmap_bench

@@ -32,7 +32,8 @@ std::string resultsCsv(const std::vector<BenchRow>& rows) {
                row.setting.filter + "," + number(row.shadowMs, 3) + "," + number(row.frameMs, 3) + "," +
                number(row.acne, 4) + "," + number(row.leak, 4) + "," + number(row.error, 4) + "," +
                number(row.errorNoEdge, 4) + "," + number(row.areaAcne, 4) + "," +
-               number(row.areaLeak, 4) + "," + number(row.areaError, 4) + "\n";
+               number(row.areaLeak, 4) + "," + number(row.areaError, 4) + "," +
+               (row.shimmer ? number(*row.shimmer, 4) : std::string()) + "\n";
     }
     return csv;
 }

@@ -103,6 +103,7 @@ std::vector<BenchRow> parseResultsCsv(const std::string& text, const std::string
         row.areaAcne = number(f[12], file, line);
         row.areaLeak = number(f[13], file, line);
         row.areaError = number(f[14], file, line);
+        if (!f[15].empty()) row.shimmer = number(f[15], file, line);
         rows.push_back(std::move(row));
     }
     return rows;

@@ -36,8 +36,10 @@ std::string cpuModel() {
 }
 
 void printProgress(const BenchRow& row, int index, int total) {
-    std::fprintf(stderr, "[%d/%d] %s %s %s: %.2f ms, error %.3f%%\n", index, total, row.scene.c_str(),
-                 row.light.c_str(), row.setting.label().c_str(), row.shadowMs, row.error);
+    char shimmer[48] = "";
+    if (row.shimmer) std::snprintf(shimmer, sizeof shimmer, ", shimmer %.4f%%", *row.shimmer);
+    std::fprintf(stderr, "[%d/%d] %s %s %s: %.2f ms, error %.3f%%%s\n", index, total, row.scene.c_str(),
+                 row.light.c_str(), row.setting.label().c_str(), row.shadowMs, row.error, shimmer);
 }
 
 void writePlot(const std::filesystem::path& out, const std::vector<BenchRow>& rows) {

@@ -30,5 +30,6 @@ expect_error '--filters: unknown value "bilinear" (known: nearest,pcf)' --filter
 expect_error '--key-light: "sun" is not spot, point, directional or none' --key-light sun
 expect_error '--time: "-1" is not a number in [0, 1000000]' --time -1
 expect_error '--time: "0.5" is listed twice in "0.5,0.5"' --time 0.5,0.5
+expect_error '--shimmer: "1" is not an integer in [2, 10000]' --shimmer 1
 [[ $failed -eq 0 ]] && echo "ok"
 exit $failed

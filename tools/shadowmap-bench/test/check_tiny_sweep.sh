@@ -12,7 +12,7 @@ trap 'rm -rf "$out"' EXIT
   --width 64 --height 48 --frames 1 --out "$out"
 
 csv=$out/results.csv
-header='scene,light,variant,resolution,depth_format,filter,shadow_ms,frame_ms,acne,leak,error,error_noedge,area_acne,area_leak,area_error'
+header='scene,light,variant,resolution,depth_format,filter,shadow_ms,frame_ms,acne,leak,error,error_noedge,area_acne,area_leak,area_error,shimmer'
 [[ "$(head -n 1 "$csv")" == "$header" ]] || { echo "bad header: $(head -n 1 "$csv")"; exit 1; }
 rows=$(tail -n +2 "$csv" | wc -l)
 [[ $rows -eq 3 ]] || { echo "expected 3 rows (the showcase's lights), got $rows"; exit 1; }
@@ -28,6 +28,7 @@ awk -F, 'NR > 1 {
   for (i = 9; i <= 15; ++i) if (!($i >= 0 && $i <= 100)) { print "error out of [0,100]: " $0; bad = 1 }
   d = $15 - $13 - $14; if (d > 3e-4 || d < -3e-4) { print "area error is not acne + leak: " $0; bad = 1 }
   if (!($15 > 0)) { print "area error 0 (area truth not computed?): " $0; bad = 1 }
+  if ($16 != "") { print "a shimmer figure without --shimmer: " $0; bad = 1 }
 } END { exit bad }' "$csv"
 [[ -s $out/summary.md ]] || { echo "summary.md missing or empty"; exit 1; }
 # It cites the metric definitions by a file the repository has.
