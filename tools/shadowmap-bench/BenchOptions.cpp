@@ -72,7 +72,7 @@ const char* benchUsage() {
         "  [--key-light spot|point|directional|none] [--ground]   (--ground: a ground under each scene\n"
         "                       that receives shadows and casts none)\n"
         "  [--shimmer N]        also measure shimmer: N frames of the camera panning one pixel a\n"
-        "                       frame (Sweep.h shimmerPath); results.csv's shimmer column\n"
+        "                       frame (evaluation/CameraPath.h); results.csv's shimmer column\n"
         "                       (percent of surface points whose shadow state changed between frames\n"
         "                       while the truth did not; docs/metrics.md)\n"
         "  [--time T,...]       measure each scene posed at each listed time in seconds (every\n"

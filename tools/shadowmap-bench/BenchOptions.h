@@ -25,7 +25,7 @@ struct BenchOptions {
     std::vector<std::string> depthFormats;
     std::vector<std::string> filters;
     int frames = 0;
-    // --shimmer N: also measure shimmer on N frames of a slow pan (Sweep.h shimmerPath); 0: not.
+    // --shimmer N: also measure shimmer on N frames of a slow pan (evaluation/CameraPath.h); 0: not.
     int shimmerFrames = 0;
     // Added to every scene that has no light (e.g. Debian's 2CylinderEngine.glb);
     // nullopt: --key-light none, such scenes are reported as an error.

@@ -3,6 +3,7 @@
 #include "AnimationPlayback.h"
 #include "SceneLighting.h"
 
+#include "CameraPath.h"
 #include "SettingTrial.h"
 
 #include "engine/gltf/GltfLoader.h"
@@ -12,8 +13,6 @@
 #include "engine/util/FormatNumber.h"
 
 #include "shadowmap/ShadowSettings.h"
-
-#include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
 #include <filesystem>
@@ -93,7 +92,7 @@ BenchScene loadBenchScene(const BenchOptions& options, const std::string& path, 
     if (bench.scene.meshInstances.empty()) engine::throwInputError(path, "", "the scene has no mesh to shadow");
     bench.camera = engine::chooseCamera(bench.scene, options.camera, options.width, options.height, path);
     bench.shadowedLights = std::min<int>(bench.scene.lightInstances.size(), engine::kMaxLights);
-    if (options.shimmerFrames > 0) bench.shimmerPath = shimmerPath(bench.camera, options.shimmerFrames);
+    if (options.shimmerFrames > 0) bench.shimmerPath = evaluation::onePixelPan(bench.camera, options.shimmerFrames);
     return bench;
 }
 
@@ -121,17 +120,6 @@ std::vector<BenchScene> loadBenchScenes(const BenchOptions& options) {
     }
     if (scenes.empty()) throw engine::InputError("no scene to sweep (give one with --scene)");
     return scenes;
-}
-
-std::vector<engine::FrameCamera> shimmerPath(const engine::FrameCamera& camera, int frames) {
-    // P00 maps eye x / -z (perspective) or eye x (orthographic) to NDC, 2 / width per pixel.
-    const double pixel = 2.0 / (camera.projection[0][0] * camera.width);
-    const bool perspective = camera.projection[2][3] != 0.0;
-    glm::dmat4 step = perspective ? glm::rotate(glm::dmat4(1.0), std::atan(pixel), glm::dvec3(0, 1, 0))
-                                  : glm::translate(glm::dmat4(1.0), glm::dvec3(pixel, 0, 0));
-    std::vector<engine::FrameCamera> path(frames, camera);
-    for (int frame = 1; frame < frames; ++frame) path[frame].eyeToWorld = path[frame - 1].eyeToWorld * step;
-    return path;
 }
 
 std::vector<ShadowSetting> sweepSettings(const BenchOptions& options) {

@@ -23,15 +23,9 @@ struct BenchScene {
     engine::FrameCamera camera;
     int shadowedLights = 0;  // lights the lit pass handles (the first kMaxLights)
     std::vector<ShadowSetting> settings;  // what this scene is swept over
-    std::vector<engine::FrameCamera> shimmerPath;  // --shimmer: the pan; empty: no shimmer
+    // --shimmer: the camera path (evaluation/CameraPath.h); empty: no shimmer.
+    std::vector<engine::FrameCamera> shimmerPath;
 };
-
-// --shimmer's camera path: `frames` views starting at `camera`, panning one pixel per frame:
-// a perspective camera turns about its own up axis by the angle of the pixel at the image's
-// centre, an orthographic one moves sideways by a pixel. The surface points near the centre
-// column (a perspective pan) or everywhere (orthographic) then land on pixel centres of the
-// next frame, where shimmer compares them (truth/Shimmer.h).
-std::vector<engine::FrameCamera> shimmerPath(const engine::FrameCamera& camera, int frames);
 
 // Loads and checks every scene before anything is rendered, so a bad file fails at once,
 // not minutes into the sweep. Adds the key light to scenes without one. With the default

@@ -103,7 +103,7 @@ void writeCsv(const std::filesystem::path& path, const std::vector<Row>& rows) {
     std::ostringstream out;
     out << "sweep,light,variant,format,label,value,acne_pct,leak_pct,error_pct,error_noedge_pct,"
            "evaluated_pixels,nonfinite_shade,nonfinite_depth,nonfinite_matrices,map,near,far,"
-           "skip_reason,seconds\n";
+           "skip_reason,seconds,shimmer_pct\n";
     for (const Row& row : rows)
         out << row.sweep << ',' << row.light << ',' << row.variant << ',' << row.format << ','
             << csvField(row.label) << ',' << general(row.value) << ',' << fixed(row.acne, 4) << ','
@@ -111,7 +111,8 @@ void writeCsv(const std::filesystem::path& path, const std::vector<Row>& rows) {
             << row.evaluated << ',' << row.nonFiniteShade << ',' << row.nonFiniteDepth << ','
             << (row.nonFiniteStats ? 1 : 0) << ',' << row.map << ',' << general(row.nearPlane) << ','
             << (row.farPlane < 0.0 ? std::string("inf") : general(row.farPlane)) << ','
-            << csvField(row.skipReason) << ',' << fixed(row.seconds, 3) << '\n';
+            << csvField(row.skipReason) << ',' << fixed(row.seconds, 3) << ','
+            << (row.shimmer < 0.0 ? std::string() : fixed(row.shimmer, 4)) << '\n';
     engine::writeFileAtomically(path, out.str());
 }
 

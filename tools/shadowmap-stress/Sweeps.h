@@ -11,6 +11,8 @@
 //              infinite far plane (near = 1e-3 of the farthest scene corner)
 //   elevation  light direction 45 deg down to 0.5 deg over the floor (grazing)
 //   scale      every length times 1e-4 ... 1e4
+//   shimmer    the directional light with four cascades, stable and fitted, each measured
+//              for shimmer on an 8-frame pan of the camera one pixel a frame (full run only)
 //   special    light inside a closed box, light on a surface, camera at the light,
 //              light straight down (parallel to the usual up vector), an alpha-masked
 //              fence and its opaque twin (reported, not bounded)
@@ -40,6 +42,8 @@
 //                   texel's depth footprint there)
 //   special         camera at the light and light straight down: error without edge
 //                   pixels <= 0.5
+//   shimmer         stable cascades shimmer no more than fitted ones (per variant and
+//                   format), and fitted ones shimmer at all (the path compared something)
 // distance_baked (full sweep only) is reported, not bounded: there the float vertex data
 // itself, not a matrix, limits precision.
 #include "StressScenes.h"
@@ -58,6 +62,9 @@ struct SweepPoint {
     SceneSpec spec;         // light kind, variant and format are filled in per row
     // Light kinds this point is rendered with; empty = the sweep's.
     std::vector<LightKind> lights;
+    // > 0: also measure shimmer over this many frames of the one-pixel pan
+    // (evaluation/CameraPath.h, truth/Shimmer.h).
+    int shimmerFrames = 0;
 };
 
 struct Sweep {
@@ -95,6 +102,7 @@ struct Row {
     std::string skipReason;           // why no map, if none
     double nearPlane = 0.0, farPlane = 0.0;  // the light's (farPlane < 0: infinite)
     double seconds = 0.0;             // wall time of the row
+    double shimmer = -1.0;            // percent of compared points; < 0: not measured
     bool expectMap = true;            // false where losing the shadow is right
 };
 

@@ -13,6 +13,7 @@
 #include "StressScenes.h"
 #include "Sweeps.h"
 
+#include "CameraPath.h"
 #include "ShadowEvaluation.h"
 
 #include "engine/config/EngineConfig.h"
@@ -43,7 +44,7 @@ constexpr const char* kUsage =
     "  --out DIR              write DIR/stress.csv, DIR/<sweep>.png, DIR/summary.md\n"
     "  --quick                the small CI version (96x64 view, 512 maps, few points)\n"
     "  --sweep NAME           only this sweep (repeatable): distance, near_far, elevation,\n"
-    "                         scale, special\n"
+    "                         scale, shimmer, special (and distance_skinned, distance_baked)\n"
     "  --variants LIST        comma-separated (default standard,woo,backface)\n"
     "  --formats LIST         comma-separated among d16,d24,d32f,d32f_rz (d32f with\n"
     "                         reversed Z); default all four, quick: d24,d32f,d32f_rz\n"
@@ -233,6 +234,10 @@ struct Runner {
                 }
                 if (const auto found = frame.shadowMaps.find(0); found != frame.shadowMaps.end())
                     for (float depth : found->second.depth) row.nonFiniteDepth += !std::isfinite(depth);
+                if (point.shimmerFrames > 0)
+                    for (const evaluation::LightShimmer& moving :
+                         evaluator.shimmer(evaluation::onePixelPan(built.camera, point.shimmerFrames)))
+                        if (moving.slot == 0) row.shimmer = 100.0 * moving.count.fraction();
                 if (options.images) {
                     const std::string name =
                         row.sweep + "_" + row.label + "_" + row.light + "_" + row.variant + "_" + row.format;
