@@ -87,7 +87,14 @@ MapTime mapTime(const engine::ShadowView& view, const std::map<std::string, Pass
     return time;
 }
 
-const char* mapKind(const engine::ShadowView& view) { return !view.hasMap ? "none" : view.cube ? "cube" : "2d"; }
+// "none", "cube", "2d" or "cascades" (--stats' map kind).
+const char* mapKind(const engine::ShadowView& view) {
+    return !view.hasMap ? "none" : view.cube ? "cube" : view.cascadeSplits.empty() ? "2d" : "cascades";
+}
+// The same for the printed table, which says how many cascades: "csm 3".
+std::string mapLabel(const engine::ShadowView& view) {
+    return view.cascadeSplits.empty() ? mapKind(view) : "csm " + std::to_string(view.layers.size());
+}
 
 nlohmann::json statsJson(const RenderOptions& options, const std::vector<double>& frameMs,
                          const std::vector<std::string>& order,
@@ -146,7 +153,7 @@ nlohmann::json printLightErrors(engine::Renderer& renderer, const engine::Scene&
         std::snprintf(shownTime, sizeof shownTime, time.rendered ? "%.2f" : !light.view.hasMap ? "-" : "cached",
                       time.ms);
         std::printf("  %-20s %-9s %6s %9s %8.3f %8.3f %8.3f %12.3f\n", light.light.c_str(),
-                    light.view.variant.c_str(), mapKind(light.view), shownTime, 100 * e.acne, 100 * e.leak,
+                    light.view.variant.c_str(), mapLabel(light.view).c_str(), shownTime, 100 * e.acne, 100 * e.leak,
                     100 * e.error, 100 * e.errorNoEdge);
         lights.push_back({{"light", light.light}, {"slot", light.slot}, {"variant", light.view.variant},
                           {"map_ms", time.rendered ? nlohmann::json(time.ms) : nlohmann::json(nullptr)},

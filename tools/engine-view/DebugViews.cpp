@@ -106,6 +106,8 @@ ViewFrame DebugViews::render(DebugView view, const ViewedLight* light, const eng
     }
     case DebugView::AcneLeak:
         return acneLeak(*light, camera);
+    case DebugView::Cascades:
+        return cascades(*light, camera);
     }
     return out;
 }
@@ -193,6 +195,42 @@ ViewFrame DebugViews::acneLeak(const ViewedLight& light, const engine::FrameCame
                         percent(errors.leak));
     out.notes.push_back("error " + percent(errors.error) + ", off shadow edges " + percent(errors.errorNoEdge) + ", of " +
                         std::to_string(errors.evaluated) + " evaluated pixels");
+    return out;
+}
+
+ViewFrame DebugViews::cascades(const ViewedLight& light, const engine::FrameCamera& camera) {
+    engine::FrameRequest request;
+    request.camera = camera;
+    ViewFrame out;
+    out.frame = renderFrame(request);
+    out.image = {camera.width, camera.height, renderer_.readColor()};
+    const engine::ShadowView* view = out.frame.shadowView(light.slot);
+    if (!view || view->cascadeSplits.size() < 2) {
+        out.notes.push_back(light.name + " has no cascades this frame (one map or none): shaded view");
+        return out;
+    }
+    // The lookup's rule (visibility.glsl cascadeIndex): the first cascade whose far split lies
+    // beyond the pixel's view depth, the last one for anything farther.
+    static constexpr std::uint8_t kTints[4][3] = {{255, 40, 40}, {40, 220, 40}, {60, 90, 255}, {240, 220, 40}};
+    const std::vector<double>& splits = view->cascadeSplits;
+    const int count = static_cast<int>(splits.size()) - 1;
+    const truth::SurfaceBuffer& buffer = surfaces(camera);
+    const glm::dmat4& v = camera.eyeToWorld;
+    for (std::size_t i = 0; i < buffer.pixelCount(); ++i) {
+        if (!buffer.covered[i]) continue;
+        const double depth = -glm::dot(glm::dvec3(v[2]), buffer.worldPosition[i] - glm::dvec3(v[3]));
+        int cascade = 0;
+        while (cascade < count - 1 && depth > splits[cascade + 1]) ++cascade;
+        tint(&out.image.rgba[4 * i], kTints[cascade % 4], 0.35);
+    }
+    std::string bounds;
+    for (double split : splits) {
+        char text[32];
+        std::snprintf(text, sizeof text, "%s%.3g", bounds.empty() ? "" : " | ", split);
+        bounds += text;
+    }
+    out.notes.push_back(std::to_string(count) + " cascades of " + light.name + " (red, green, blue, yellow from near)");
+    out.notes.push_back("split view depths: " + bounds);
     return out;
 }
 

@@ -16,7 +16,10 @@
 //   truth       the shaded image with acne (false shadow, red) and leak (false light, blue)
 //               against Embree shadow rays from every pixel's surface point, weighted by
 //               how wrong the shade is; rates of the metrics (docs/metrics.md) in the notes. The ray
-//               tracing (~0.1 s) runs only when the camera, size or light changed.
+//               tracing (~0.1 s) runs only when the camera, size or light changed;
+//   cascades    the shaded image tinted by the cascade each pixel's shadow comes from (red,
+//               green, blue, yellow from near to far; ShadowView::cascadeSplits), the split
+//               distances in the notes (a light without cascades: the shaded image, said).
 #include "Image.h"
 #include "ViewerState.h"
 
@@ -57,6 +60,7 @@ private:
     ViewFrame depthMap(const ViewedLight& light, const engine::FrameCamera& camera);
     ViewFrame projected(const ViewedLight& light, const engine::FrameCamera& camera);
     ViewFrame acneLeak(const ViewedLight& light, const engine::FrameCamera& camera);
+    ViewFrame cascades(const ViewedLight& light, const engine::FrameCamera& camera);
 
     engine::Renderer& renderer_;
     const engine::Scene& scene_;

@@ -17,7 +17,7 @@ namespace engine_view {
 namespace {
 
 constexpr std::array<const char*, kDebugViewCount> kViewNames = {
-    "shaded", "light", "depth", "projected", "comparison", "shadow", "truth"};
+    "shaded", "light", "depth", "projected", "comparison", "shadow", "truth", "cascades"};
 
 // The value after `current` among a key's allowed values (the first when `current` is
 // none of them), so the keys cycle through exactly what the plugin accepts.

@@ -14,9 +14,9 @@
 
 namespace engine_view {
 
-enum class DebugView { Shaded, LightView, DepthMap, ProjectedDepth, Comparison, ShadowTerm, AcneLeak };
-constexpr int kDebugViewCount = 7;
-// "shaded", "light", "depth", "projected", "comparison", "shadow", "truth"
+enum class DebugView { Shaded, LightView, DepthMap, ProjectedDepth, Comparison, ShadowTerm, AcneLeak, Cascades };
+constexpr int kDebugViewCount = 8;
+// "shaded", "light", "depth", "projected", "comparison", "shadow", "truth", "cascades"
 const char* viewName(DebugView view);
 std::optional<DebugView> parseView(const std::string& name);
 

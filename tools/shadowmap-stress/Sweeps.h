@@ -98,7 +98,7 @@ struct Row {
     std::size_t nonFiniteShade = 0;   // shadow-term pixels that are NaN/Inf
     std::size_t nonFiniteDepth = 0;   // shadow-map texels that are NaN/Inf
     bool nonFiniteStats = false;      // the plugin reported a non-finite near/far/L
-    std::string map;                  // "2d", "cube" or "none"
+    std::string map;                  // "2d", "cube", "cascades" or "none"
     std::string skipReason;           // why no map, if none
     double nearPlane = 0.0, farPlane = 0.0;  // the light's (farPlane < 0: infinite)
     double seconds = 0.0;             // wall time of the row

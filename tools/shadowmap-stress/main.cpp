@@ -216,7 +216,8 @@ struct Runner {
                 row.format = format.name;
                 row.label = point.label;
                 row.value = point.value;
-                row.map = !published->hasMap ? "none" : published->cube ? "cube" : "2d";
+                row.map = !published->hasMap ? "none" : published->cube ? "cube"
+                          : published->cascadeSplits.empty() ? "2d" : "cascades";
                 row.skipReason = published->skipReason;
                 if (published->hasMap) {
                     row.nearPlane = published->nearPlane;

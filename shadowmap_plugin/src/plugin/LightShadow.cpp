@@ -155,6 +155,7 @@ engine::ShadowView LightShadow::view() const {
     } else if (frame.kind == MapKind::Cascades) {
         for (const LightView& cascade : frame.cascades.cascades)
             out.layers.push_back({cascade.lightToWorld, cascade.projection, !cascade.empty});
+        out.cascadeSplits = frame.cascades.splits;
         out.nearPlane = frame.cascades.cascades.front().nearPlane;
         out.farPlane = frame.cascades.cascades.front().farPlane;
     } else if (frame.kind == MapKind::Cube) {

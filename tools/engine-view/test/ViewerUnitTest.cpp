@@ -173,7 +173,7 @@ TEST(Script, ErrorsNameTheFileAndLine) {
     EXPECT_EQ(message("key F13"), "s.txt:1: key: unknown key \"F13\"");
     EXPECT_EQ(message("set sun"), "s.txt:1: set: expected 3 or more argument(s), got 1");
     EXPECT_EQ(message("view up"), "s.txt:1: view: unknown view \"up\" (shaded, light, depth, projected, comparison, "
-                                  "shadow, truth)");
+                                  "shadow, truth, cascades)");
     EXPECT_EQ(message("overlay maybe"), "s.txt:1: overlay: expected on or off");
 }
 

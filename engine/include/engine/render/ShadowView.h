@@ -12,7 +12,7 @@
 
 namespace engine {
 
-// One layer of a light's map: the 2D map, or one cube face (GL face order).
+// One layer of a light's map: the 2D map, one cube face (GL face order) or one cascade.
 struct ShadowMapLayer {
     glm::dmat4 lightToWorld{1.0};  // L of this layer's view
     glm::dmat4 projection{1.0};    // P_light
@@ -32,7 +32,11 @@ struct ShadowView {
     bool hasMap = false;
     std::string skipReason;
     bool cube = false;                  // six layers, one per cube face
-    std::vector<ShadowMapLayer> layers; // 1 (2D) or 6 (cube); empty without a map
+    std::vector<ShadowMapLayer> layers; // 1 (2D), 6 (cube) or one per cascade; empty without a map
+    // Cascades (a directional light's map sliced along the camera's view depth): the N + 1
+    // view depths (distance along the camera's -Z) bounding layers 0..N-1, nearest first;
+    // empty for any other map.
+    std::vector<double> cascadeSplits;
     double nearPlane = 0.0, farPlane = 0.0;  // farPlane may be +infinity
     bool renderedThisFrame = false;     // false: the map was still right (served from the cache)
     // The graph resource holding the map (FrameRequest::shadowMapSlots reads it back), and
