@@ -17,6 +17,9 @@
 //   cascadePlanes  Ee of each cascade of a cascaded directional light, [slot * 4 + cascade]
 //   cascadeFar  the far view depth (distance along the camera's -Z) of cascades 0..3; the
 //               largest float for cascades the light does not have
+//   cascadeBlend  x: cascade_blend (the band past each split, as a fraction of the nearer
+//               cascade's depth range, where the lookup fades into the next cascade; 0: none),
+//               y: the near view depth of cascade 0
 layout(std140, binding = 1) uniform ShadowData {
     mat4 eyePlanes[MAX_LIGHTS];
     vec4 params[MAX_LIGHTS];
@@ -25,4 +28,5 @@ layout(std140, binding = 1) uniform ShadowData {
     mat4 eyeToWorld;
     mat4 cascadePlanes[MAX_LIGHTS * 4];
     vec4 cascadeFar[MAX_LIGHTS];
+    vec4 cascadeBlend[MAX_LIGHTS];
 } shadowData;

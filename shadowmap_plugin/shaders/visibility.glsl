@@ -50,15 +50,37 @@ int cascadeIndex(int slot, vec3 eyePosition, int count) {
     return min(int(dot(passed, vec4(1.0))), count - 1);
 }
 
-float shadowMapCascades(int slot, vec3 eyePosition, sampler2DArrayShadow map, int count) {
-    int cascade = cascadeIndex(slot, eyePosition, count);
-    vec3 p = (shadowData.cascadePlanes[slot * 4 + cascade] * vec4(eyePosition, 1.0)).xyz;
+vec3 cascadeCoordinates(int slot, vec3 eyePosition, int cascade) {
+    return (shadowData.cascadePlanes[slot * 4 + cascade] * vec4(eyePosition, 1.0)).xyz;
+}
+
+// One cascade's lookup (as shadowMap2D, orthographic: q = 1, never behind the light).
+float cascadeShade(int slot, vec3 eyePosition, sampler2DArrayShadow map, int cascade) {
+    vec3 p = cascadeCoordinates(slot, eyePosition, cascade);
     bool reversed = shadowData.params[slot].x > 0.5;
     float reference = p.z - shadowData.params[slot].y;
     float shade = texture(map, vec4(p.xy, float(cascade), reversed ? max(reference, 0.0) : min(reference, 1.0)));
     bool outside = any(lessThan(p.xy, vec2(0.0))) || any(greaterThan(p.xy, vec2(1.0)));
     shade = outside ? shadowData.params[slot].w : shade;
     return (reversed ? p.z > 1.0 : p.z < 0.0) ? 1.0 : shade;
+}
+
+// With cascade_blend, just past a split the shade fades from the nearer cascade into the
+// pixel's own (weight 0 at the split, 1 at the band's end), where the nearer map holds the
+// point (a fitted cascade is fitted to reach over the band; math/CascadeFit.cpp).
+float shadowMapCascades(int slot, vec3 eyePosition, sampler2DArrayShadow map, int count) {
+    int cascade = cascadeIndex(slot, eyePosition, count);
+    float shade = cascadeShade(slot, eyePosition, map, cascade);
+    float blend = shadowData.cascadeBlend[slot].x;
+    if (blend > 0.0 && cascade > 0) {
+        float start = shadowData.cascadeFar[slot][cascade - 1];
+        float previousStart = cascade > 1 ? shadowData.cascadeFar[slot][cascade - 2] : shadowData.cascadeBlend[slot].y;
+        float t = (-eyePosition.z - start) / (blend * (start - previousStart));
+        vec2 nearer = cascadeCoordinates(slot, eyePosition, cascade - 1).xy;
+        bool held = all(greaterThanEqual(nearer, vec2(0.0))) && all(lessThanEqual(nearer, vec2(1.0)));
+        if (t < 1.0 && held) shade = mix(cascadeShade(slot, eyePosition, map, cascade - 1), shade, max(t, 0.0));
+    }
+    return shade;
 }
 
 // The distance from the light along the major axis of toPoint = x_world - light: the cube

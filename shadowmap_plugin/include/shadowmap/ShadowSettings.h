@@ -76,6 +76,9 @@
 //                   depth, one array layer (and depth pass) each; 1: one map fitted to
 //                   every visible receiver; auto: the count the view needs, per frame
 //                   (math/CascadeFit.h autoCascadeCount)
+//   cascade_blend   0 .. 0.5: the band past each split, as a     0 (hard switch)
+//                   fraction of the nearer cascade's depth range, over which the lookup
+//                   fades from that cascade into the next (which then also covers the band)
 //   cascade_lambda  0 .. 1: the practical split scheme's weight  0.75
 //                   of logarithmic over uniform splits (math/CascadeFit.h)
 //   stable          true: each cascade a texel-snapped square    true
@@ -140,6 +143,7 @@ struct ShadowSettings {
     float polygonOffsetClamp = 0.0f;
     int cascades = kAutoCascades;
     double cascadeLambda = 0.75;
+    double cascadeBlend = 0.0;
     bool stable = true;
 
     bool operator==(const ShadowSettings&) const = default;

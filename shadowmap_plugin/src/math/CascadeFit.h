@@ -42,6 +42,9 @@ struct CascadeCamera {
 struct CascadeOptions {
     int count = 1;         // 1..kMaxCascades
     double lambda = 0.5;   // practical split weight
+    // cascade_blend: a fitted (not stable) cascade but the last also covers this fraction of
+    // its depth range past its far split, where the lookup fades into the next one.
+    double blend = 0.0;
     bool stable = false;
     int resolution = 2048;  // texels per side of each cascade's map (stable snapping)
     FrustumFitOptions fit;  // margins and reversed Z

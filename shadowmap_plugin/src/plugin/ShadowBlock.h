@@ -21,6 +21,7 @@ struct ShadowBlock {
     glm::mat4 eyeToWorld;
     glm::mat4 cascadePlanes[engine::kMaxLights * kMaxCascades];  // light slot * 4 + cascade
     glm::vec4 cascadeFar[engine::kMaxLights];                    // far view depth per cascade
+    glm::vec4 cascadeBlend[engine::kMaxLights];                  // x: blend fraction, y: first split
 };
 
 static_assert(offsetof(ShadowBlock, params) == engine::kMaxLights * 64);
@@ -29,6 +30,7 @@ static_assert(offsetof(ShadowBlock, pointFar) == engine::kMaxLights * 96);
 static_assert(offsetof(ShadowBlock, eyeToWorld) == engine::kMaxLights * 112);
 static_assert(offsetof(ShadowBlock, cascadePlanes) == engine::kMaxLights * 112 + 64);
 static_assert(offsetof(ShadowBlock, cascadeFar) == engine::kMaxLights * (112 + 64 * kMaxCascades) + 64);
-static_assert(sizeof(ShadowBlock) == engine::kMaxLights * (128 + 64 * kMaxCascades) + 64);
+static_assert(offsetof(ShadowBlock, cascadeBlend) == engine::kMaxLights * (128 + 64 * kMaxCascades) + 64);
+static_assert(sizeof(ShadowBlock) == engine::kMaxLights * (144 + 64 * kMaxCascades) + 64);
 
 } // namespace shadowmap

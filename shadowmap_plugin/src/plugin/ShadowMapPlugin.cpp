@@ -94,6 +94,7 @@ CascadeOptions cascadeOptions(const ShadowSettings& settings, const FrustumFitOp
     CascadeOptions options;
     options.count = settings.cascades;
     options.lambda = settings.cascadeLambda;
+    options.blend = settings.cascadeBlend;
     options.stable = settings.stable;
     options.resolution = settings.resolution;
     options.fit = fit;
@@ -523,6 +524,9 @@ engine::LightVisibilityHook ShadowMapPlugin::makeHook(const engine::Frame& frame
         shadeKey.add(light.frame.mapKey);
         shadeKey.add(params[light.slot]);
         shadeKey.add(light.settings.filter);
+        // Cascades: which one a pixel reads (the splits) and how it fades into the next.
+        for (const double split : plan.cascades.splits) shadeKey.add(split);
+        shadeKey.add(light.settings.cascadeBlend);
         // Without map caching nothing is reused: a depth pass whose map no pass reads
         // would be culled, and timing runs (bench, cache_maps false) would time nothing.
         if (cacheMaps_) shadeKeys[light.slot] = shadeKey.value();
@@ -543,6 +547,8 @@ engine::LightVisibilityHook ShadowMapPlugin::makeHook(const engine::Frame& frame
                 block.cascadeFar[light.slot][c] =
                     c < cascadeCount ? static_cast<float>(plan.cascades.splits[c + 1]) : std::numeric_limits<float>::max();
             }
+            block.cascadeBlend[light.slot] = glm::vec4(static_cast<float>(light.settings.cascadeBlend),
+                                                       static_cast<float>(plan.cascades.splits.front()), 0.0f, 0.0f);
         } else if (!cube) {
             // Ee = Epo * V with Epo = S * P_light * L^-1, composed in double (Texgen.h).
             block.eyePlanes[light.slot] = uploaded;

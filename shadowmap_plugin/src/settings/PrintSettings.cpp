@@ -25,6 +25,7 @@ nlohmann::json printSettings(const ShadowSettings& settings) {
                           {"cascades", settings.cascades == kAutoCascades ? nlohmann::json("auto")
                                                                           : nlohmann::json(settings.cascades)},
                           {"cascade_lambda", settings.cascadeLambda},
+                          {"cascade_blend", settings.cascadeBlend},
                           {"stable", settings.stable}};
     if (settings.polygonOffset)
         out["polygon_offset"] = {jsonNumber(settings.polygonOffset->x), jsonNumber(settings.polygonOffset->y)};

@@ -130,6 +130,14 @@ std::vector<SettingKey> makeKeys() {
     lambda.description = "the split scheme's weight of logarithmic (1) over uniform (0) split distances";
     keys.push_back(lambda);
 
+    SettingKey blend = makeKey("cascade_blend", SettingKind::Number);
+    blend.minimum = 0;
+    blend.maximum = 0.5;
+    blend.values = "0 … 0.5";
+    blend.description = "the band past each split, as a fraction of the nearer cascade's depth range, over which "
+                        "the lookup fades into the next cascade; 0: a hard switch";
+    keys.push_back(blend);
+
     SettingKey stable = makeKey("stable", SettingKind::Boolean);
     stable.values = "`true`, `false`";
     stable.description = "cascades snapped to whole texels in squares of fixed size, so shadows do not "

@@ -140,6 +140,13 @@ void applySettings(ShadowSettings& settings, const nlohmann::json& json, const s
             settings.cascades = static_cast<int>(cascades);
         }
     }
+    if (json.contains("cascade_blend")) {
+        const double blend = json_read::readNumber(json["cascade_blend"], source, key("cascade_blend"));
+        if (blend < 0.0 || blend > 0.5)
+            engine::throwInputError(source, key("cascade_blend"),
+                                    "must be in [0, 0.5], got " + json["cascade_blend"].dump());
+        settings.cascadeBlend = blend;
+    }
     if (json.contains("cascade_lambda")) {
         const double lambda = json_read::readNumber(json["cascade_lambda"], source, key("cascade_lambda"));
         if (lambda < 0.0 || lambda > 1.0)

@@ -61,6 +61,55 @@ TEST_F(Cascades, TheDefaultChoosesCascadesOnTheStreet) {
     EXPECT_LE(automatic.wrongFraction(), single.wrongFraction() / 5.0);
 }
 
+// cascade_blend with stable cascades: the maps are the same (a stable cascade is not widened
+// for the band), so the blended mask equals the hard-switched one on every ground pixel
+// outside the bands [split, split + blend * (split - previous split)] and differs inside them.
+TEST_F(Cascades, BlendingChangesTheShadeOnlyInTheBandsPastEachSplit) {
+    constexpr double kBlend = 0.5;
+    const OutdoorScene hard = engine::test::makeOutdoorScene({{"cascades", 4}});
+    const OutdoorScene blended = engine::test::makeOutdoorScene({{"cascades", 4}, {"cascade_blend", kBlend}});
+    const engine::FrameCamera camera = engine::test::outdoorCamera(kWidth, kHeight);
+    nlohmann::json stats;
+    const auto hardMask = engine::test::renderShadowMask(plugins(), hard.scene, camera, hard.sunSlot, &stats);
+    const auto blendedMask = engine::test::renderShadowMask(plugins(), blended.scene, camera, blended.sunSlot);
+    std::vector<double> splits = {stats["shadowmap_plugin"]["lights"][0]["cascades"][0]["from"].get<double>()};
+    for (const nlohmann::json& cascade : stats["shadowmap_plugin"]["lights"][0]["cascades"])
+        splits.push_back(cascade["to"].get<double>());
+    ASSERT_EQ(splits.size(), 5u) << stats.dump();
+    const glm::dvec3 eye = camera.position(), forward = -glm::dvec3(camera.eyeToWorld[2]);
+    const auto inBand = [&](const glm::dvec3& p) {
+        const double depth = glm::dot(p - eye, forward);
+        for (std::size_t c = 1; c + 1 < splits.size(); ++c)
+            if (depth >= splits[c] && depth <= splits[c] + kBlend * (splits[c] - splits[c - 1])) return true;
+        return false;
+    };
+    // Every ground pixel the camera sees (not behind a post or building), by whether its
+    // point lies in a band.
+    const auto ground = engine::test::floorTruthImage(camera, 0.0, OutdoorScene::kGroundHalf,
+                                                      [](const glm::dvec3&) { return true; },
+                                                      engine::test::boxFloorTruth(hard.scene, hard.sunSlot,
+                                                                                  hard.occluders, 0.0));
+    int outsideDiffering = 0, insideDiffering = 0, outside = 0;
+    for (int y = 0; y < kHeight; ++y)
+        for (int x = 0; x < kWidth; ++x) {
+            const std::size_t i = std::size_t(y) * kWidth + x;
+            if (ground[i] < 0) continue;
+            const engine::test::Ray ray = engine::test::pixelRay(camera, x, y);
+            const glm::dvec3 p = ray.origin + ray.direction * (-ray.origin.y / ray.direction.y);
+            const bool differs = hardMask[i] != blendedMask[i];
+            if (inBand(p)) insideDiffering += differs;
+            else {
+                ++outside;
+                outsideDiffering += differs;
+            }
+        }
+    std::printf("blend %.1f: %d pixels differ inside the bands, %d of %d outside\n", kBlend, insideDiffering,
+                outsideDiffering, outside);
+    EXPECT_GT(outside, 10000);
+    EXPECT_EQ(outsideDiffering, 0);
+    EXPECT_GT(insideDiffering, 0) << "the blend changed nothing";
+}
+
 // One renderer over a camera path, so maps can be kept between frames: per frame the sun's
 // shadow mask and the plugin's report on the sun.
 struct WalkFrame {

@@ -52,7 +52,7 @@ TEST(ShadowSettingsErrors, UnknownKeyListsTheKnownOnes) {
     std::string known;
     for (const shadowmap::SettingKey& key : shadowmap::settingKeys()) known += (known.empty() ? "" : ", ") + key.name;
     EXPECT_EQ(known, "variant, resolution, depth_format, filter, polygon_offset, dimming, near_plane, far_plane, "
-                     "reversed_z, polygon_offset_clamp, cascades, cascade_lambda, stable");
+                     "reversed_z, polygon_offset_clamp, cascades, cascade_lambda, cascade_blend, stable");
     expectNamed({"unknown key", {{"colour", "red"}}, "colour", "unknown key (known: " + known + ")"});
 }
 
@@ -63,6 +63,8 @@ TEST(ShadowSettingsErrors, CascadeSettingsOutOfRangeAreNamed) {
     expectNamed({"cascades many", {{"cascades", "many"}}, "cascades",
                  "must be \"auto\" or a whole number in [1, 4], got \"many\""});
     expectNamed({"lambda 1.5", {{"cascade_lambda", 1.5}}, "cascade_lambda", "must be in [0, 1], got 1.5"});
+    expectNamed({"blend 0.6", {{"cascade_blend", 0.6}}, "cascade_blend", "must be in [0, 0.5], got 0.6"});
+    expectNamed({"blend -0.1", {{"cascade_blend", -0.1}}, "cascade_blend", "must be in [0, 0.5], got -0.1"});
     expectNamed({"stable type", {{"stable", "yes"}}, "stable", "must be true or false"});
 }
 

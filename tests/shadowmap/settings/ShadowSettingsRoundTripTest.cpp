@@ -39,6 +39,7 @@ std::vector<KeyChange> oneChangePerKey() {
         {"polygon_offset_clamp", [](ShadowSettings& s) { s.polygonOffsetClamp = 2.7f; }},
         {"cascades", [](ShadowSettings& s) { s.cascades = 3; }},
         {"cascade_lambda", [](ShadowSettings& s) { s.cascadeLambda = 0.3; }},
+        {"cascade_blend", [](ShadowSettings& s) { s.cascadeBlend = 0.25; }},
         {"stable", [](ShadowSettings& s) { s.stable = false; }},
     };
 }
@@ -59,7 +60,8 @@ TEST(ShadowSettingsRoundTrip, DefaultsPrintAsDocumented) {
     const nlohmann::json expected = {{"variant", "standard"}, {"resolution", 2048}, {"depth_format", "d24"},
                                      {"filter", "pcf"},       {"dimming", 0.4},     {"reversed_z", false},
                                      {"polygon_offset_clamp", 0.0}, {"cascades", "auto"},
-                                     {"cascade_lambda", 0.75},     {"stable", true}};
+                                     {"cascade_lambda", 0.75},     {"cascade_blend", 0.0},
+                                     {"stable", true}};
     EXPECT_EQ(shadowmap::printSettings(ShadowSettings{}), expected);
     EXPECT_EQ(roundTrip(ShadowSettings{}), ShadowSettings{});
     // The float 0.4 prints as the decimal it was written as, not 0.4000000059604645.

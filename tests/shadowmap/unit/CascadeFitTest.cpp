@@ -51,9 +51,11 @@ Aabb sceneBox() {
     return box;
 }
 
-CascadeViews fit(const CascadeCamera& camera, const glm::dvec3& sunDirection, bool stable, int count = 4) {
+CascadeViews fit(const CascadeCamera& camera, const glm::dvec3& sunDirection, bool stable, int count = 4,
+                 double blend = 0.0) {
     CascadeOptions options;
     options.count = count;
+    options.blend = blend;
     options.lambda = 0.5;
     options.stable = stable;
     options.resolution = 1024;
@@ -174,6 +176,23 @@ TEST(CascadeStable, SubTexelMovesKeepTheMatrixAndWholeTexelsMoveItByOne) {
     const double texel = 2.0 / (fitted.cascades[0].projection[0][0] * 1024);
     const CascadeViews nudged = fit(cameraAt(eye + 0.25 * texel * axis, target + 0.25 * texel * axis), kSun, false);
     EXPECT_NE(nudged.cascades[0].lightToWorld, fitted.cascades[0].lightToWorld);
+}
+
+// cascade_blend: a fitted cascade but the last reaches over the band past its far split (the
+// lookup fades into the next one there); the last one and stable cascades keep their views.
+TEST(CascadeFit, ABlendBandWidensFittedCascadesButTheLastAndNotStableOnes) {
+    const CascadeCamera camera = cameraAt({0, 1.7, 0}, {0, 1.0, -20});
+    const CascadeViews hard = fit(camera, kSun, false), blended = fit(camera, kSun, false, 4, 0.5);
+    ASSERT_EQ(hard.splits, blended.splits);  // the lookup's splits do not move
+    for (int c = 0; c < 3; ++c) {
+        // The orthographic extent (2 / P00) of cascade c, wider with the band.
+        EXPECT_GT(2.0 / blended.cascades[c].projection[0][0] + 2.0 / blended.cascades[c].projection[1][1],
+                  2.0 / hard.cascades[c].projection[0][0] + 2.0 / hard.cascades[c].projection[1][1])
+            << "cascade " << c;
+    }
+    EXPECT_EQ(blended.cascades[3].projection, hard.cascades[3].projection);
+    const CascadeViews stableHard = fit(camera, kSun, true), stableBlended = fit(camera, kSun, true, 4, 0.5);
+    for (int c = 0; c < 4; ++c) EXPECT_EQ(stableBlended.cascades[c].projection, stableHard.cascades[c].projection) << c;
 }
 
 TEST(CascadeStable, RadiusIsQuantizedUpAndSnappingRoundsToTheNearestTexel) {
