@@ -47,6 +47,8 @@ void Controls::pressKey(int key) {
     case GLFW_KEY_R: state_.cycleResolution(); break;
     case GLFW_KEY_F: state_.cycleDepthFormat(); break;
     case GLFW_KEY_P: state_.toggleFilter(); break;
+    case GLFW_KEY_C: state_.cycleCascades(); break;
+    case GLFW_KEY_T: state_.toggleStable(); break;
     case GLFW_KEY_LEFT_BRACKET: state_.addOffsetUnits(-1.0); break;
     case GLFW_KEY_RIGHT_BRACKET: state_.addOffsetUnits(1.0); break;
     case GLFW_KEY_COMMA: state_.addDimming(-0.05); break;

@@ -141,6 +141,21 @@ void ViewerState::toggleFilter() {
     set(selected_, "filter", nextChoice("filter", effective(selected_)["filter"].get<std::string>()));
 }
 
+void ViewerState::cycleCascades() {
+    if (selected_ < 0) return;
+    const nlohmann::json current = effective(selected_)["cascades"];
+    const shadowmap::SettingKey& key = shadowmap::settingKey("cascades");
+    const auto next = current.is_number() ? std::upper_bound(key.steps.begin(), key.steps.end(), current.get<double>())
+                                          : key.steps.begin();
+    set(selected_, "cascades", next == key.steps.end() ? nlohmann::json(key.choices.front())
+                                                        : nlohmann::json(static_cast<int>(*next)));
+}
+
+void ViewerState::toggleStable() {
+    if (selected_ < 0) return;
+    set(selected_, "stable", !effective(selected_)["stable"].get<bool>());
+}
+
 void ViewerState::addOffsetUnits(double delta) {
     if (selected_ < 0) return;
     const nlohmann::json offset = effective(selected_)["polygon_offset"];

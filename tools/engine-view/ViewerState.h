@@ -49,6 +49,8 @@ public:
     void cycleResolution();  // the resolution's steps: 512 -> 1024 -> 2048 -> 4096
     void cycleDepthFormat(); // d16 -> d24 -> d32f
     void toggleFilter();     // nearest <-> pcf
+    void cycleCascades();    // auto -> 1 -> 2 -> 3 -> 4 (directional lights; others ignore it)
+    void toggleStable();     // stable cascades on <-> off
     void addOffsetUnits(double delta);  // polygon offset units, kept >= 0
     void addDimming(double delta);      // kept in [0, 1], rounded to 0.01
     // Any key of extras.shadow (the plugin checks it when applied).

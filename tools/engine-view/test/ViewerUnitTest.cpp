@@ -267,6 +267,8 @@ TEST(ViewerState, KeysCycleThroughWhatThePluginAccepts) {
               rotatedFrom(shadowmap::settingKey("filter").choices, shadowmap::toString(defaults.filter)));
     EXPECT_EQ(visit("resolution", &ViewerState::cycleResolution),
               (std::vector<nlohmann::json>{2048, 4096, 512, 1024}));
+    EXPECT_EQ(visit("cascades", &ViewerState::cycleCascades), (std::vector<nlohmann::json>{"auto", 1, 2, 3, 4}));
+    EXPECT_EQ(visit("stable", &ViewerState::toggleStable), (std::vector<nlohmann::json>{true, false}));
     EXPECT_EQ(state.effective(0)["dimming"], 0.4);
 }
 
