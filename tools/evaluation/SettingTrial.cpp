@@ -67,19 +67,21 @@ TrialResult SettingTrial::measure() {
     for (auto& [slot, views] : bySlot) {
         LightResult pooled = views.front();
         std::vector<double> ms;
-        std::vector<truth::ShadowErrors> errors, areaErrors;
+        std::vector<truth::ShadowErrors> errors, areaErrors, nearErrors;
         pooled.framesRendered = 0;
         pooled.nonFinitePixels = 0;
         for (const LightResult& view : views) {
             ms.push_back(view.shadowMs);
             errors.push_back(view.errors);
             areaErrors.push_back(view.areaErrors);
+            nearErrors.push_back(view.nearErrors);
             pooled.framesRendered += view.framesRendered;
             pooled.nonFinitePixels += view.nonFinitePixels;
         }
         pooled.shadowMs = tools::median(ms);
         pooled.errors = pooledErrors(errors);
         pooled.areaErrors = pooledErrors(areaErrors);
+        pooled.nearErrors = pooledErrors(nearErrors);
         result.lights.push_back(std::move(pooled));
     }
     return result;

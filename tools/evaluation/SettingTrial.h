@@ -53,6 +53,8 @@ public:
 
     // Also score every light against the area truth (ShadowEvaluator::setAreaTruth).
     void setAreaTruth(bool enabled) { evaluator_.setAreaTruth(enabled); }
+    // Also score every light near the camera (ShadowEvaluator::setNearDistance).
+    void setNearDistance(double distance) { evaluator_.setNearDistance(distance); }
 
     int renders() const { return renders_; }  // measure() calls so far
 

@@ -56,6 +56,12 @@ ViewResult ShadowEvaluator::evaluate(const engine::FrameCamera& camera, int fram
         const auto evaluationSet = truth::evaluationSet(scene_, out.slot, surfaces);
         out.errors = truth::shadowErrors(camera.width, camera.height, truthImage, shade, evaluationSet,
                                          surfaces.covered);
+        if (nearDistance_ > 0.0) {
+            std::vector<std::uint8_t> near = evaluationSet;
+            for (std::size_t i = 0; i < near.size(); ++i)
+                near[i] = near[i] && glm::length(surfaces.worldPosition[i] - surfaces.cameraPosition) < nearDistance_;
+            out.nearErrors = truth::shadowErrors(camera.width, camera.height, truthImage, shade, near, surfaces.covered);
+        }
         if (areaTruth_)
             out.areaErrors = truth::areaShadowErrors(camera.width, camera.height,
                                                      visibility_.litFraction(scene_, out.slot, surfaces),

@@ -27,6 +27,9 @@ struct LightResult {
     // Against the area truth (lit fraction of each pixel), when the evaluator computes it;
     // evaluated == 0 otherwise. The figure that judges a filtered (PCF) shade.
     truth::ShadowErrors areaErrors;
+    // With setNearDistance(d): the errors on the evaluation pixels whose surface point lies
+    // within d of the camera; evaluated == 0 otherwise.
+    truth::ShadowErrors nearErrors;
     std::size_t nonFinitePixels = 0;  // NaN/Inf anywhere in its shade (must stay 0)
 };
 
@@ -51,6 +54,8 @@ public:
 
     // Also score every light against the area truth (16 shadow rays per pixel instead of 1).
     void setAreaTruth(bool enabled) { areaTruth_ = enabled; }
+    // Also score every light on the pixels within `distance` of the camera (0: not).
+    void setNearDistance(double distance) { nearDistance_ = distance; }
 
     // Renders `frames` timed frames of `camera` (0: none, errors only), then evaluates every
     // light that has a shadow (variant other than none).
@@ -67,6 +72,7 @@ private:
     truth::SurfaceCapture capture_;
     truth::RayTracedVisibility visibility_;
     bool areaTruth_ = false;
+    double nearDistance_ = 0.0;
 };
 
 } // namespace evaluation

@@ -75,6 +75,8 @@ const char* benchUsage() {
         "                       frame (evaluation/CameraPath.h); results.csv's shimmer column\n"
         "                       (percent of surface points whose shadow state changed between frames\n"
         "                       while the truth did not; docs/metrics.md)\n"
+        "  [--near D]           also score each light on the pixels within D of the camera (world\n"
+        "                       units): results.csv's near_error, near_error_noedge\n"
         "  [--time T,...]       measure each scene posed at each listed time in seconds (every\n"
         "                       animation of the file, skins and morph targets included; the truth\n"
         "                       traces the same pose); the scene column reads <name>@<T>s\n"
@@ -133,6 +135,7 @@ BenchOptions parseBenchOptions(int argc, char** argv) {
         else if (flag == "--height") options.height = tools::parseInteger(flag, value, 1, 16384);
         else if (flag == "--frames") options.frames = tools::parseInteger(flag, value, 1, 10000);
         else if (flag == "--shimmer") options.shimmerFrames = tools::parseInteger(flag, value, 2, 10000);
+        else if (flag == "--near") options.nearDistance = tools::parsePositiveNumber(flag, value, 1e12);
         else if (flag == "--variants") options.variants = tools::parseNames(flag, value, knownVariants());
         else if (flag == "--resolutions") options.resolutions = tools::parseIntegerList(flag, value, minResolution, maxResolution);
         else if (flag == "--depth-formats") options.depthFormats = tools::parseNames(flag, value, knownFormats());

@@ -27,6 +27,8 @@ struct BenchOptions {
     int frames = 0;
     // --shimmer N: also measure shimmer on N frames of a slow pan (evaluation/CameraPath.h); 0: not.
     int shimmerFrames = 0;
+    // --near D: also score each light on the pixels within D (world units) of the camera; 0: not.
+    double nearDistance = 0.0;
     // Added to every scene that has no light (e.g. Debian's 2CylinderEngine.glb);
     // nullopt: --key-light none, such scenes are reported as an error.
     std::optional<engine::Light::Type> keyLight = engine::Light::Type::Spot;

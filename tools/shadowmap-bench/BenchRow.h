@@ -33,6 +33,8 @@ struct BenchRow {
     // With --shimmer: percent of the compared surface points whose shadow state changed
     // between consecutive frames of the camera path (truth/Shimmer.h); none without.
     std::optional<double> shimmer;
+    // With --near D: the error and the error off edges on pixels within D of the camera.
+    std::optional<double> nearError, nearErrorNoEdge;
 };
 
 } // namespace shadowmap_bench

@@ -21,6 +21,9 @@ std::string number(double value, int decimals) {
     return text;
 }
 
+// A figure the sweep may not have measured: empty then.
+std::string optional(const std::optional<double>& value) { return value ? number(*value, 4) : std::string(); }
+
 } // namespace
 
 std::string resultsCsv(const std::vector<BenchRow>& rows) {
@@ -33,7 +36,7 @@ std::string resultsCsv(const std::vector<BenchRow>& rows) {
                number(row.acne, 4) + "," + number(row.leak, 4) + "," + number(row.error, 4) + "," +
                number(row.errorNoEdge, 4) + "," + number(row.areaAcne, 4) + "," +
                number(row.areaLeak, 4) + "," + number(row.areaError, 4) + "," +
-               (row.shimmer ? number(*row.shimmer, 4) : std::string()) + "\n";
+               optional(row.shimmer) + "," + optional(row.nearError) + "," + optional(row.nearErrorNoEdge) + "\n";
     }
     return csv;
 }

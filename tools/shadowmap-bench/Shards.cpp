@@ -103,7 +103,8 @@ std::vector<BenchRow> parseResultsCsv(const std::string& text, const std::string
         row.areaAcne = number(f[12], file, line);
         row.areaLeak = number(f[13], file, line);
         row.areaError = number(f[14], file, line);
-        if (!f[15].empty()) row.shimmer = number(f[15], file, line);
+        for (auto [field, figure] : {std::pair{15, &row.shimmer}, {16, &row.nearError}, {17, &row.nearErrorNoEdge}})
+            if (!f[field].empty()) *figure = number(f[field], file, line);
         rows.push_back(std::move(row));
     }
     return rows;

@@ -49,6 +49,10 @@ BenchRow makeRow(const BenchScene& scene, const ShadowSetting& setting, double f
     row.areaAcne = 100.0 * light.areaErrors.acne;
     row.areaLeak = 100.0 * light.areaErrors.leak;
     row.areaError = 100.0 * light.areaErrors.error;
+    if (scene.nearDistance > 0.0) {
+        row.nearError = 100.0 * light.nearErrors.error;
+        row.nearErrorNoEdge = 100.0 * light.nearErrors.errorNoEdge;
+    }
     return row;
 }
 
@@ -92,6 +96,7 @@ BenchScene loadBenchScene(const BenchOptions& options, const std::string& path, 
     if (bench.scene.meshInstances.empty()) engine::throwInputError(path, "", "the scene has no mesh to shadow");
     bench.camera = engine::chooseCamera(bench.scene, options.camera, options.width, options.height, path);
     bench.shadowedLights = std::min<int>(bench.scene.lightInstances.size(), engine::kMaxLights);
+    bench.nearDistance = options.nearDistance;
     if (options.shimmerFrames > 0) bench.shimmerPath = evaluation::onePixelPan(bench.camera, options.shimmerFrames);
     return bench;
 }
@@ -158,6 +163,7 @@ std::vector<BenchRow> runSweep(std::vector<BenchScene>& scenes, const engine::Re
         if (scene.settings.empty()) continue;  // another shard's
         evaluation::SettingTrial trial(renderer, scene.scene, {scene.camera}, frames);
         trial.setAreaTruth(true);
+        trial.setNearDistance(scene.nearDistance);
         for (const ShadowSetting& setting : scene.settings) {
             applyToEveryLight(scene.scene, setting);
             const evaluation::TrialResult measured = trial.measure();

@@ -25,6 +25,7 @@ struct BenchScene {
     std::vector<ShadowSetting> settings;  // what this scene is swept over
     // --shimmer: the camera path (evaluation/CameraPath.h); empty: no shimmer.
     std::vector<engine::FrameCamera> shimmerPath;
+    double nearDistance = 0.0;  // --near: also score within this distance of the camera; 0: not
 };
 
 // Loads and checks every scene before anything is rendered, so a bad file fails at once,

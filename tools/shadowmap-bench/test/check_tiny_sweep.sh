@@ -12,7 +12,7 @@ trap 'rm -rf "$out"' EXIT
   --width 64 --height 48 --frames 1 --out "$out"
 
 csv=$out/results.csv
-header='scene,light,variant,resolution,depth_format,filter,shadow_ms,frame_ms,acne,leak,error,error_noedge,area_acne,area_leak,area_error,shimmer'
+header='scene,light,variant,resolution,depth_format,filter,shadow_ms,frame_ms,acne,leak,error,error_noedge,area_acne,area_leak,area_error,shimmer,near_error,near_error_noedge'
 [[ "$(head -n 1 "$csv")" == "$header" ]] || { echo "bad header: $(head -n 1 "$csv")"; exit 1; }
 rows=$(tail -n +2 "$csv" | wc -l)
 [[ $rows -eq 3 ]] || { echo "expected 3 rows (the showcase's lights), got $rows"; exit 1; }
@@ -28,7 +28,7 @@ awk -F, 'NR > 1 {
   for (i = 9; i <= 15; ++i) if (!($i >= 0 && $i <= 100)) { print "error out of [0,100]: " $0; bad = 1 }
   d = $15 - $13 - $14; if (d > 3e-4 || d < -3e-4) { print "area error is not acne + leak: " $0; bad = 1 }
   if (!($15 > 0)) { print "area error 0 (area truth not computed?): " $0; bad = 1 }
-  if ($16 != "") { print "a shimmer figure without --shimmer: " $0; bad = 1 }
+  if ($16 != "" || $17 != "" || $18 != "") { print "a shimmer or near figure without --shimmer, --near: " $0; bad = 1 }
 } END { exit bad }' "$csv"
 [[ -s $out/summary.md ]] || { echo "summary.md missing or empty"; exit 1; }
 # It cites the metric definitions by a file the repository has.
@@ -36,6 +36,15 @@ grep -q 'docs/metrics.md' "$out/summary.md" && [[ -f $content/../docs/metrics.md
   || { echo "summary.md does not cite docs/metrics.md for its error metrics"; exit 1; }
 [[ -s $out/time_vs_error.gp ]] || { echo "time_vs_error.gp missing or empty"; exit 1; }
 echo "ok: $rows rows"
+
+# --near with a distance beyond the whole view scores every evaluated pixel: the near
+# figures equal the overall ones, column for column.
+"$bench" --config "$content/engine.json" --scene "$content/scenes/showcase.gltf" \
+  --variants standard --resolutions 256 --depth-formats d24 --filters pcf \
+  --width 64 --height 48 --frames 1 --near 1e6 --out "$out/near"
+awk -F, 'NR > 1 && ($17 != $11 || $18 != $12) { print "near figures differ from the overall ones at 1e6: " $0; bad = 1 }
+         END { exit bad }' "$out/near/results.csv"
+echo "ok: --near 1e6 gives the overall figures"
 
 # A scene without lights gets the key light engine-render and engine-view place (spot by
 # default), and --ground their ground; the placement is printed.
