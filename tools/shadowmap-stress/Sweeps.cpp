@@ -49,35 +49,41 @@ Sweep distanceSweep(bool quick) {
     return sweep;
 }
 
+// The distance sweep's points, each scene changed by `change`, under another name.
+Sweep distanceVariant(bool quick, const char* name, const char* title, void (*change)(SceneSpec&), const char* note) {
+    Sweep sweep = distanceSweep(quick);
+    sweep.name = name;
+    sweep.title = title;
+    for (SweepPoint& point : sweep.points) change(point.spec);
+    sweep.note = note;
+    return sweep;
+}
+
 // The same distances with the offset baked into float vertex positions: what no double
 // matrix can repair (float spacing 0.0625 at 1e6), reported to show where the data, not
 // the engine, sets the limit.
 Sweep bakedDistanceSweep() {
-    Sweep sweep = distanceSweep(false);
-    sweep.name = "distance_baked";
-    sweep.title = "Scene far from the origin, offset baked into float vertex positions";
-    for (SweepPoint& point : sweep.points) point.spec.bakeOffset = true;
-    sweep.note = "Reported, not bounded. The offset is in the float vertex positions themselves (identity "
-                 "nodes), so the data is quantized where it is stored (spacing 0.0625 at 1e6). The engine "
-                 "uploads each mesh relative to its bounds' centre (subtracted in double) and folds that "
-                 "translation into M (SceneGpu::modelMatrix), so the GPU never multiplies 1e6-sized floats: "
-                 "before that fix a point light's error was 14.7% at 1e3 and 60-90% at 1e6.";
-    return sweep;
+    return distanceVariant(
+        false, "distance_baked", "Scene far from the origin, offset baked into float vertex positions",
+        [](SceneSpec& spec) { spec.bakeOffset = true; },
+        "Reported, not bounded. The offset is in the float vertex positions themselves (identity "
+        "nodes), so the data is quantized where it is stored (spacing 0.0625 at 1e6). The engine "
+        "uploads each mesh relative to its bounds' centre (subtracted in double) and folds that "
+        "translation into M (SceneGpu::modelMatrix), so the GPU never multiplies 1e6-sized floats: "
+        "before that fix a point light's error was 14.7% at 1e3 and 60-90% at 1e6.");
 }
 
 // The same distances with every mesh skinned to a joint that carries its placement: the
 // posed vertices are computed on the CPU in world space (double) and handed over relative to
 // the pose's centre, as for any mesh, so the error must not move either.
 Sweep skinnedDistanceSweep(bool quick) {
-    Sweep sweep = distanceSweep(quick);
-    sweep.name = "distance_skinned";
-    sweep.title = "Scene translated away from the origin, every mesh skinned to a joint";
-    for (SweepPoint& point : sweep.points) point.spec.skinned = true;
-    sweep.note = "Every mesh skinned to one joint node that carries its placement (inverse bind matrix the identity), "
-                 "its own node the identity: the vertices are posed on the CPU in double (Deform.h) and stored "
-                 "relative to the pose's centre, as an exported character is drawn. Bounds: distance (up to 1e6), "
-                 "distance_1e7, as for distance.";
-    return sweep;
+    return distanceVariant(
+        quick, "distance_skinned", "Scene translated away from the origin, every mesh skinned to a joint",
+        [](SceneSpec& spec) { spec.skinned = true; },
+        "Every mesh skinned to one joint node that carries its placement (inverse bind matrix the identity), "
+        "its own node the identity: the vertices are posed on the CPU in double (Deform.h) and stored "
+        "relative to the pose's centre, as an exported character is drawn. Bounds: distance (up to 1e6), "
+        "distance_1e7, as for distance.");
 }
 
 Sweep nearFarSweep(bool quick) {
