@@ -133,6 +133,7 @@ nlohmann::json LightShadow::stats() const {
             return list;
         };
         out["cascades_auto"] = {{"count", frame.cascadeCount},
+                                {"reused", frame.cascadeNeedReused},
                                 {"texels_per_pixel", perCount(frame.cascadeNeed.texelsPerPixel)},
                                 {"mean_texel", perCount(frame.cascadeNeed.meanTexel)}};
     }

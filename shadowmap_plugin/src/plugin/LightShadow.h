@@ -27,6 +27,7 @@ struct LightShadowFrame {
     CascadeViews cascades;       // directional with cascades > 1: one view per array layer
     int cascadeCount = 1;        // directional: the cascades this frame (1: one map)
     bool autoCascades = false;   // the count was chosen (cascades: auto) from cascadeNeed
+    bool cascadeNeedReused = false;  // ... weighed last frame: nothing it depends on changed
     CascadeNeed cascadeNeed;
     std::string skipReason;      // why no map this frame (variant none, empty frustum...)
     bool emptyFrustum = false;   // skipped because no visible receiver is inside it
@@ -50,8 +51,11 @@ struct LightShadow {
     std::uint64_t renderedKey = 0;
     // Cascades: the key each layer was last rendered from; 0 = none.
     std::vector<std::uint64_t> renderedCascadeKeys;
-    // cascades: auto: the count chosen last frame (0: none yet), which a small change keeps.
+    // cascades: auto: the count chosen last frame (0: none yet), which a small change keeps,
+    // and what was weighed for it, with the hash of its inputs (reused while they hold).
     int autoCascadeCount = 0;
+    CascadeNeed cascadeNeed;
+    std::uint64_t cascadeNeedKey = 0;
 
     // (Re)creates the map when size, format, filter or kind changed, with the comparison
     // state the visibility hook relies on (GL_COMPARE_REF_TO_TEXTURE, GL_LEQUAL).

@@ -102,15 +102,44 @@ CascadeOptions cascadeOptions(const ShadowSettings& settings, const FrustumFitOp
 }
 
 // A directional light's cascade count this frame: the setting's, or with `auto` the count
-// the view needs (CascadeFit.h autoCascadeCount), remembered for the next frame.
+// the view needs (CascadeFit.h autoCascadeCount), remembered for the next frame. The weighing
+// fits one map and three cascade sets; while its inputs (camera, light, boxes, settings) stay
+// as they were, last frame's answer is reused.
 int cascadeCount(LightShadow& light, const engine::LightInstance& placed, const engine::Light& source,
                  const ShadowBounds& bounds, const engine::Frame& frame, const FrustumFitOptions& fit) {
     if (light.settings.cascades != kAutoCascades) return light.settings.cascades;
     LightShadowFrame& plan = light.frame;
     plan.autoCascades = true;
-    plan.cascadeNeed = cascadeNeed(placed, source, bounds, sceneBounds(frame.scene()),
+    const engine::Aabb everything = sceneBounds(frame.scene());
+    engine::Hasher inputs;
+    inputs.add(everything.min);
+    inputs.add(everything.max);
+    inputs.add(frame.camera().eyeToWorld);
+    inputs.add(frame.camera().projection);
+    inputs.add(frame.camera().height);
+    inputs.add(placed.world);
+    inputs.add(light.settings.resolution);
+    inputs.add(light.settings.cascadeLambda);
+    inputs.add(light.settings.cascadeBlend);
+    inputs.add(light.settings.stable);
+    inputs.add(light.settings.reversedZ);
+    for (const auto* boxes : {&bounds.receivers, &bounds.casters}) {
+        inputs.add(boxes->size());
+        for (const engine::Aabb& box : *boxes) {
+            inputs.add(box.min);
+            inputs.add(box.max);
+        }
+    }
+    if (light.autoCascadeCount > 0 && inputs.value() == light.cascadeNeedKey) {
+        plan.cascadeNeed = light.cascadeNeed;
+        plan.cascadeNeedReused = true;
+        return light.autoCascadeCount;
+    }
+    plan.cascadeNeed = cascadeNeed(placed, source, bounds, everything,
                                    {frame.camera().eyeToWorld, frame.camera().projection},
                                    cascadeOptions(light.settings, fit), frame.camera().height);
+    light.cascadeNeed = plan.cascadeNeed;
+    light.cascadeNeedKey = inputs.value();
     light.autoCascadeCount = autoCascadeCount(plan.cascadeNeed, light.autoCascadeCount);
     return light.autoCascadeCount;
 }

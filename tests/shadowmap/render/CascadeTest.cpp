@@ -162,10 +162,17 @@ TEST_F(Cascades, StableFarCascadesAreKeptOnASlowWalk) {
     EXPECT_EQ(fitted[3], kFrames - 1);
 
     // The default (auto) keeps one count over the walk: a count that flipped would
-    // re-create the array map and re-render every layer.
-    const std::vector<WalkFrame> automatic = walk(plugins(), engine::test::makeOutdoorScene(nlohmann::json::object()), cameras);
-    for (const WalkFrame& frame : automatic)
-        EXPECT_EQ(frame.sun["cascades_auto"]["count"], automatic.front().sun["cascades_auto"]["count"]) << frame.sun.dump();
+    // re-create the array map and re-render every layer. Each step moves the camera, so each
+    // frame weighs the counts again; a frame that repeats the last camera reuses the weighing.
+    std::vector<engine::FrameCamera> walkAndStop = cameras;
+    walkAndStop.push_back(cameras.back());
+    const std::vector<WalkFrame> automatic =
+        walk(plugins(), engine::test::makeOutdoorScene(nlohmann::json::object()), walkAndStop);
+    for (std::size_t i = 0; i < automatic.size(); ++i) {
+        const nlohmann::json& chosen = automatic[i].sun["cascades_auto"];
+        EXPECT_EQ(chosen["count"], automatic.front().sun["cascades_auto"]["count"]) << automatic[i].sun.dump();
+        EXPECT_EQ(chosen["reused"], i + 1 == automatic.size()) << "frame " << i;
+    }
     const std::vector<int> renders = cascadeRenders(automatic);
     std::printf("auto: %zu cascades, re-rendered in %d %d %d frames\n", automatic.front().sun["cascades"].size(),
                 renders[0], renders[1], renders[2]);
