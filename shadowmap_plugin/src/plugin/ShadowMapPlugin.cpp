@@ -276,8 +276,8 @@ bool ShadowMapPlugin::planLight(LightShadow& light, const engine::Frame& frame,
         return false;
     }
     // Cascades slice a directional light's parallel projection; a spot or point light's
-    // perspective already spends its texels near the light (said once).
-    if (light.type != engine::Light::Type::Directional && light.settings.cascades > 1)  // auto says nothing
+    // perspective already spends its texels near the light (said once when set; auto is silent).
+    if (light.type != engine::Light::Type::Directional && light.settings.cascades > 1)
         warnOnce(light, "cascades apply to directional lights only: " + std::to_string(light.settings.cascades) +
                             " ignored");
     // Forced near/far and reversed Z (shadowmap/ShadowSettings.h). A directional light's depth is
@@ -291,6 +291,8 @@ bool ShadowMapPlugin::planLight(LightShadow& light, const engine::Frame& frame,
         fitOptions.nearPlane = light.settings.nearPlane;
         fitOptions.farPlane = light.settings.farPlane;
     }
+    if (light.type == engine::Light::Type::Directional)
+        plan.cascadeCount = cascadeCount(light, placed, source, bounds, frame, fitOptions);
     bool valid = false, empty = true;
     std::string invalidReason;
     if (light.type == engine::Light::Type::Point) {
@@ -298,8 +300,7 @@ bool ShadowMapPlugin::planLight(LightShadow& light, const engine::Frame& frame,
         valid = plan.pointViews.valid;
         invalidReason = plan.pointViews.invalidReason;
         for (const LightView& face : plan.pointViews.faces) empty = empty && face.empty;
-    } else if (light.type == engine::Light::Type::Directional &&
-               (plan.cascadeCount = cascadeCount(light, placed, source, bounds, frame, fitOptions)) > 1) {
+    } else if (plan.cascadeCount > 1) {
         CascadeOptions options = cascadeOptions(light.settings, fitOptions);
         options.count = plan.cascadeCount;
         plan.cascades = fitDirectionalCascades(placed, source, bounds, sceneBounds(scene),
