@@ -87,13 +87,9 @@ MapTime mapTime(const engine::ShadowView& view, const std::map<std::string, Pass
     return time;
 }
 
-// "none", "cube", "2d" or "cascades" (--stats' map kind).
-const char* mapKind(const engine::ShadowView& view) {
-    return !view.hasMap ? "none" : view.cube ? "cube" : view.cascadeSplits.empty() ? "2d" : "cascades";
-}
-// The same for the printed table, which says how many cascades: "csm 3".
+// engine::mapKindName for the printed table, which says how many cascades: "csm 3".
 std::string mapLabel(const engine::ShadowView& view) {
-    return view.cascadeSplits.empty() ? mapKind(view) : "csm " + std::to_string(view.layers.size());
+    return view.cascadeSplits.empty() ? engine::mapKindName(view) : "csm " + std::to_string(view.layers.size());
 }
 
 nlohmann::json statsJson(const RenderOptions& options, const std::vector<double>& frameMs,
@@ -126,7 +122,7 @@ nlohmann::json statsJson(const RenderOptions& options, const std::vector<double>
     for (const engine::ShadowView& view : last.shadowViews) {
         const MapTime time = mapTime(view, passes);
         maps.push_back({{"light", view.name}, {"slot", view.slot}, {"variant", view.variant},
-                        {"map", mapKind(view)}, {"map_ms", time.rendered ? nlohmann::json(time.ms) : nlohmann::json(nullptr)},
+                        {"map", engine::mapKindName(view)}, {"map_ms", time.rendered ? nlohmann::json(time.ms) : nlohmann::json(nullptr)},
                         {"map_cached", view.hasMap && !time.rendered}, {"frames_rendered", time.frames}});
     }
     stats["shadow_maps"] = maps;

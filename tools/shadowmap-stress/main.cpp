@@ -216,8 +216,7 @@ struct Runner {
                 row.format = format.name;
                 row.label = point.label;
                 row.value = point.value;
-                row.map = !published->hasMap ? "none" : published->cube ? "cube"
-                          : published->cascadeSplits.empty() ? "2d" : "cascades";
+                row.map = engine::mapKindName(*published);
                 row.skipReason = published->skipReason;
                 if (published->hasMap) {
                     row.nearPlane = published->nearPlane;

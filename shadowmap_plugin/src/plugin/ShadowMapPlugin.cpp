@@ -106,11 +106,11 @@ CascadeOptions cascadeOptions(const ShadowSettings& settings, const FrustumFitOp
 // fits one map and three cascade sets; while its inputs (camera, light, boxes, settings) stay
 // as they were, last frame's answer is reused.
 int cascadeCount(LightShadow& light, const engine::LightInstance& placed, const engine::Light& source,
-                 const ShadowBounds& bounds, const engine::Frame& frame, const FrustumFitOptions& fit) {
+                 const ShadowBounds& bounds, const engine::Aabb& everything, const engine::Frame& frame,
+                 const FrustumFitOptions& fit) {
     if (light.settings.cascades != kAutoCascades) return light.settings.cascades;
     LightShadowFrame& plan = light.frame;
     plan.autoCascades = true;
-    const engine::Aabb everything = sceneBounds(frame.scene());
     engine::Hasher inputs;
     inputs.add(everything.min);
     inputs.add(everything.max);
@@ -291,8 +291,11 @@ bool ShadowMapPlugin::planLight(LightShadow& light, const engine::Frame& frame,
         fitOptions.nearPlane = light.settings.nearPlane;
         fitOptions.farPlane = light.settings.farPlane;
     }
+    // Every receiver and caster, what stable cascades anchor to (and auto weighs).
+    const engine::Aabb everything =
+        light.type == engine::Light::Type::Directional ? sceneBounds(scene) : engine::Aabb{};
     if (light.type == engine::Light::Type::Directional)
-        plan.cascadeCount = cascadeCount(light, placed, source, bounds, frame, fitOptions);
+        plan.cascadeCount = cascadeCount(light, placed, source, bounds, everything, frame, fitOptions);
     bool valid = false, empty = true;
     std::string invalidReason;
     if (light.type == engine::Light::Type::Point) {
@@ -303,7 +306,7 @@ bool ShadowMapPlugin::planLight(LightShadow& light, const engine::Frame& frame,
     } else if (plan.cascadeCount > 1) {
         CascadeOptions options = cascadeOptions(light.settings, fitOptions);
         options.count = plan.cascadeCount;
-        plan.cascades = fitDirectionalCascades(placed, source, bounds, sceneBounds(scene),
+        plan.cascades = fitDirectionalCascades(placed, source, bounds, everything,
                                                {frame.camera().eyeToWorld, frame.camera().projection}, options);
         valid = plan.cascades.valid;
         invalidReason = plan.cascades.invalidReason;

@@ -45,4 +45,9 @@ struct ShadowView {
     std::vector<std::string> passes;
 };
 
+// The kind of `view`'s map as the tools report it: "none", "cube", "cascades" or "2d".
+inline const char* mapKindName(const ShadowView& view) {
+    return !view.hasMap ? "none" : view.cube ? "cube" : view.cascadeSplits.empty() ? "2d" : "cascades";
+}
+
 } // namespace engine
