@@ -19,6 +19,7 @@ namespace gltf_writer {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
+constexpr int kByte = 5120;
 constexpr int kUnsignedByte = 5121;
 constexpr int kShort = 5122;
 constexpr int kUnsignedShort = 5123;

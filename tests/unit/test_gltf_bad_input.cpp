@@ -108,6 +108,28 @@ QuadEdit withEmissiveStrength(const json& strength) {
     return set("/materials", {{{"name", "lamp"}, {"emissiveFactor", {1, 1, 1}},
                                {"extensions", {{"KHR_materials_emissive_strength", {{"emissiveStrength", strength}}}}}}});
 }
+// Material 'stone' on the quad with its textureInfo `key` (e.g. "occlusionTexture") set to
+// `textureInfo` (index 0 added), of texture 0 (no image needed).
+QuadEdit withMaterialTexture(const char* key, json textureInfo) {
+    return [key, textureInfo](GltfBuilder& b) mutable {
+        textureInfo["index"] = 0;
+        b.doc["textures"] = {json::object()};
+        b.doc["materials"] = {{{"name", "stone"}, {key, textureInfo}}};
+        firstPrimitive(b)["material"] = 0;
+    };
+}
+// The quad's TANGENT (VEC4 floats) and, optionally, one morph target moving its tangents by
+// `targetOffsets` (floats of `targetType`, VEC3 for a valid file).
+QuadEdit tangents(const std::vector<float>& values, const std::vector<float>& targetOffsets = {},
+                  const char* targetType = "VEC3") {
+    return [=](GltfBuilder& b) {
+        firstPrimitive(b)["attributes"]["TANGENT"] = b.addFloats(values, 4, "VEC4");
+        if (targetOffsets.empty()) return;
+        const std::size_t components = std::string(targetType) == "VEC4" ? 4 : 3;
+        firstPrimitive(b)["targets"] = json::array({{{"TANGENT", b.addFloats(targetOffsets, components, targetType)}}});
+    };
+}
+const std::vector<float> kTangentsAlongX = {1, 0, 0, 1, 1, 0, 0, 1, 1, 0, 0, 1, 1, 0, 0, 1};
 // A vertex attribute of 4 elements of `type`, from raw bytes.
 QuadEdit rawAttribute(const char* name, std::vector<std::uint8_t> bytes, int componentType, const char* type,
                       bool normalized, std::size_t count = 4) {
@@ -340,6 +362,47 @@ const std::vector<BadInputCase<QuadEdit>> kQuadEdits = {
      {"emissive.gltf", "materials[0] 'lamp'", "extensions.KHR_materials_emissive_strength.emissiveStrength -2 is not >= 0"}},
     {"EmissiveStrengthThatIsAString", withEmissiveStrength("bright"),
      {"emissive.gltf", "materials[0] 'lamp'", "extensions.KHR_materials_emissive_strength.emissiveStrength is not a number"}},
+
+    // The other material textures: occlusion strength, normal scale, their textureInfo
+    {"OcclusionStrengthAboveOne", withMaterialTexture("occlusionTexture", {{"strength", 1.5}}),
+     {"strength.gltf", "materials[0] 'stone'", "occlusionTexture.strength 1.5 is not in [0, 1]"}},
+    {"NegativeOcclusionStrength", withMaterialTexture("occlusionTexture", {{"strength", -0.25}}),
+     {"strength.gltf", "materials[0] 'stone'", "occlusionTexture.strength -0.25 is not in [0, 1]"}},
+    {"OcclusionStrengthThatIsAString", withMaterialTexture("occlusionTexture", {{"strength", "full"}}),
+     {"strength.gltf", "materials[0] 'stone'", "occlusionTexture.strength is not a number"}},
+    // JSON has no infinity: beyond float range is how a file says it.
+    {"NormalScaleBeyondFloat", withMaterialTexture("normalTexture", {{"scale", -1e39}}),
+     {"scale.gltf", "materials[0] 'stone'", "normalTexture.scale -1e+39 is not a finite (float) number"}},
+    {"NormalScaleThatIsAString", withMaterialTexture("normalTexture", {{"scale", "2"}}),
+     {"scale.gltf", "materials[0] 'stone'", "normalTexture.scale is not a number"}},
+    {"NormalTextureTexCoordNotAnInteger", withMaterialTexture("normalTexture", {{"texCoord", "1"}}),
+     {"texcoord.gltf", "materials[0] 'stone'", "normalTexture.texCoord is not a non-negative integer"}},
+    {"EmissiveTextureTransformRotationThatIsAString",
+     withMaterialTexture("emissiveTexture", {{"extensions", {{"KHR_texture_transform", {{"rotation", "90deg"}}}}}}),
+     {"transform.gltf", "materials[0] 'stone'", "emissiveTexture.extensions.KHR_texture_transform.rotation is not a number"}},
+
+    // TANGENT and its morph offsets
+    {"TangentWithNaN", tangents({1, 0, 0, 1, 1, 0, 0, 1, kNaN, 0, 0, 1, 1, 0, 0, 1}),
+     {"tangent.gltf", "accessors[2]", "used as TANGENT of meshes[0].primitives[0]", "element 2", "not a finite number"}},
+    {"TangentWithInfiniteW", tangents({1, 0, 0, 1, 1, 0, 0, 1, 1, 0, 0, 1, 1, 0, 0, -kInf}),
+     {"tangent.gltf", "accessors[2]", "used as TANGENT of meshes[0].primitives[0]", "element 3", "not a finite number"}},
+    {"TangentWithWOfHalf", tangents({1, 0, 0, 1, 1, 0, 0, 0.5f, 1, 0, 0, 1, 1, 0, 0, 1}),
+     {"tangent.gltf", "meshes[0].primitives[0]", "TANGENT of vertex 1 has w 0.5, not +1 or -1"}},
+    {"TangentWithWOfZero", tangents({1, 0, 0, 1, 1, 0, 0, 1, 1, 0, 0, 1, 1, 0, 0, 0}),
+     {"tangent.gltf", "meshes[0].primitives[0]", "TANGENT of vertex 3 has w 0, not +1 or -1"}},
+    {"TangentOfVec3", floatAttribute("TANGENT", {1, 0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0}, 3, "VEC3"),
+     {"tangent.gltf", "accessors[2]", "used as TANGENT of meshes[0].primitives[0]",
+      "must be VEC4 of FLOAT or normalized BYTE/SHORT, but is VEC3 of FLOAT"}},
+    {"TangentOfUnsignedBytes", rawAttribute("TANGENT", std::vector<std::uint8_t>(16, 1), kUnsignedByte, "VEC4", true),
+     {"tangent.gltf", "accessors[2]", "used as TANGENT of meshes[0].primitives[0]", "but is VEC4 of normalized UNSIGNED_BYTE"}},
+    {"TangentOfTheWrongCount", floatAttribute("TANGENT", {1, 0, 0, 1, 1, 0, 0, 1}, 4, "VEC4"),
+     {"tangent.gltf", "meshes[0].primitives[0]", "TANGENT has 2 elements, POSITION has 4"}},
+    {"MorphTargetTangentWithNaN", tangents(kTangentsAlongX, {0, 1, 0, 0, 1, 0, 0, kNaN, 0, 0, 1, 0}),
+     {"tangent.gltf", "accessors[3]", "used as targets[0] TANGENT of meshes[0].primitives[0]", "element 2",
+      "not a finite number"}},
+    {"MorphTargetTangentOfVec4", tangents(kTangentsAlongX, {0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0}, "VEC4"),
+     {"tangent.gltf", "accessors[3]", "used as targets[0] TANGENT of meshes[0].primitives[0]",
+      "must be VEC3 of FLOAT or normalized BYTE/SHORT, but is VEC4 of FLOAT"}},
 
     // TEXCOORD_1, COLOR_0
     {"Texcoord1OfTheWrongCount", floatAttribute("TEXCOORD_1", {0, 0, 1, 0, 1, 1}, 2, "VEC2"),

@@ -88,6 +88,30 @@ bool inRange(int index, std::size_t size, bool optional) {
     return (optional && index == -1) || (index >= 0 && static_cast<std::size_t>(index) < size);
 }
 
+// Primitive::tangents and DeformedPrimitive::tangents: unit xyz (to float rounding), w +-1.
+bool isUnitTangent(const glm::vec4& t) {
+    const float length = std::sqrt(t.x * t.x + t.y * t.y + t.z * t.z);
+    return std::fabs(length - 1.0f) < 1e-5f && (t.w == 1.0f || t.w == -1.0f);
+}
+
+// A material's texture reference: its image exists, its UV set is drawn, its transform is
+// finite and its sampler holds glTF's enumerants.
+void checkTextureRef(const engine::TextureRef& texture, const engine::Scene& scene, const std::string& name) {
+    if (!inRange(texture.image, scene.images.size(), true)) finding(name + ": texture image out of range");
+    if (texture.texCoord != 0 && texture.texCoord != 1) finding(name + ": texCoord is not 0 or 1");
+    const engine::UvTransform& t = texture.transform;
+    if (!std::isfinite(t.offset.x) || !std::isfinite(t.offset.y) || !std::isfinite(t.rotation) ||
+        !std::isfinite(t.scale.x) || !std::isfinite(t.scale.y))
+        finding(name + ": texture transform not finite");
+    const engine::Sampler& s = texture.sampler;
+    const auto oneOf = [](int value, std::initializer_list<int> allowed) {
+        return std::find(allowed.begin(), allowed.end(), value) != allowed.end();
+    };
+    if (!oneOf(s.magFilter, {9728, 9729}) || !oneOf(s.minFilter, {9728, 9729, 9984, 9985, 9986, 9987}) ||
+        !oneOf(s.wrapS, {33071, 33648, 10497}) || !oneOf(s.wrapT, {33071, 33648, 10497}))
+        finding(name + ": sampler enumerant outside glTF's");
+}
+
 // What Scene.h promises the renderer; the loader's validation exists to make these true.
 void checkSceneContract(const engine::Scene& scene) {
     const std::size_t nodes = scene.nodes.size();
@@ -124,6 +148,10 @@ void checkSceneContract(const engine::Scene& scene) {
             for (const auto* uvs : {&p.texcoords, &p.texcoords1})
                 for (const glm::vec2& uv : *uvs)
                     if (!std::isfinite(uv.x) || !std::isfinite(uv.y)) finding(name + ": texcoord not finite");
+            if (!p.tangents.empty() && p.tangents.size() != p.positions.size())
+                finding(name + ": tangent count != vertex count");
+            for (const glm::vec4& t : p.tangents)
+                if (!isUnitTangent(t)) finding(name + ": tangent not unit length with w = +1 or -1");
             if (!inRange(p.material, scene.materials.size(), true)) finding(name + ": material out of range");
             for (const glm::vec3& v : p.positions)
                 if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z))
@@ -132,20 +160,13 @@ void checkSceneContract(const engine::Scene& scene) {
     }
     for (const engine::Material& material : scene.materials) {
         const std::string name = "material '" + material.name + "'";
-        const engine::TextureRef& texture = material.baseColorTexture;
-        if (!inRange(texture.image, scene.images.size(), true)) finding(name + ": baseColorImage out of range");
-        if (texture.texCoord != 0 && texture.texCoord != 1) finding(name + ": texCoord is not 0 or 1");
-        const engine::UvTransform& t = texture.transform;
-        if (!std::isfinite(t.offset.x) || !std::isfinite(t.offset.y) || !std::isfinite(t.rotation) ||
-            !std::isfinite(t.scale.x) || !std::isfinite(t.scale.y))
-            finding(name + ": texture transform not finite");
-        const engine::Sampler& s = texture.sampler;
-        const auto oneOf = [](int value, std::initializer_list<int> allowed) {
-            return std::find(allowed.begin(), allowed.end(), value) != allowed.end();
-        };
-        if (!oneOf(s.magFilter, {9728, 9729}) || !oneOf(s.minFilter, {9728, 9729, 9984, 9985, 9986, 9987}) ||
-            !oneOf(s.wrapS, {33071, 33648, 10497}) || !oneOf(s.wrapT, {33071, 33648, 10497}))
-            finding(name + ": sampler enumerant outside glTF's");
+        for (const engine::TextureRef* texture : {&material.baseColorTexture, &material.metallicRoughnessTexture,
+                                                  &material.normalTexture, &material.occlusionTexture,
+                                                  &material.emissiveTexture})
+            checkTextureRef(*texture, scene, name);
+        if (!std::isfinite(material.normalScale)) finding(name + ": normalScale not finite");
+        if (!(material.occlusionStrength >= 0.0f && material.occlusionStrength <= 1.0f))
+            finding(name + ": occlusionStrength not in [0, 1]");
         if (!std::isfinite(material.blendShadowCutoff) || material.blendShadowCutoff < 0.0f)
             finding(name + ": blendShadowCutoff not a finite number >= 0");
     }
@@ -192,10 +213,13 @@ void checkAnimationContract(engine::Scene scene) {
             scene.updateWorldTransforms();
             for (const engine::MeshInstance& instance : scene.meshInstances)
                 if (instance.deformed)
-                    for (const engine::DeformedPrimitive& primitive : instance.deformed->primitives)
+                    for (const engine::DeformedPrimitive& primitive : instance.deformed->primitives) {
                         for (const glm::vec3& p : primitive.positions)
                             if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
                                 finding(name + ": deformed vertex not finite");
+                        for (const glm::vec4& t : primitive.tangents)
+                            if (!isUnitTangent(t)) finding(name + ": deformed tangent not unit length with w = +1 or -1");
+                    }
         }
     }
 }

@@ -8,7 +8,8 @@
 //     a bufferView and a file URI ('tex.png', also next to the fuzzed file), materials,
 //     both camera types, KHR_lights_punctual, node hierarchies with TRS and matrices;
 //     samplers, TEXCOORD_1, KHR_texture_transform, COLOR_0, KHR_lights_shadows and
-//     shadow_alpha_cutoff; Draco and meshopt-compressed, quantized meshes
+//     shadow_alpha_cutoff; every material texture, TANGENT (read, with morph offsets, and
+//     generated for a normal map); Draco and meshopt-compressed, quantized meshes
 //     (compressed_seeds.h).
 // Small on purpose: libFuzzer mutates short inputs much faster.
 #include "compressed_seeds.h"
@@ -196,6 +197,45 @@ GltfBuilder texturesColorsShadows() {
     return b;
 }
 
+// Every material texture on a quad facing +z (metallic-roughness; normal with a scale,
+// through KHR_texture_transform; occlusion with a strength; emissive), all of the image file
+// 'tex.png'. Without TANGENT the loader generates the tangents; with it, it reads them,
+// and a morph target turns them (TANGENT offsets) as it lifts the quad.
+GltfBuilder normalMappedQuad(bool withTangents) {
+    GltfBuilder b = seedBuilder();
+    const int positions = b.addPositions(kQuadPositions);
+    const int normals = b.addFloats({0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1}, 3, "VEC3");
+    const int texcoords = b.addFloats({0, 1, 1, 1, 1, 0, 0, 0}, 2, "VEC2");  // upright: v grows along -y
+    const int indices = b.addIndices(std::vector<std::uint16_t>{0, 1, 2, 0, 2, 3});
+    b.add("images", {{"uri", "tex.png"}});
+    b.add("textures", {{"source", 0}});
+    const json texture = {{"index", 0}};
+    const json transform = {{"rotation", 0.5}, {"scale", {2, 2}}};
+    b.add("materials", {{"name", "embossed"},
+                        {"pbrMetallicRoughness", {{"metallicRoughnessTexture", texture}}},
+                        {"normalTexture", {{"index", 0}, {"scale", 0.5},
+                                           {"extensions", {{"KHR_texture_transform", transform}}}}},
+                        {"occlusionTexture", {{"index", 0}, {"strength", 0.75}}},
+                        {"emissiveTexture", texture},
+                        {"emissiveFactor", {1, 1, 1}}});
+    json primitive = {{"attributes", {{"POSITION", positions}, {"NORMAL", normals}, {"TEXCOORD_0", texcoords}}},
+                      {"indices", indices}, {"material", 0}};
+    if (withTangents) {
+        // +x, the last two vertices mirrored (w = -1); the target turns them toward +y.
+        primitive["attributes"]["TANGENT"] =
+            b.addFloats({1, 0, 0, 1, 1, 0, 0, 1, 1, 0, 0, -1, 1, 0, 0, -1}, 4, "VEC4");
+        const int lift = b.addPositions({0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1});
+        const int turn = b.addFloats({-1, 1, 0, -1, 1, 0, -1, 1, 0, -1, 1, 0}, 3, "VEC3");
+        primitive["targets"] = json::array({{{"POSITION", lift}, {"TANGENT", turn}}});
+    }
+    b.add("meshes", {{"name", "embossed"}, {"primitives", {primitive}}});
+    if (withTangents) b.doc["meshes"][0]["weights"] = {0.5};
+    b.doc["extensionsUsed"] = {"KHR_texture_transform"};
+    b.addNode({{"mesh", 0}});
+    b.setScene({0});
+    return b;
+}
+
 // An accessor without a bufferView (all zeros, glTF 2.0), alone so that the other seeds
 // still load if the loader refuses these.
 GltfBuilder zeroAccessor() {
@@ -271,6 +311,8 @@ int main(int argc, char** argv) {
         gltf(animatedTriangle(), "animated.gltf");
         glb(animatedTriangle(), "animated.glb");
         gltf(skinnedMorphedQuad(), "skinned-morphed.gltf");
+        gltf(normalMappedQuad(false), "normal-mapped.gltf");
+        glb(normalMappedQuad(true), "normal-mapped-tangents.glb");
         glb(skinnedMorphedQuad(), "skinned-morphed.glb");
     } catch (const std::exception& error) {
         std::fprintf(stderr, "make_seeds: %s\n", error.what());

@@ -16,7 +16,8 @@ struct AccessorUse {
     enum class Components {
         Float,              // FLOAT only (positions, normals)
         FloatOrNormalized,  // FLOAT, or normalized UNSIGNED_BYTE/SHORT (colors)
-        // KHR_mesh_quantization: FLOAT, or BYTE/SHORT normalized (normals)
+        // KHR_mesh_quantization: FLOAT, or BYTE/SHORT normalized (normals, tangents and
+        // their morph offsets)
         FloatOrSignedNormalized,
         // KHR_mesh_quantization: FLOAT, or any 8/16-bit integer, normalized or not
         // (positions, texture coordinates); the node transform dequantizes.

@@ -1,13 +1,12 @@
-// glTF materials (metallic-roughness core, the base color texture with its sampler, UV set
-// and KHR_texture_transform, KHR_materials_emissive_strength, our shadow extras) to engine
-// materials.
+// glTF materials (metallic-roughness core; the base color, metallic-roughness, normal,
+// occlusion and emissive textures, each with its sampler, UV set and KHR_texture_transform;
+// KHR_materials_emissive_strength; our shadow extras) to engine materials.
 #include "GltfConvert.h"
 #include "GltfJsonFields.h"
 #include "GltfTextures.h"
 
 #include <cmath>
 #include <optional>
-#include <utility>
 
 namespace engine::gltf {
 
@@ -23,17 +22,23 @@ public:
 
     Material convert() const {
         const tinygltf::PbrMetallicRoughness& pbr = source_.pbrMetallicRoughness;
+        const JsonFields pbrJson = json_.child("pbrMetallicRoughness");
         Material material;
         material.name = source_.name;
         material.baseColorFactor = glm::vec4(vector<4>("baseColorFactor", pbr.baseColorFactor, glm::dvec4(1.0), 1.0));
-        material.baseColorTexture = convertTextureRef(
-            model_, samplers_, pbr.baseColorTexture, json_.child("pbrMetallicRoughness").child("baseColorTexture"));
+        material.baseColorTexture = convertTextureRef(model_, samplers_, pbr.baseColorTexture.index,
+                                                      pbrJson.child("baseColorTexture"));
         material.metallicFactor = static_cast<float>(inRange("metallicFactor", pbr.metallicFactor, 1.0));
         material.roughnessFactor = static_cast<float>(inRange("roughnessFactor", pbr.roughnessFactor, 1.0));
+        material.metallicRoughnessTexture = convertTextureRef(model_, samplers_, pbr.metallicRoughnessTexture.index,
+                                                              pbrJson.child("metallicRoughnessTexture"));
+        readNormalTexture(material);
+        readOcclusionTexture(material);
         // No upper bound: KHR_materials_emissive_strength files may exceed 1.
         material.emissiveFactor = glm::vec3(vector<3>("emissiveFactor", source_.emissiveFactor, glm::dvec3(0.0), INFINITY)) *
                                   emissiveStrength();
-        warnAboutTexturesNotRead();
+        material.emissiveTexture =
+            convertTextureRef(model_, samplers_, source_.emissiveTexture.index, json_.child("emissiveTexture"));
         material.doubleSided = source_.doubleSided;
         material.alphaMode = alphaMode();
         material.alphaCutoff = static_cast<float>(inRange("alphaCutoff", source_.alphaCutoff, INFINITY));
@@ -64,9 +69,26 @@ private:
         return result;
     }
 
+    // normalTexture.scale multiplies the sampled normal's x and y. Any finite number: a
+    // negative one turns the relief inside out (a map baked with the other green convention).
+    void readNormalTexture(Material& material) const {
+        const JsonFields info = json_.child("normalTexture");
+        material.normalTexture = convertTextureRef(model_, samplers_, source_.normalTexture.index, info);
+        material.normalScale = info.finiteFloat("scale", material.normalScale);
+    }
+
+    // occlusionTexture.strength: how much of the occlusion applies, in [0, 1] (glTF 2.0).
+    void readOcclusionTexture(Material& material) const {
+        const JsonFields info = json_.child("occlusionTexture");
+        material.occlusionTexture = convertTextureRef(model_, samplers_, source_.occlusionTexture.index, info);
+        const float strength = info.finiteFloat("strength", material.occlusionStrength);
+        if (strength < 0.0f || strength > 1.0f) info.fail("strength", formatNumber(strength) + " is not in [0, 1]");
+        material.occlusionStrength = strength;
+    }
+
     // KHR_materials_emissive_strength: a factor on the emissive color that may exceed 1.
-    // Without an emissive texture the emitted color is factor x strength, so the product
-    // is all the lit pass needs.
+    // The emitted color is factor x strength x the emissive texture's color (white when
+    // absent): the strength folds into the factor, and the lit pass needs only the product.
     float emissiveStrength() const {
         const std::optional<JsonFields> extension = json_.extension("KHR_materials_emissive_strength");
         if (!extension) return 1.0f;
@@ -74,15 +96,6 @@ private:
         const float strength = extension->finiteFloat("emissiveStrength", 1.0f);
         if (strength < 0.0f) extension->fail("emissiveStrength", formatNumber(strength) + " is not >= 0");
         return strength;
-    }
-
-    // The material textures the lit pass does not sample yet: the material still renders
-    // (from its factors), but the file would look otherwise in a full glTF viewer, so say so.
-    void warnAboutTexturesNotRead() const {
-        const JsonFields pbr = json_.child("pbrMetallicRoughness");
-        for (const auto& [fields, key] : {std::pair{&pbr, "metallicRoughnessTexture"}, std::pair{&json_, "normalTexture"},
-                                          std::pair{&json_, "occlusionTexture"}, std::pair{&json_, "emissiveTexture"}})
-            if (fields->has(key)) fields->warn(fields->member(key) + " is not read yet and is ignored (the factors alone shade)");
     }
 
     AlphaMode alphaMode() const {

@@ -3,8 +3,12 @@
 #include "GltfAccessors.h"
 #include "GltfLightsShadows.h"
 
+#include "engine/scene/Tangents.h"
+
+#include <array>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <numeric>
 #include <optional>
 
@@ -27,6 +31,24 @@ std::optional<int> attribute(const tinygltf::Primitive& primitive, const char* s
     const auto found = primitive.attributes.find(semantic);
     if (found == primitive.attributes.end()) return std::nullopt;
     return found->second;
+}
+
+// The UV set TEXCOORD_<texCoord> of the primitive (empty when it has none).
+const std::vector<glm::vec2>& uvSet(const Primitive& primitive, int texCoord) {
+    return texCoord == 0 ? primitive.texcoords : primitive.texcoords1;
+}
+
+// A material's textures with their names in glTF, for messages.
+struct NamedTexture {
+    const char* name;
+    const TextureRef* texture;
+};
+std::array<NamedTexture, 5> namedTextures(const Material& material) {
+    return {{{"baseColorTexture", &material.baseColorTexture},
+             {"metallicRoughnessTexture", &material.metallicRoughnessTexture},
+             {"normalTexture", &material.normalTexture},
+             {"occlusionTexture", &material.occlusionTexture},
+             {"emissiveTexture", &material.emissiveTexture}}};
 }
 
 class PrimitiveConverter {
@@ -65,12 +87,14 @@ public:
         primitive.texcoords = readTexcoords(source, "TEXCOORD_0", vertexCount);
         primitive.texcoords1 = readTexcoords(source, "TEXCOORD_1", vertexCount);
         primitive.colors = readColors(source, vertexCount);
+        primitive.tangents = readTangents(source, vertexCount);
         readSkinWeights(source, vertexCount, primitive);
         primitive.targets = readMorphTargets(source, vertexCount);
+        dropTangentOffsetsWithoutTangents(primitive);
         const ShadowFlags shadows = readLightsShadows(JsonFields(context_, object_, json, ""), ShadowFlagsOwner::Primitive);
         primitive.castShadows = shadows.castShadows;
         primitive.receiveShadows = shadows.receiveShadows;
-        warnAboutMissingUvSet(primitive);
+        warnAboutMissingUvSets(primitive);
 
         const std::vector<std::uint32_t> vertexIndices = readVertexIndices(source, vertexCount);
         if (mode == TINYGLTF_MODE_TRIANGLES && vertexIndices.size() % 3 != 0)
@@ -82,6 +106,7 @@ public:
             primitive.normals = generateNormals(primitive.positions, primitive.indices);
             context_.warn(object_, "has no NORMAL; normals generated");
         }
+        completeTangents(primitive);
         for (const glm::vec3& p : primitive.positions) primitive.bounds.extend(glm::dvec3(p));
         return primitive;
     }
@@ -122,6 +147,70 @@ private:
         return colors;
     }
 
+    // TANGENT: VEC4 of FLOAT or normalized BYTE/SHORT (KHR_mesh_quantization, as NORMAL);
+    // empty when absent. Non-finite values are refused by the accessor reader; xyz is made
+    // unit by completeTangents, once the normals a zero tangent is replaced from are known.
+    std::vector<glm::vec4> readTangents(const tinygltf::Primitive& source, std::size_t vertexCount) const {
+        const std::optional<int> accessor = attribute(source, "TANGENT");
+        if (!accessor) return {};
+        std::vector<glm::vec4> tangents = readFloatVectors<4>(
+            context_, model_, *accessor,
+            vectorUse("TANGENT", TINYGLTF_TYPE_VEC4, AccessorUse::Components::FloatOrSignedNormalized));
+        requireVertexCount("TANGENT", tangents.size(), vertexCount);
+        for (std::size_t v = 0; v < tangents.size(); ++v) tangents[v].w = handedness(tangents[v].w, v);
+        return tangents;
+    }
+
+    // glTF: TANGENT's w "is a sign value (-1 or +1)". Normalized BYTE and SHORT encode +-1
+    // exactly (127/127 = 1; -127 and -128 both decode to -1), so the 1e-3 tolerance is only
+    // for float exporters that round (0.99999994). Stored exactly, as shaders multiply by it.
+    float handedness(float w, std::size_t vertex) const {
+        if (!(std::fabs(std::fabs(w) - 1.0f) <= 1e-3f))
+            context_.fail(object_, "TANGENT of vertex " + std::to_string(vertex) + " has w " + formatNumber(w) +
+                                       ", not +1 or -1 (the bitangent's sign)");
+        return w < 0.0f ? -1.0f : 1.0f;
+    }
+
+    // Once the normals are final: the file's tangents made unit, or tangents generated for a
+    // material with a normal texture (when the primitive has its UV set), or none. Generated
+    // from the UVs the normal texture is sampled at, its KHR_texture_transform applied: a
+    // rotated or mirrored mapping turns the map's x and y with it.
+    void completeTangents(Primitive& primitive) const {
+        if (!primitive.tangents.empty()) {
+            normalizeTangents(primitive);
+            return;
+        }
+        if (primitive.material < 0) return;
+        const TextureRef& normalTexture = materials_[primitive.material].normalTexture;
+        if (!normalTexture.present()) return;
+        std::vector<glm::vec2> uvs = uvSet(primitive, normalTexture.texCoord);
+        if (uvs.empty()) return;  // reported by warnAboutMissingUvSets
+        for (glm::vec2& uv : uvs) uv = normalTexture.transform.apply(uv);
+        primitive.tangents = generateTangents(primitive.positions, primitive.normals, uvs, primitive.indices);
+    }
+
+    // The file's tangents to unit length. A zero one has no direction to keep: it becomes a
+    // direction perpendicular to the vertex normal (its w kept), reported once per primitive
+    // (an exporter that writes one zero tangent usually writes many).
+    void normalizeTangents(Primitive& primitive) const {
+        std::size_t zeros = 0, firstZero = 0;
+        for (std::size_t v = 0; v < primitive.tangents.size(); ++v) {
+            glm::vec4& tangent = primitive.tangents[v];
+            const glm::dvec3 xyz(tangent);
+            const double length = glm::length(xyz);
+            if (length > 0.0) {
+                tangent = glm::vec4(glm::vec3(xyz / length), tangent.w);
+                continue;
+            }
+            if (zeros++ == 0) firstZero = v;
+            tangent = glm::vec4(anyPerpendicular(primitive.normals[v]), tangent.w);
+        }
+        if (zeros > 0)
+            context_.warn(object_, "TANGENT of " + std::to_string(zeros) + " vertices (the first: vertex " +
+                                       std::to_string(firstZero) +
+                                       ") has zero length; replaced by a direction perpendicular to the normal");
+    }
+
     // JOINTS_0 (unsigned byte or short) and WEIGHTS_0 (float or normalized unsigned), both
     // or neither. Each vertex's weights are normalized to sum to 1 (glTF requires the sum to
     // be 1 within the quantization's precision; exporters round); a vertex whose weights sum
@@ -154,42 +243,67 @@ private:
         }
     }
 
-    // Morph targets: POSITION and NORMAL offsets per vertex (TANGENT is not used).
+    // Morph targets: POSITION, NORMAL and TANGENT offsets per vertex (TANGENT's are xyz
+    // only: a target does not change the handedness).
     std::vector<MorphTarget> readMorphTargets(const tinygltf::Primitive& source, std::size_t vertexCount) const {
         std::vector<MorphTarget> targets(source.targets.size());
         for (std::size_t t = 0; t < source.targets.size(); ++t) {
             const auto& attributes = source.targets[t];
             const std::string name = indexed("targets", t);
-            if (const auto found = attributes.find("POSITION"); found != attributes.end()) {
-                targets[t].positions = readFloatVectors<3>(
-                    context_, model_, found->second,
-                    vectorUse((name + " POSITION").c_str(), TINYGLTF_TYPE_VEC3, AccessorUse::Components::Quantized));
-                requireVertexCount((name + " POSITION").c_str(), targets[t].positions.size(), vertexCount);
-            } else {
-                targets[t].positions.assign(vertexCount, glm::vec3(0.0f));
-            }
-            if (const auto found = attributes.find("NORMAL"); found != attributes.end()) {
-                targets[t].normals = readFloatVectors<3>(
-                    context_, model_, found->second,
-                    vectorUse((name + " NORMAL").c_str(), TINYGLTF_TYPE_VEC3, AccessorUse::Components::FloatOrSignedNormalized));
-                requireVertexCount((name + " NORMAL").c_str(), targets[t].normals.size(), vertexCount);
-            }
+            targets[t].positions =
+                readOffsets(attributes, name, "POSITION", AccessorUse::Components::Quantized, vertexCount);
+            if (targets[t].positions.empty()) targets[t].positions.assign(vertexCount, glm::vec3(0.0f));
+            targets[t].normals =
+                readOffsets(attributes, name, "NORMAL", AccessorUse::Components::FloatOrSignedNormalized, vertexCount);
+            targets[t].tangents =
+                readOffsets(attributes, name, "TANGENT", AccessorUse::Components::FloatOrSignedNormalized, vertexCount);
         }
         return targets;
     }
 
-    // A material textured from a UV set the primitive lacks still draws, sampling every
-    // vertex at uv (0,0); worth a warning, not a refusal (exporters drop unused sets).
-    void warnAboutMissingUvSet(const Primitive& primitive) const {
+    // The VEC3 offsets of `semantic` in morph target `target` (e.g. "targets[0]"), one per
+    // vertex; empty when the target does not move that attribute.
+    std::vector<glm::vec3> readOffsets(const std::map<std::string, int>& attributes, const std::string& target,
+                                       const char* semantic, AccessorUse::Components components,
+                                       std::size_t vertexCount) const {
+        const auto found = attributes.find(semantic);
+        if (found == attributes.end()) return {};
+        const std::string usedAs = target + " " + semantic;
+        std::vector<glm::vec3> offsets =
+            readFloatVectors<3>(context_, model_, found->second, vectorUse(usedAs.c_str(), TINYGLTF_TYPE_VEC3, components));
+        requireVertexCount(usedAs.c_str(), offsets.size(), vertexCount);
+        return offsets;
+    }
+
+    // TANGENT offsets displace the file's TANGENT: without one there is nothing they were
+    // authored against (generated tangents are not the file's), so they are dropped.
+    void dropTangentOffsetsWithoutTangents(Primitive& primitive) const {
+        if (!primitive.tangents.empty()) return;
+        bool dropped = false;
+        for (MorphTarget& target : primitive.targets) {
+            dropped = dropped || !target.tangents.empty();
+            target.tangents.clear();
+        }
+        if (dropped) context_.warn(object_, "morph target TANGENT offsets ignored: the primitive has no TANGENT");
+    }
+
+    // A material texture sampling a UV set the primitive lacks still draws, sampling every
+    // vertex at uv (0,0): worth a warning, not a refusal (exporters drop unused sets). A
+    // normal texture without its UV set has no tangent frame to be generated from: without
+    // the file's TANGENT, the primitive is drawn without its normal map.
+    void warnAboutMissingUvSets(const Primitive& primitive) const {
         if (primitive.material < 0) return;
         const Material& material = materials_[primitive.material];
-        const TextureRef& texture = material.baseColorTexture;
-        if (!texture.present()) return;
-        const bool missing = texture.texCoord == 0 ? primitive.texcoords.empty() : primitive.texcoords1.empty();
-        if (missing)
-            context_.warn(object_, "has no TEXCOORD_" + std::to_string(texture.texCoord) + ", which the baseColorTexture of " +
-                                       indexedNamed("materials", primitive.material, material.name) +
-                                       " samples; it is sampled at uv (0,0)");
+        for (const auto& [name, texture] : namedTextures(material)) {
+            if (!texture->present() || !uvSet(primitive, texture->texCoord).empty()) continue;
+            const bool normalMapDropped = texture == &material.normalTexture && primitive.tangents.empty();
+            const char* consequence = normalMapDropped
+                                          ? "no tangents are generated and the normal map is ignored for this primitive"
+                                          : "it is sampled at uv (0,0)";
+            context_.warn(object_, "has no TEXCOORD_" + std::to_string(texture->texCoord) + ", which the " + name +
+                                       " of " + indexedNamed("materials", primitive.material, material.name) +
+                                       " samples; " + consequence);
+        }
     }
 
     void requireVertexCount(const char* semantic, std::size_t count, std::size_t vertexCount) const {

@@ -1,7 +1,8 @@
 #pragma once
 // glTF meshes to engine meshes: triangle lists only (strips and fans converted, points and
-// lines dropped with a warning), normals generated when absent, closedness computed; two UV
-// sets, vertex colors and KHR_lights_shadows per primitive.
+// lines dropped with a warning), normals generated when absent, tangents read (TANGENT) or
+// generated for normal-mapped materials (Tangents.h), closedness computed; two UV sets,
+// vertex colors, skin weights, morph targets and KHR_lights_shadows per primitive.
 #include "GltfContext.h"
 #include "engine/scene/Scene.h"
 
@@ -22,8 +23,9 @@ std::vector<std::uint32_t> triangleList(int mode, const std::vector<std::uint32_
 std::vector<float> checkedMorphWeights(const LoadContext& context, const std::string& object,
                                        const std::vector<double>& weights, std::size_t targets, const char* targetsName);
 
-// `document` is our own parse (primitive extensions); `materials` the converted materials,
-// so a primitive lacking the UV set its material's texture samples can be reported.
+// `document` is our own parse (primitive extensions); `materials` the converted materials:
+// a primitive lacking the UV set its material's texture samples is reported, and one whose
+// material has a normal texture gets tangents.
 std::vector<Mesh> convertMeshes(const LoadContext& context, const tinygltf::Model& model,
                                 const nlohmann::json& document, const std::vector<Material>& materials);
 

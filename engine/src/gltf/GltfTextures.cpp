@@ -63,13 +63,13 @@ std::vector<Sampler> convertSamplers(const LoadContext& context, const nlohmann:
     return samplers;
 }
 
-TextureRef convertTextureRef(const tinygltf::Model& model, const std::vector<Sampler>& samplers,
-                             const tinygltf::TextureInfo& info, const JsonFields& fields) {
+TextureRef convertTextureRef(const tinygltf::Model& model, const std::vector<Sampler>& samplers, int textureIndex,
+                             const JsonFields& fields) {
     TextureRef ref;
-    if (info.index < 0) return ref;
-    const tinygltf::Texture& texture = model.textures[info.index];
+    if (textureIndex < 0) return ref;
+    const tinygltf::Texture& texture = model.textures[textureIndex];
     ref.image = texture.source;
-    if (ref.image < 0) fields.warn(fields.member("index") + ": " + indexed("textures", info.index) + " has no image");
+    if (ref.image < 0) fields.warn(fields.member("index") + ": " + indexed("textures", textureIndex) + " has no image");
     if (texture.sampler >= 0) ref.sampler = samplers.at(texture.sampler);
 
     std::uint64_t texCoord = fields.index("texCoord").value_or(0);

@@ -58,6 +58,7 @@ void appendPrimitive(Primitive& to, const Primitive& from) {
     optional(to.texcoords, from.texcoords);
     optional(to.texcoords1, from.texcoords1);
     optional(to.colors, from.colors);
+    optional(to.tangents, from.tangents);
     const auto base = static_cast<std::uint32_t>(to.positions.size());
     to.positions.insert(to.positions.end(), from.positions.begin(), from.positions.end());
     to.normals.insert(to.normals.end(), from.normals.begin(), from.normals.end());

@@ -19,6 +19,9 @@ struct Node;
 struct DeformedPrimitive {
     std::vector<glm::vec3> positions;  // relative to DeformedMesh::origin
     std::vector<glm::vec3> normals;    // unit length
+    // Unit xyz posed with the surface (Primitive::tangents, w as loaded); empty when the
+    // primitive has no tangents.
+    std::vector<glm::vec4> tangents;
     bool operator==(const DeformedPrimitive&) const = default;
 };
 
@@ -39,8 +42,10 @@ bool isDeformed(const Scene& scene, const Node& node);
 
 // The node's mesh posed by the joints' current world transforms and the node's morph
 // weights (else the mesh's). Per vertex, in double: morph first (base + sum_k w_k * delta_k,
-// positions and normals), then skin (positions by sum_i w_i * J_i with
-// J = world(joint) * inverseBindMatrix, normals by the inverse transposes of the J_i).
+// positions, normals and tangents' xyz), then skin (positions by sum_i w_i * J_i with
+// J = world(joint) * inverseBindMatrix, normals by the inverse transposes of the J_i,
+// tangents by the J_i's upper 3x3: they are directions in the surface, as edges are);
+// normals and tangents then normalized, tangents' w unchanged.
 // Node world transforms must be current (Scene::updateWorldTransforms calls this).
 DeformedMesh deformMesh(const Scene& scene, const Node& node);
 

@@ -25,7 +25,8 @@ Primitive texturedQuadPrimitive(const glm::dvec2& min, const glm::dvec2& max, in
                                 const glm::vec2& uvBottomRight = glm::vec2(1.0f));
 
 // Appends `from`'s vertices and triangles to `to` (attributes both have or both lack:
-// texcoords and colors are kept only when both primitives carry them) and extends the bounds.
+// texcoords, colors and tangents are kept only when both primitives carry them) and
+// extends the bounds.
 void appendPrimitive(Primitive& to, const Primitive& from);
 
 // A width x height RGBA8 image (row 0 = top, as Image stores it) of one colour whose alpha
