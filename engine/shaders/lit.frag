@@ -7,8 +7,9 @@
 //   diffuseShade = d + (1 - d) * shade
 //   color = emissive + ambient * albedo + sum(diffuseShade * diffuse + shade * specular)
 // Light units: a light's color x intensity is taken as the irradiance it brings (lux for
-// directional lights, candela / d^2 for the others) and the result is written as linear
-// radiance with exposure 1 and no tone mapping; the sRGB target encodes it and clamps at 1.
+// directional lights, candela / d^2 for the others); the radiance is multiplied by the
+// renderer's exposure, tone mapped when TONE_MAPPING_PBR_NEUTRAL is defined (else the sRGB
+// target clamps it at 1) and encoded by the sRGB target.
 // The engine prepends "#version 450 core", MAX_LIGHTS, LIGHT_COUNT (the scene's lights)
 // and FOR_EACH_LIGHT(F), which expands to F(slot, type) for every light, both literal
 // numbers: the sum is written out term by term, never looped, so each term indexes the
@@ -33,18 +34,17 @@ layout(std140, binding = 0) uniform Lights {
     LightData uLights[MAX_LIGHTS];
 };
 uniform vec3 uAmbient;
+uniform float uExposure;
 uniform float uLightDimming[MAX_LIGHTS];  // the visibility hook's d per light
 
-// The base color (factor, vertex color, texture) and the alpha test come from the material
-// parts the engine prepends (MaterialShading.h), each a program variant of its own:
+// The base color (factor, vertex color, texture), the alpha test and the surface
+// (metalness, roughness, normal map, occlusion, emission: material_surface.glsl) come from
+// the material parts the engine prepends (MaterialShading.h), each a program variant of its own:
 // llvmpipe samples in untaken branches too (showcase, no textures, three alternating
 // runs: unshadowed 8.10-8.17 -> 7.66-7.74 ms at 1280x720 once untextured materials got a
 // program without the fetch), and a shader that can discard defers its depth writes past
 // the shading (2CylinderEngine, no masked materials, unshadowed frame 24.95-25.43 ->
 // 21.27-21.89 ms).
-uniform float uMetallic;
-uniform float uRoughness;
-uniform vec3 uEmissive;
 // Node extras "receive_shadows" and KHR_lights_shadows "receiveShadows": false opts out.
 uniform bool uReceiveShadows;
 
@@ -125,6 +125,28 @@ vec3 lightContribution(int slot, int type, float shade, vec3 N, vec3 V, float Nd
     return diffuseShade * diffuse + shade * specular;
 }
 
+#ifdef TONE_MAPPING_PBR_NEUTRAL
+// Khronos PBR Neutral tone mapping: colors whose largest channel stays under 0.76 pass
+// unchanged (after a small black-level offset), brighter ones are compressed toward 1 and
+// desaturated as they approach it, so base colors keep their hue under bright light.
+vec3 toneMap(vec3 color) {
+    const float startCompression = 0.8 - 0.04;
+    const float desaturation = 0.15;
+    float x = min(color.r, min(color.g, color.b));
+    float offset = x < 0.08 ? x - 6.25 * x * x : 0.04;
+    color -= offset;
+    float peak = max(color.r, max(color.g, color.b));
+    if (peak < startCompression) return color;
+    const float d = 1.0 - startCompression;
+    float newPeak = 1.0 - d * d / (peak + d - startCompression);
+    color *= newPeak / peak;
+    float g = 1.0 - 1.0 / (desaturation * (peak - newPeak) + 1.0);
+    return mix(color, vec3(newPeak), g);
+}
+#else
+vec3 toneMap(vec3 color) { return color; }
+#endif
+
 void main() {
     vec4 albedo = materialBaseColor();
 #ifdef ALPHA_TEST
@@ -132,7 +154,13 @@ void main() {
 #endif
 
     vec3 N = normalize(vEyeNormal);
-    if (!gl_FrontFacing) N = -N;  // double-sided materials light their back side
+    // The interpolated normal decides visibility (the shadow lookups and masks); the normal
+    // map only shades.
+    vec3 shadingNormal = materialNormal(N);
+    if (!gl_FrontFacing) {  // double-sided materials light their back side
+        N = -N;
+        shadingNormal = -shadingNormal;
+    }
     vec3 V = normalize(-vEyePosition);
 
 #if defined(LIGHT_DEBUG_VIEW)
@@ -143,15 +171,17 @@ void main() {
     return;
 #endif
 
-    vec3 diffuseColor = albedo.rgb * (1.0 - uMetallic);
-    vec3 f0 = mix(vec3(0.04), albedo.rgb, uMetallic);
+    vec2 metallicRoughness = materialMetallicRoughness();
+    float metallic = metallicRoughness.x, roughness = metallicRoughness.y;
+    vec3 diffuseColor = albedo.rgb * (1.0 - metallic);
+    vec3 f0 = mix(vec3(0.04), albedo.rgb, metallic);
     // A perfectly smooth surface under a punctual light is a Dirac highlight float cannot
     // hold: alpha (roughness^2) stops at 0.002, where D at the highlight's centre is ~8e4.
-    float alpha = max(uRoughness * uRoughness, 0.002);
+    float alpha = max(roughness * roughness, 0.002);
     // A normal turned away from the eye (interpolated normals at silhouettes) shades as grazing.
-    float NdotV = max(dot(N, V), 1e-4);
+    float NdotV = max(dot(shadingNormal, V), 1e-4);
 
-    vec3 color = uEmissive + uAmbient * albedo.rgb;
+    vec3 color = materialEmissive() + materialOccludedAmbient(uAmbient * albedo.rgb);
 #if LIGHT_COUNT > 0
     // Every light's shade first, outside the terms' branches: llvmpipe runs lookups in
     // divergent branches far slower (measured, three shadowed lights at 1280x720: lit
@@ -159,8 +189,8 @@ void main() {
     float shades[LIGHT_COUNT];
     loadShades(shades, vEyePosition, N);
     // Each light's term, its slot and type literals (FOR_EACH_LIGHT).
-#define ADD_LIGHT(slot, type) color += lightContribution(slot, type, shades[slot], N, V, NdotV, diffuseColor, f0, alpha);
+#define ADD_LIGHT(slot, type) color += lightContribution(slot, type, shades[slot], shadingNormal, V, NdotV, diffuseColor, f0, alpha);
     FOR_EACH_LIGHT(ADD_LIGHT)
 #endif
-    outColor = vec4(color, albedo.a);
+    outColor = vec4(toneMap(color * uExposure), albedo.a);
 }

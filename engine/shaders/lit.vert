@@ -11,6 +11,11 @@ uniform mat4 uProjection;    // P_eye
 
 out vec3 vEyePosition;
 out vec3 vEyeNormal;
+#ifdef NORMAL_TEXTURE
+layout(location = ATTRIB_TANGENT) in vec4 inTangent;  // xyz unit, w = +-1 (glTF TANGENT)
+out vec3 vEyeTangent;
+out vec3 vEyeBitangent;
+#endif
 
 // The visibility hook's vertex part (Frame.h), appended by the engine.
 void lightTexgen(vec3 eyePosition);
@@ -19,6 +24,14 @@ void main() {
     vec4 eyePosition = uModelView * vec4(inPosition, 1.0);
     vEyePosition = eyePosition.xyz;
     vEyeNormal = uNormalMatrix * inNormal;
+#ifdef NORMAL_TEXTURE
+    // Tangent and bitangent are directions along the surface, so the modelview carries them
+    // (the normal matrix is the normal's). The bitangent is formed in object space, so a
+    // mirroring transform mirrors it as it mirrors the texture. Unit per vertex: the normal
+    // map's tilt must not stretch with the node's scale.
+    vEyeTangent = normalize(mat3(uModelView) * inTangent.xyz);
+    vEyeBitangent = normalize(mat3(uModelView) * (cross(inNormal, inTangent.xyz) * inTangent.w));
+#endif
     passMaterialInputs();
     gl_Position = uProjection * eyePosition;
     lightTexgen(eyePosition.xyz);

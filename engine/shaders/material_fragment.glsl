@@ -1,9 +1,10 @@
 // The material's base color and alpha test, shared by every pass that draws scene
 // primitives, so the shaded image, the shadow casters and the truth's surface capture all
-// cut the same holes. MaterialShading.h prepends the feature defines.
+// cut the same holes. MaterialShading.h prepends the feature defines. (How the lit pass
+// shades the surface is material_surface.glsl.)
 uniform vec4 uBaseColorFactor;
 #ifdef BASE_COLOR_TEXTURE
-layout(binding = MATERIAL_TEXTURE_UNIT) uniform sampler2D uBaseColorTexture;
+layout(binding = BASE_COLOR_TEXTURE_UNIT) uniform sampler2D uBaseColorTexture;
 #endif
 #ifdef MATERIAL_VARYINGS
 in MATERIAL_VARYINGS materialIn;

@@ -1,15 +1,25 @@
 // The material's per-vertex inputs, shared by every pass that draws scene primitives (the
-// lit pass, the shadow depth passes, the truth's surface capture): the base color UV (the
-// material's TEXCOORD_n set through its KHR_texture_transform) and the vertex color.
-// MaterialShading.h prepends the feature defines and attribute locations.
+// lit pass, the shadow depth passes, the truth's surface capture): each sampled texture's
+// UV (the material's TEXCOORD_n set for it through its KHR_texture_transform) and the
+// vertex color. MaterialShading.h prepends the feature defines, attribute locations and
+// MATERIAL_TEXTURE_UVS(F), which expands to F(varying, index) for each sampled texture.
 #ifdef MATERIAL_VARYINGS
 out MATERIAL_VARYINGS materialOut;
 #endif
-#ifdef BASE_COLOR_TEXTURE
+#ifdef MATERIAL_TEXTURE_UVS
 layout(location = ATTRIB_TEXCOORD0) in vec2 inTexcoord0;
 layout(location = ATTRIB_TEXCOORD1) in vec2 inTexcoord1;
-uniform int uBaseColorTexCoord;       // 0: TEXCOORD_0, 1: TEXCOORD_1
-uniform mat3 uBaseColorUvTransform;   // KHR_texture_transform (identity without one)
+// By MaterialTexture: its UV set (0: TEXCOORD_0, 1: TEXCOORD_1) and KHR_texture_transform
+// (identity without one).
+uniform int uTexCoordSet[MATERIAL_TEXTURE_COUNT];
+uniform mat3 uUvTransform[MATERIAL_TEXTURE_COUNT];
+
+// Transformed per vertex: the transform is affine, so interpolating its result is
+// interpolating the UVs and transforming each fragment's.
+vec2 materialUv(int index) {
+    vec2 uv = uTexCoordSet[index] == 1 ? inTexcoord1 : inTexcoord0;
+    return (uUvTransform[index] * vec3(uv, 1.0)).xy;
+}
 #endif
 #ifdef VERTEX_COLOR
 layout(location = ATTRIB_COLOR) in vec4 inColor;
@@ -17,11 +27,9 @@ layout(location = ATTRIB_COLOR) in vec4 inColor;
 
 // Writes the material varyings; call once from main().
 void passMaterialInputs() {
-#ifdef BASE_COLOR_TEXTURE
-    // Transformed per vertex: the transform is affine, so interpolating its result is
-    // interpolating the UVs and transforming each fragment's.
-    vec2 uv = uBaseColorTexCoord == 1 ? inTexcoord1 : inTexcoord0;
-    materialOut.baseColorUv = (uBaseColorUvTransform * vec3(uv, 1.0)).xy;
+#ifdef MATERIAL_TEXTURE_UVS
+#define PASS_UV(varying, index) materialOut.varying = materialUv(index);
+    MATERIAL_TEXTURE_UVS(PASS_UV)
 #endif
 #ifdef VERTEX_COLOR
     materialOut.color = inColor;

@@ -23,7 +23,7 @@ TEST(EngineConfig, ParsesPluginsSettingsAndRenderer) {
         R"({"plugin_dirs":["plugins"],"plugins":[{"library":"shadowmap_plugin",
             "settings":{"variant":"woo","resolution":1024}}],
             "renderer":{"ambient":[0.1,0.2,0.3],"shade_cache":false,"unrolled_light_sum":false,
-                        "check_gl_errors":true}})",
+                        "check_gl_errors":true,"exposure":2.5e-5,"tone_mapping":"pbr_neutral"}})",
         "my/engine.json");
     ASSERT_EQ(config.plugins.size(), 1u);
     EXPECT_EQ(config.plugins[0].library, "shadowmap_plugin");
@@ -34,6 +34,11 @@ TEST(EngineConfig, ParsesPluginsSettingsAndRenderer) {
     EXPECT_FALSE(config.renderer.shadeCache);
     EXPECT_TRUE(config.renderer.checkGlErrors);
     EXPECT_FALSE(config.renderer.unrolledLightSum);
+    EXPECT_FLOAT_EQ(config.renderer.exposure, 2.5e-5f);
+    EXPECT_EQ(config.renderer.toneMapping, engine::RendererConfig::ToneMapping::PbrNeutral);
+    EXPECT_EQ(engine::parseEngineConfig("{}", "my/engine.json").renderer.exposure, 1.0f);
+    EXPECT_EQ(engine::parseEngineConfig("{}", "my/engine.json").renderer.toneMapping,
+              engine::RendererConfig::ToneMapping::None);
     EXPECT_TRUE(engine::parseEngineConfig("{}", "my/engine.json").renderer.shadeCache);
     EXPECT_TRUE(engine::parseEngineConfig("{}", "my/engine.json").renderer.unrolledLightSum);
 }
@@ -55,5 +60,11 @@ TEST(EngineConfig, BadInputNamesFileAndKey) {
     EXPECT_NE(configError(R"({"renderer":{"unrolled_light_sum":0}})").find("renderer.unrolled_light_sum"),
               std::string::npos);
     EXPECT_NE(configError(R"({"renderer":{"check_gl_errors":1}})").find("renderer.check_gl_errors"),
+              std::string::npos);
+    for (const char* exposure : {"0", "-1", "\"1\"", "1e31"})
+        EXPECT_NE(configError(std::string(R"({"renderer":{"exposure":)") + exposure + "}}").find("renderer.exposure"),
+                  std::string::npos)
+            << exposure;
+    EXPECT_NE(configError(R"({"renderer":{"tone_mapping":"aces"}})").find("renderer.tone_mapping: \"aces\" is not"),
               std::string::npos);
 }

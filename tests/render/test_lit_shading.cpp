@@ -1,278 +1,13 @@
 // Headless render tests of the lit pass (no plugin): a plane facing the camera and a
 // sphere, lit by known lights, against the glTF 2.0 metallic-roughness BRDF (Appendix B)
 // evaluated here in double (tests/support/MetallicRoughnessBrdf.h).
-//
-// Tolerance: 2/255 per channel. The image is 8-bit sRGB: quantization alone is 0.5/255, and
-// the GPU computes in float with an approximate linear->sRGB encode; measured on llvmpipe
-// with the Blinn-Phong lobe this pass had before: 0.34/255 (directional) and 0.61/255
-// (point); with the Appendix B BRDF 0.47-0.77/255 on the plane and the sphere (each test
-// records its max_error_255). 2/255 is headroom that still catches a wrong term: dropping
-// the specular or the 1/d^2 attenuation moves pixels by > 10/255, and the former
-// Blinn-Phong lobe misses these references by 5.3-76/255.
-#include "../gl/GlTestContext.h"
+// The scenes, formulas and tolerance are in LitShadingFixture.h.
+#include "LitShadingFixture.h"
 
-#include "../support/MetallicRoughnessBrdf.h"
-#include "../support/TestScenes.h"
-#include "engine/scene/Shapes.h"
-#include "engine/render/Renderer.h"
-#include "engine/scene/Scene.h"
+#include <cstdint>
 
-#include <glm/gtc/matrix_transform.hpp>
+using namespace engine::test::lit;
 
-#include <cmath>
-#include <algorithm>
-#include <functional>
-
-namespace {
-
-constexpr int kSize = 48;
-constexpr double kPi = 3.14159265358979323846;
-const glm::dvec3 kAlbedo{0.5, 0.4, 0.3};
-const glm::dvec3 kAmbient{0.05, 0.06, 0.07};
-
-double srgbEncode(double linear) {
-    linear = std::clamp(linear, 0.0, 1.0);
-    return linear <= 0.0031308 ? 12.92 * linear : 1.055 * std::pow(linear, 1.0 / 2.4) - 0.055;
-}
-
-// A 4x4 plane at z = 0 facing +Z, seen by a camera on the +Z axis.
-engine::Scene planeScene(float roughness, float metallic = 0.0f) {
-    engine::Scene scene;
-    engine::Primitive plane;
-    plane.positions = {{-2, -2, 0}, {2, -2, 0}, {2, 2, 0}, {-2, 2, 0}};
-    plane.normals.assign(4, glm::vec3(0, 0, 1));
-    plane.indices = {0, 1, 2, 0, 2, 3};
-    plane.material = 0;
-    for (const glm::vec3& p : plane.positions) plane.bounds.extend(glm::dvec3(p));
-    engine::Mesh mesh;
-    mesh.primitives.push_back(plane);
-    mesh.bounds = plane.bounds;  // the renderer culls by bounds
-    scene.meshes.push_back(mesh);
-    engine::Material material;
-    material.baseColorFactor = glm::vec4(glm::vec3(kAlbedo), 1.0f);
-    material.metallicFactor = metallic;
-    material.roughnessFactor = roughness;
-    scene.materials.push_back(material);
-    engine::Node node;
-    node.mesh = 0;
-    scene.nodes.push_back(node);
-    scene.roots = {0};
-    return scene;
-}
-
-void addLight(engine::Scene& scene, engine::Light::Type type, const glm::dvec3& position,
-              float intensity, double outerCone = 0.78539816339744831, double innerCone = 0.0) {
-    engine::Light light;
-    light.type = type;
-    light.intensity = intensity;
-    light.outerConeAngle = outerCone;
-    light.innerConeAngle = innerCone;
-    scene.lights.push_back(light);
-    engine::Node node;
-    node.light = static_cast<int>(scene.lights.size()) - 1;
-    node.local = glm::translate(glm::dmat4(1.0), position);  // shines down -Z, at the plane
-    scene.nodes.push_back(node);
-    scene.roots.push_back(static_cast<int>(scene.nodes.size()) - 1);
-}
-
-engine::FrameCamera camera() {
-    engine::FrameCamera frame;
-    frame.width = frame.height = kSize;
-    frame.eyeToWorld = glm::translate(glm::dmat4(1.0), glm::dvec3(0, 0, 3));
-    frame.projection = glm::perspective(0.6, 1.0, 0.5, 10.0);
-    return frame;
-}
-
-// The world point on the plane z = 0 seen through the centre of pixel (x, y), y from top.
-glm::dvec3 surfacePoint(const engine::FrameCamera& frame, int x, int y) {
-    const glm::dvec2 ndc((x + 0.5) / kSize * 2.0 - 1.0, 1.0 - (y + 0.5) / kSize * 2.0);
-    const glm::dmat4 inverse = glm::inverse(frame.projection * glm::inverse(frame.eyeToWorld));
-    glm::dvec4 a = inverse * glm::dvec4(ndc, -1.0, 1.0), b = inverse * glm::dvec4(ndc, 1.0, 1.0);
-    const glm::dvec3 from = glm::dvec3(a) / a.w, to = glm::dvec3(b) / b.w;
-    return from + (to - from) * (from.z / (from.z - to.z));
-}
-
-double srgbDecode(double encoded) {
-    return encoded <= 0.04045 ? encoded / 12.92 : std::pow((encoded + 0.055) / 1.055, 2.4);
-}
-
-// The plane of planeScene() split at x = 0 into two primitives: the right half keeps
-// material 0 (kAlbedo), the left half gets material 1, white with a one-texel base color
-// texture of sRGB `texel` (every sample of it is that texel, whatever the filtering).
-void texturedLeftHalf(engine::Scene& scene, const glm::u8vec4& texel) {
-    engine::Primitive whole = scene.meshes[0].primitives[0];
-    engine::Primitive left = whole, right = whole;
-    left.positions = {{-2, -2, 0}, {0, -2, 0}, {0, 2, 0}, {-2, 2, 0}};
-    right.positions = {{0, -2, 0}, {2, -2, 0}, {2, 2, 0}, {0, 2, 0}};
-    left.texcoords = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
-    left.material = 1;
-    for (engine::Primitive* half : {&left, &right}) {
-        half->bounds = {};
-        for (const glm::vec3& p : half->positions) half->bounds.extend(glm::dvec3(p));
-    }
-    scene.meshes[0].primitives = {left, right};
-    engine::Image image;
-    image.width = image.height = 1;
-    image.rgba8 = {texel.r, texel.g, texel.b, texel.a};
-    scene.images.push_back(image);
-    engine::Material textured = scene.materials[0];
-    textured.baseColorFactor = glm::vec4(1.0f);
-    textured.baseColorTexture.image = 0;
-    scene.materials.push_back(textured);
-}
-
-// The irradiance each light brings to `point` (color x intensity x attenuation, before
-// N.L) and the unit vector toward it, as KHR_lights_punctual defines them.
-struct Incident {
-    glm::dvec3 toLight;
-    double irradiance;
-};
-Incident incidentLight(const engine::Scene& scene, const engine::LightInstance& placed, const glm::dvec3& point) {
-    const engine::Light& light = scene.lights[placed.light];
-    if (light.type == engine::Light::Type::Directional) return {-placed.direction(), light.intensity};
-    const glm::dvec3 offset = placed.position() - point;
-    const glm::dvec3 toLight = glm::normalize(offset);
-    double attenuation = 1.0 / glm::dot(offset, offset);
-    if (light.type == engine::Light::Type::Spot) {
-        const double cosOuter = std::cos(light.outerConeAngle), cosInner = std::cos(light.innerConeAngle);
-        const double t = std::clamp((glm::dot(-toLight, placed.direction()) - cosOuter) /
-                                        std::max(cosInner - cosOuter, 1e-4), 0.0, 1.0);
-        attenuation *= t * t;
-    }
-    return {toLight, light.intensity * attenuation};
-}
-
-// The lit pass's color for its lights (infinite range) with shade = 1: ambient x base
-// color plus each light's Appendix B diffuse and specular terms, in double.
-glm::dvec3 expectedColor(const engine::Scene& scene, const glm::dvec3& point, const glm::dvec3& normal,
-                         const glm::dvec3& baseColor, double metallic, double roughness) {
-    glm::dvec3 color = kAmbient * baseColor;
-    const glm::dvec3 toEye = glm::normalize(glm::dvec3(0, 0, 3) - point);
-    for (const engine::LightInstance& placed : scene.lightInstances) {
-        const Incident incident = incidentLight(scene, placed, point);
-        const engine::test::BrdfTerms terms = engine::test::metallicRoughnessTerms(
-            normal, toEye, incident.toLight, baseColor, metallic, roughness, glm::dvec3(incident.irradiance));
-        color += terms.diffuse + terms.specular;
-    }
-    return color;
-}
-
-// The plane's color: its normal is +Z, metallic 0 unless given.
-glm::dvec3 expectedColor(const engine::Scene& scene, const glm::dvec3& point, double roughness,
-                         const glm::dvec3& albedo = kAlbedo, double metallic = 0.0) {
-    return expectedColor(scene, point, glm::dvec3(0, 0, 1), albedo, metallic, roughness);
-}
-
-// A UV sphere of `radius` at the origin, exact unit normals at its vertices, wound
-// counter-clockwise seen from outside. Fine enough (128 x 64) that its facets stay within
-// a small fraction of a pixel of the true sphere at kSize.
-engine::Primitive spherePrimitive(double radius) {
-    constexpr int kSlices = 128, kStacks = 64;
-    engine::Primitive sphere;
-    for (int stack = 0; stack <= kStacks; ++stack)
-        for (int slice = 0; slice <= kSlices; ++slice) {
-            const double theta = kPi * stack / kStacks, phi = 2.0 * kPi * slice / kSlices;
-            const glm::dvec3 normal(std::sin(theta) * std::cos(phi), std::cos(theta), -std::sin(theta) * std::sin(phi));
-            sphere.positions.push_back(glm::vec3(normal * radius));
-            sphere.normals.push_back(glm::vec3(normal));
-        }
-    for (int stack = 0; stack < kStacks; ++stack)
-        for (int slice = 0; slice < kSlices; ++slice) {
-            const std::uint32_t a = stack * (kSlices + 1) + slice, b = a + kSlices + 1;
-            sphere.indices.insert(sphere.indices.end(), {a, b, a + 1, a + 1, b, b + 1});
-        }
-    for (const glm::vec3& p : sphere.positions) sphere.bounds.extend(glm::dvec3(p));
-    sphere.material = 0;
-    return sphere;
-}
-
-class LitShading : public engine::test::GlTest {
-protected:
-    std::vector<std::uint8_t> render(engine::Scene& scene, const glm::dvec3& ambient = kAmbient) {
-        scene.updateWorldTransforms();
-        engine::RendererConfig config;
-        config.ambient = glm::vec3(ambient);
-        engine::Renderer renderer(config, {});
-        renderer.setScene(scene);
-        engine::FrameRequest request;
-        request.camera = camera();
-        renderer.renderFrame(request);
-        return renderer.readColor();
-    }
-
-    // Every pixel against the formula: max error in 1/255 units. `albedoAt` gives the
-    // base color at a surface point (default: kAlbedo everywhere); `discardedAt` the
-    // points where nothing may be drawn (expected: the clear color, black).
-    double maxError(engine::Scene& scene, double roughness,
-                    const std::function<glm::dvec3(const glm::dvec3&)>& albedoAt = nullptr,
-                    const std::function<bool(const glm::dvec3&)>& discardedAt = nullptr,
-                    double metallic = 0.0) {
-        const auto pixels = render(scene);
-        double worst = 0.0;
-        for (int y = 0; y < kSize; ++y)
-            for (int x = 0; x < kSize; ++x) {
-                const glm::dvec3 point = surfacePoint(camera(), x, y);
-                const glm::dvec3 expected =
-                    discardedAt && discardedAt(point)
-                        ? glm::dvec3(0.0)
-                        : expectedColor(scene, point, roughness, albedoAt ? albedoAt(point) : kAlbedo, metallic);
-                for (int c = 0; c < 3; ++c) {
-                    const double actual = pixels[(y * kSize + x) * 4 + c];
-                    worst = std::max(worst, std::abs(actual - 255.0 * srgbEncode(expected[c])));
-                }
-            }
-        RecordProperty("max_error_255", std::to_string(worst));
-        std::printf("max error: %.3f / 255\n", worst);
-        return worst;
-    }
-
-    // planeScene's plane replaced by spherePrimitive(radius) with the same material: every
-    // pixel whose ray meets the true sphere where N.V >= 0.3 against the formula, with the
-    // true sphere's point and normal. Nearer the silhouette the facets' outline, not the
-    // shading, decides what a pixel sees. Max error in 1/255 units.
-    double sphereMaxError(engine::Scene& scene, double radius) {
-        scene.meshes[0].primitives = {spherePrimitive(radius)};
-        scene.meshes[0].bounds = scene.meshes[0].primitives[0].bounds;
-        const engine::Material& material = scene.materials[0];
-        const auto pixels = render(scene);
-        const engine::FrameCamera frame = camera();
-        const glm::dvec3 eye(0, 0, 3);
-        double worst = 0.0;
-        int compared = 0;
-        for (int y = 0; y < kSize; ++y)
-            for (int x = 0; x < kSize; ++x) {
-                const glm::dvec3 ray = glm::normalize(surfacePoint(frame, x, y) - eye);
-                // |eye + t ray|^2 = radius^2, nearer root.
-                const double b = glm::dot(eye, ray), c = glm::dot(eye, eye) - radius * radius;
-                if (b * b - c <= 0.0) continue;
-                const glm::dvec3 point = eye + ray * (-b - std::sqrt(b * b - c));
-                const glm::dvec3 normal = point / radius;
-                if (glm::dot(normal, -ray) < 0.3) continue;
-                ++compared;
-                const glm::dvec3 expected =
-                    expectedColor(scene, point, normal, glm::dvec3(material.baseColorFactor),
-                                  material.metallicFactor, material.roughnessFactor);
-                for (int ch = 0; ch < 3; ++ch) {
-                    const double actual = pixels[(y * kSize + x) * 4 + ch];
-                    worst = std::max(worst, std::abs(actual - 255.0 * srgbEncode(expected[ch])));
-                }
-            }
-        // The sphere covers about a third of the view: a sphere that was not drawn where
-        // expected would leave nothing compared.
-        EXPECT_GT(compared, kSize * kSize / 5);
-        RecordProperty("max_error_255", std::to_string(worst));
-        std::printf("sphere: %d pixels, max error: %.3f / 255\n", compared, worst);
-        return worst;
-    }
-};
-
-// A directional light of `intensity` lux shining from `from` toward the origin.
-void addDirectionalLightFrom(engine::Scene& scene, const glm::dvec3& from, float intensity) {
-    addLight(scene, engine::Light::Type::Directional, {0, 0, 0}, intensity);
-    scene.nodes.back().local = engine::test::placeLooking(from, glm::dvec3(0.0));
-}
-
-} // namespace
 
 TEST_F(LitShading, DirectionalLightMatchesFormula) {
     engine::Scene scene = planeScene(1.0f);
@@ -435,4 +170,31 @@ TEST_F(LitShading, EmissiveAddsToAmbientWithoutLights) {
     const glm::dvec3 expected = glm::dvec3(0.3, 0.05, 2.0) + kAmbient * kAlbedo;
     for (int c = 0; c < 3; ++c)
         EXPECT_NEAR(pixels[(kSize / 2 * kSize + kSize / 2) * 4 + c], 255.0 * srgbEncode(expected[c]), 1.0) << "channel " << c;
+}
+
+TEST_F(LitShading, ExposureScalesTheRadianceBeforeTheEncode) {
+    // A light 8x too bright for display units, brought back by exposure 1/8: the picture
+    // matches the formula times 1/8 (and differs from exposure 1 by far more than 2/255).
+    engine::Scene scene = planeScene(0.5f);
+    scene.materials[0].emissiveFactor = glm::vec3(0.4f, 0.0f, 0.0f);
+    addLight(scene, engine::Light::Type::Point, {0.4, -0.3, 1.5}, 24.0f);
+    rendererConfig.exposure = 0.125f;
+    EXPECT_LE(maxSurfaceError(scene, [](const glm::dvec3&) { return Surface{kAlbedo, 0.0, 0.5, {0, 0, 1}, 1.0, {0.4, 0, 0}}; }),
+              2.0);
+}
+
+TEST_F(LitShading, PbrNeutralToneMappingCompressesHighlightsOnly) {
+    // Khronos PBR Neutral against its formula in double: a point light whose highlight
+    // exceeds 1 (compressed and desaturated toward white) over a dim surround (passed
+    // through but for the black-level offset). Without tone mapping the highlight clips.
+    engine::Scene scene = planeScene(0.3f, 0.5f);
+    scene.materials[0].baseColorFactor = glm::vec4(0.9f, 0.6f, 0.2f, 1.0f);
+    addLight(scene, engine::Light::Type::Point, {0.4, -0.3, 1.5}, 6.0f);
+    rendererConfig.toneMapping = engine::RendererConfig::ToneMapping::PbrNeutral;
+    const auto surface = [](const glm::dvec3&) { return Surface{{0.9, 0.6, 0.2}, 0.5, 0.3}; };
+    EXPECT_LE(maxSurfaceError(scene, surface), 2.0);
+    rendererConfig.toneMapping = engine::RendererConfig::ToneMapping::None;
+    const std::vector<std::uint8_t> clipped = render(scene);
+    rendererConfig.toneMapping = engine::RendererConfig::ToneMapping::PbrNeutral;
+    EXPECT_NE(clipped, render(scene));
 }

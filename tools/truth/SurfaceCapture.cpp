@@ -86,7 +86,7 @@ void main() {
 engine::gl::Program compileCaptureProgram(unsigned materialFeatures) {
     const std::string header = "#version 450 core\n#define ATTRIB_POSITION " +
                                std::to_string(engine::kAttribPosition) + "\n" +
-                               engine::materialDefines(materialFeatures, engine::MaterialUse::Shading);
+                               engine::materialDefines(materialFeatures, engine::MaterialUse::ViewCoverage);
     return engine::gl::Program::compile(
         "truth_surface_capture", {{GL_VERTEX_SHADER, header + engine::materialVertexGlsl() + kVertex},
                                   {GL_GEOMETRY_SHADER, header + kGeometry},
@@ -140,7 +140,7 @@ SurfaceBuffer SurfaceCapture::capture(const engine::Scene& scene, const engine::
         const glm::mat4 modelView(view * gpu.modelMatrix(instance));  // double, then cast
         glFrontFace(glm::determinant(glm::dmat3(instance.world)) < 0.0 ? GL_CW : GL_CCW);
         for (const SceneGpu::Primitive& primitive : gpu.primitives(instance)) {
-            const unsigned features = materialFeatures(scene, gpu, primitive, MaterialUse::Shading);
+            const unsigned features = materialFeatures(scene, gpu, primitive, MaterialUse::ViewCoverage);
             const gl::Program& drawing = program(features);
             drawing.use();
             drawing.set("uProjection", glm::mat4(camera.projection));
@@ -148,7 +148,7 @@ SurfaceBuffer SurfaceCapture::capture(const engine::Scene& scene, const engine::
             drawing.set("uModelView", modelView);
             drawing.set("uInstance", static_cast<int>(i));
             drawing.set("uReceivesShadows", instance.receiveShadows && primitive.receiveShadows ? 1 : 0);
-            applyMaterial(drawing, scene, gpu, primitive, features, MaterialUse::Shading);
+            applyMaterial(drawing, scene, gpu, primitive, features, MaterialUse::ViewCoverage);
             if (materialOf(scene, primitive).doubleSided) glDisable(GL_CULL_FACE);
             else glEnable(GL_CULL_FACE);
             gpu.draw(primitive);

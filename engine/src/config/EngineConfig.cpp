@@ -30,14 +30,28 @@ PluginConfig parsePlugin(const nlohmann::json& entry, const std::string& file,
 }
 
 RendererConfig parseRenderer(const nlohmann::json& node, const std::string& file) {
-    json::requireKnownKeys(node, {"ambient", "clear_color", "shade_cache", "unrolled_light_sum", "check_gl_errors"}, file,
-                           "renderer");
+    json::requireKnownKeys(node,
+                           {"ambient", "clear_color", "exposure", "tone_mapping", "shade_cache", "unrolled_light_sum",
+                            "check_gl_errors"},
+                           file, "renderer");
     RendererConfig renderer;
     if (node.contains("ambient"))
         renderer.ambient = glm::vec3(json::readVec3(node["ambient"], file, "renderer.ambient"));
     if (node.contains("clear_color"))
         renderer.clearColor =
             glm::vec3(json::readVec3(node["clear_color"], file, "renderer.clear_color"));
+    if (node.contains("exposure")) {
+        const double exposure = json::readNumber(node["exposure"], file, "renderer.exposure");
+        if (!(exposure > 0.0) || exposure > 1e30)
+            throwInputError(file, "renderer.exposure", "must be a positive number, not " + node["exposure"].dump());
+        renderer.exposure = static_cast<float>(exposure);
+    }
+    if (node.contains("tone_mapping")) {
+        const std::string mapping = json::readString(node["tone_mapping"], file, "renderer.tone_mapping");
+        if (mapping == "none") renderer.toneMapping = RendererConfig::ToneMapping::None;
+        else if (mapping == "pbr_neutral") renderer.toneMapping = RendererConfig::ToneMapping::PbrNeutral;
+        else throwInputError(file, "renderer.tone_mapping", "\"" + mapping + "\" is not \"none\" or \"pbr_neutral\"");
+    }
     if (node.contains("shade_cache"))
         renderer.shadeCache = json::readBool(node["shade_cache"], file, "renderer.shade_cache");
     if (node.contains("unrolled_light_sum"))

@@ -134,11 +134,15 @@ const gl::Program& LitPass::programFor(const LightVisibilityHook* hook, const st
                                lightDefinesGlsl +
                                (output == Output::Comparison ? "#define LIGHT_DEBUG_VIEW\n" : "") +
                                (output == Output::ShadowMask ? "#define LIGHT_MASK_VIEW\n" : "") +
+                               (config_.toneMapping == RendererConfig::ToneMapping::PbrNeutral
+                                    ? "#define TONE_MAPPING_PBR_NEUTRAL\n"
+                                    : "") +
                                materialDefines(variant, MaterialUse::Shading);
     const std::string fragmentTail = visibilityGlsl + "\n" + loadShadesGlsl;
     auto program = std::make_unique<gl::Program>(gl::Program::compile(
         "lit", {{GL_VERTEX_SHADER, header + materialVertexGlsl() + shaders::lit_vert + "\n" + vertexTail},
-                {GL_FRAGMENT_SHADER, header + materialFragmentGlsl() + shaders::lit_frag + "\n" + fragmentTail}}));
+                {GL_FRAGMENT_SHADER, header + materialFragmentGlsl() + materialSurfaceGlsl() + shaders::lit_frag + "\n" +
+                                         fragmentTail}}));
     return *programs_.emplace(std::move(key), std::move(program)).first->second;
 }
 
@@ -169,6 +173,7 @@ void LitPass::drawScene(const Frame& frame, const Variants& programs, PassContex
         if (program) {
             program->set("uProjection", glm::mat4(frame.camera().projection));
             program->set("uAmbient", config_.ambient);
+            program->set("uExposure", config_.exposure);
         }
     glBindBufferBase(GL_UNIFORM_BUFFER, 0, lightBuffer_.id());
     const gl::Program* current = nullptr;
@@ -196,9 +201,6 @@ void LitPass::drawScene(const Frame& frame, const Variants& programs, PassContex
             program.set("uModelView", glm::mat4(modelView));
             program.set("uNormalMatrix", glm::mat3(normalMatrix));
             program.set("uReceiveShadows", instance.receiveShadows && primitive.receiveShadows ? 1 : 0);
-            program.set("uMetallic", material.metallicFactor);
-            program.set("uRoughness", material.roughnessFactor);
-            program.set("uEmissive", material.emissiveFactor);
             applyMaterial(program, scene, frame.gpu(), primitive, variant, MaterialUse::Shading);
             if (material.doubleSided) glDisable(GL_CULL_FACE);
             else glEnable(GL_CULL_FACE);

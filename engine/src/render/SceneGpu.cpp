@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <tuple>
 
 namespace engine {
 
@@ -29,10 +30,11 @@ std::vector<glm::vec3> relativeTo(const std::vector<glm::vec3>& positions, const
     return relative;
 }
 
-// The source primitive's buffers with the given positions (relative to the draw's origin)
-// and normals; `storageFlags` lets those two be updated (deformed instances).
+// The source primitive's buffers with the given positions (relative to the draw's origin),
+// normals and tangents; `storageFlags` lets those three be updated (deformed instances).
 SceneGpu::Primitive uploadPrimitive(const engine::Primitive& source, const std::vector<glm::vec3>& positions,
-                                    const std::vector<glm::vec3>& normals, GLbitfield storageFlags = 0) {
+                                    const std::vector<glm::vec3>& normals, const std::vector<glm::vec4>& tangents,
+                                    GLbitfield storageFlags = 0) {
     SceneGpu::Primitive gpu;
     gpu.positions = uploadArray(positions, storageFlags);
     gpu.normals = uploadArray(normals, storageFlags);
@@ -42,6 +44,11 @@ SceneGpu::Primitive uploadPrimitive(const engine::Primitive& source, const std::
     gpu.vertexArray = gl::VertexArray::create();
     gpu.vertexArray.attribute(kAttribPosition, gpu.positions, 3, GL_FLOAT, sizeof(glm::vec3));
     gpu.vertexArray.attribute(kAttribNormal, gpu.normals, 3, GL_FLOAT, sizeof(glm::vec3));
+    gpu.hasTangents = !tangents.empty();
+    if (gpu.hasTangents) {
+        gpu.tangents = uploadArray(tangents, storageFlags);
+        gpu.vertexArray.attribute(kAttribTangent, gpu.tangents, 4, GL_FLOAT, sizeof(glm::vec4));
+    }
     gpu.hasTexcoords = !source.texcoords.empty();
     if (gpu.hasTexcoords) {
         gpu.texcoords = uploadArray(source.texcoords);
@@ -63,10 +70,11 @@ SceneGpu::Primitive uploadPrimitive(const engine::Primitive& source, const std::
     return gpu;
 }
 
-gl::Texture uploadImage(const Image& image, const Sampler& sampler) {
+gl::Texture uploadImage(const Image& image, const Sampler& sampler, bool srgb) {
     const int levels =
         1 + static_cast<int>(std::floor(std::log2(std::max(image.width, image.height))));
-    gl::Texture texture = gl::Texture::create2D(GL_SRGB8_ALPHA8, image.width, image.height, levels);
+    gl::Texture texture =
+        gl::Texture::create2D(srgb ? GL_SRGB8_ALPHA8 : GL_RGBA8, image.width, image.height, levels);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     glTextureSubImage2D(texture.id(), 0, 0, 0, image.width, image.height, GL_RGBA,
                         GL_UNSIGNED_BYTE, image.rgba8.data());
@@ -87,25 +95,29 @@ SceneGpu::SceneGpu(const Scene& scene) {
         std::vector<Primitive> primitives;
         for (const engine::Primitive& primitive : mesh.primitives)
             if (!primitive.indices.empty())
-                primitives.push_back(uploadPrimitive(primitive, relativeTo(primitive.positions, origin), primitive.normals));
+                primitives.push_back(uploadPrimitive(primitive, relativeTo(primitive.positions, origin), primitive.normals,
+                                                     primitive.tangents));
         meshes_.push_back(std::move(primitives));
         meshOrigins_.push_back(origin);
     }
-    // Each (image, sampler) pair once, in the order the materials first use it.
-    std::vector<std::pair<int, Sampler>> uploaded;
+    // Each (image, sampler, sRGB) once, in the order the materials first use it.
+    using TextureKey = std::tuple<int, Sampler, bool>;
+    std::vector<TextureKey> uploaded;
     for (const Material& material : scene.materials) {
-        const TextureRef& reference = material.baseColorTexture;
-        if (reference.image < 0 || reference.image >= static_cast<int>(scene.images.size())) {
-            materialTexture_.push_back(-1);
-            continue;
+        std::array<int, kMaterialTextureCount>& slots = materialTextures_.emplace_back();
+        for (const MaterialTexture kind : kMaterialTextures) {
+            const TextureRef& reference = materialTextureRef(material, kind);
+            int& slot = slots[static_cast<unsigned>(kind)];
+            slot = -1;
+            if (reference.image < 0 || reference.image >= static_cast<int>(scene.images.size())) continue;
+            const TextureKey key{reference.image, reference.sampler, isSrgb(kind)};
+            auto found = std::find(uploaded.begin(), uploaded.end(), key);
+            if (found == uploaded.end()) {
+                textures_.push_back(uploadImage(scene.images[reference.image], reference.sampler, isSrgb(kind)));
+                found = uploaded.insert(uploaded.end(), key);
+            }
+            slot = static_cast<int>(found - uploaded.begin());
         }
-        const std::pair<int, Sampler> key{reference.image, reference.sampler};
-        auto found = std::find(uploaded.begin(), uploaded.end(), key);
-        if (found == uploaded.end()) {
-            textures_.push_back(uploadImage(scene.images[reference.image], reference.sampler));
-            found = uploaded.insert(uploaded.end(), key);
-        }
-        materialTexture_.push_back(static_cast<int>(found - uploaded.begin()));
     }
     updateDeformed(scene);
 }
@@ -132,10 +144,13 @@ void SceneGpu::upload(DeformedInstance& gpu, const Mesh& mesh, const DeformedMes
         if (mesh.primitives[p].indices.empty()) continue;  // as the meshes' list skips them
         const DeformedPrimitive& posed = pose.primitives.at(p);
         if (fresh) {
-            gpu.primitives.push_back(uploadPrimitive(mesh.primitives[p], posed.positions, posed.normals, GL_DYNAMIC_STORAGE_BIT));
+            gpu.primitives.push_back(uploadPrimitive(mesh.primitives[p], posed.positions, posed.normals,
+                                                     posed.tangents, GL_DYNAMIC_STORAGE_BIT));
         } else {
-            updateArray(gpu.primitives.at(drawn).positions, posed.positions);
-            updateArray(gpu.primitives.at(drawn).normals, posed.normals);
+            Primitive& primitive = gpu.primitives.at(drawn);
+            updateArray(primitive.positions, posed.positions);
+            updateArray(primitive.normals, posed.normals);
+            if (primitive.hasTangents) updateArray(primitive.tangents, posed.tangents);
         }
         ++drawn;
     }
@@ -162,9 +177,9 @@ std::uint64_t SceneGpu::draw(const Primitive& primitive) const {
     return static_cast<std::uint64_t>(primitive.indexCount / 3);
 }
 
-unsigned SceneGpu::baseColorTexture(int material) const {
-    if (material < 0 || material >= static_cast<int>(materialTexture_.size())) return 0;
-    const int texture = materialTexture_[material];
+unsigned SceneGpu::materialTexture(int material, MaterialTexture kind) const {
+    if (material < 0 || material >= static_cast<int>(materialTextures_.size())) return 0;
+    const int texture = materialTextures_[material][static_cast<unsigned>(kind)];
     return texture >= 0 ? textures_[texture].id() : 0;
 }
 

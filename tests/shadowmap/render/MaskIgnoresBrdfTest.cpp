@@ -3,6 +3,8 @@
 // changed gives byte-equal masks for every light, while the shaded image changes (so the
 // material edit reached the shading and the comparison is not vacuous). The mask view and
 // the shaded image share lit.frag; this pins that only the shaded path reads the material.
+// Likewise for the surface textures (metallic-roughness, normal, occlusion, emissive): the
+// normal map turns the shading normal only, never the normal the shadow lookup uses.
 #include "../../gl/GlTestContext.h"
 #include "AnalyticShadows.h"
 
@@ -12,6 +14,42 @@
 namespace {
 
 constexpr int kWidth = 160, kHeight = 120;
+
+// A 4x4 image of varied texels (every channel moves), for every surface texture.
+engine::Image variedImage() {
+    engine::Image image;
+    image.width = image.height = 4;
+    for (int i = 0; i < 16; ++i)
+        image.rgba8.insert(image.rgba8.end(), {static_cast<std::uint8_t>(40 + i * 13), static_cast<std::uint8_t>(250 - i * 11),
+                                               static_cast<std::uint8_t>(120 + (i * 37) % 120), 255});
+    return image;
+}
+
+// Every material of `scene` given every surface texture, and every primitive UVs (from
+// its x and z) and tangents (any unit vector across its normal), so each texture varies
+// over each surface.
+void addSurfaceTextures(engine::Scene& scene) {
+    scene.images.push_back(variedImage());
+    const int image = static_cast<int>(scene.images.size()) - 1;
+    for (engine::Material& material : scene.materials)
+        for (engine::TextureRef* slot : {&material.metallicRoughnessTexture, &material.normalTexture,
+                                         &material.occlusionTexture, &material.emissiveTexture}) {
+            slot->image = image;
+            slot->sampler.minFilter = slot->sampler.magFilter = 0x2600;  // GL_NEAREST
+        }
+    for (engine::Material& material : scene.materials) material.emissiveFactor = glm::vec3(0.3f);
+    for (engine::Mesh& mesh : scene.meshes)
+        for (engine::Primitive& primitive : mesh.primitives) {
+            primitive.texcoords.clear();
+            primitive.tangents.clear();
+            for (std::size_t v = 0; v < primitive.positions.size(); ++v) {
+                const glm::vec3 p = primitive.positions[v], n = primitive.normals[v];
+                primitive.texcoords.push_back(glm::vec2(p.x, p.z) * 0.7f);
+                const glm::vec3 across = std::abs(n.x) < 0.9f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0);
+                primitive.tangents.push_back(glm::vec4(glm::normalize(glm::cross(n, across)), 1.0f));
+            }
+        }
+}
 
 struct Rendered {
     std::vector<std::uint8_t> color;
@@ -60,4 +98,18 @@ TEST_F(MaskIgnoresBrdf, ShowcaseMasksAreByteEqualWhateverTheMaterials) {
         EXPECT_TRUE(before.masks[slot] == after.masks[slot]) << "light slot " << slot << ": mask changed with the materials";
     }
     EXPECT_NE(before.color, after.color);
+}
+
+TEST_F(MaskIgnoresBrdf, ShowcaseMasksAreByteEqualWithEverySurfaceTexture) {
+    const engine::Scene authored = engine::loadGltf(std::string(CONTENT_DIR) + "/scenes/showcase.gltf");
+    engine::Scene textured = authored;
+    addSurfaceTextures(textured);
+    const Rendered before = render(authored), after = render(textured);
+    ASSERT_EQ(before.masks.size(), 3u);
+    for (std::size_t slot = 0; slot < before.masks.size(); ++slot)
+        EXPECT_TRUE(before.masks[slot] == after.masks[slot]) << "light slot " << slot << ": mask changed with the textures";
+    // The textures reached the shading: a large share of the image changed.
+    std::size_t changed = 0;
+    for (std::size_t i = 0; i < before.color.size(); ++i) changed += before.color[i] != after.color[i];
+    EXPECT_GT(changed, before.color.size() / 4);
 }

@@ -26,6 +26,17 @@ struct PluginConfig {
 struct RendererConfig {
     glm::vec3 ambient{0.04f};      // linear ambient light, multiplied by albedo
     glm::vec3 clearColor{0.0f};    // linear background
+    // The shaded radiance is multiplied by `exposure`, then tone mapped, then sRGB-encoded.
+    // The defaults (1, none) suit lights given in display units (an irradiance of about 1
+    // lights a white surface fully). For physical units (KHR_lights_punctual: lux, candela)
+    // take exposure = 1 / (1.2 * 2^EV100), the photographic convention: a sunlit scene
+    // (EV100 15) 2.5e-5, an office (EV100 8) 3.3e-3.
+    float exposure = 1.0f;
+    enum class ToneMapping {
+        None,        // clamp at 1
+        PbrNeutral,  // Khronos PBR Neutral: keeps base colors up to 0.8 as they are, then rolls off
+    };
+    ToneMapping toneMapping = ToneMapping::None;
     // Reuse a light's per-pixel shade while camera, geometry and light are unchanged
     // (ShadeCache.h); off: every frame asks the visibility hook for every pixel.
     bool shadeCache = true;

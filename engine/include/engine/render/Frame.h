@@ -28,8 +28,9 @@ namespace gl { class Program; }
 // texture unit, of which llvmpipe has 32 (GL 4.5 guarantees 16), so more slots than units
 // would buy only unshadowed lights.
 constexpr int kMaxLights = 32;
-// Texture units 0..kFirstPluginTextureUnit-1 belong to the engine's materials.
-constexpr int kFirstPluginTextureUnit = 4;
+// Texture units 0..kFirstPluginTextureUnit-1 belong to the engine: the five material
+// textures (MaterialTextures.h) and the shade cache (ShadeCache.h).
+constexpr int kFirstPluginTextureUnit = 6;
 // Uniform block binding 0 is the lit pass's lights; a visibility hook's blocks start here.
 constexpr unsigned kFirstPluginUniformBinding = 1;
 

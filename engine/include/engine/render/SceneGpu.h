@@ -4,9 +4,11 @@
 #include "engine/gl/Buffer.h"
 #include "engine/gl/Texture.h"
 #include "engine/gl/VertexArray.h"
+#include "engine/render/MaterialTextures.h"
 
 #include <glm/glm.hpp>
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <unordered_map>
@@ -25,16 +27,18 @@ constexpr unsigned kAttribNormal = 1;
 constexpr unsigned kAttribTexcoord = 2;   // TEXCOORD_0
 constexpr unsigned kAttribTexcoord1 = 3;  // TEXCOORD_1
 constexpr unsigned kAttribColor = 4;      // COLOR_0
+constexpr unsigned kAttribTangent = 5;    // TANGENT
 
 class SceneGpu {
 public:
     struct Primitive {
-        gl::Buffer positions, normals, texcoords, texcoords1, colors, indices;
+        gl::Buffer positions, normals, tangents, texcoords, texcoords1, colors, indices;
         gl::VertexArray vertexArray;
         std::int32_t indexCount = 0;
         int material = -1;
         // An absent attribute reads the constant applyMaterial() sets (MaterialShading.h).
         bool hasTexcoords = false, hasTexcoords1 = false, hasColors = false;
+        bool hasTangents = false;  // normal mapping needs them
         // The source primitive's KHR_lights_shadows flags.
         bool castShadows = true, receiveShadows = true;
     };
@@ -58,13 +62,13 @@ public:
     glm::dmat4 modelMatrix(const MeshInstance& instance) const;
     // Binds the primitive's vertex array and draws it; returns its triangle count.
     std::uint64_t draw(const Primitive& primitive) const;
-    // The material's base color texture (sRGB, mipmapped, its glTF sampler's filters and
-    // wrap modes set on it), or 0 when it has none.
-    unsigned baseColorTexture(int material) const;
+    // The material's texture of that kind (mipmapped, sRGB-decoded where isSrgb says so,
+    // its glTF sampler's filters and wrap modes set on it), or 0 when it has none.
+    unsigned materialTexture(int material, MaterialTexture texture) const;
 
 private:
-    // A deformed instance's own vertex buffers (positions and normals updatable; the rest
-    // copied from its mesh), by node.
+    // A deformed instance's own vertex buffers (positions, normals and tangents updatable;
+    // the rest copied from its mesh), by node.
     struct DeformedInstance {
         int mesh = -1;
         std::shared_ptr<const DeformedMesh> pose;  // what was uploaded
@@ -75,11 +79,12 @@ private:
     std::vector<std::vector<Primitive>> meshes_;
     std::unordered_map<int, DeformedInstance> deformed_;
     std::vector<glm::dvec3> meshOrigins_;      // per mesh: its bounds' centre
-    // One texture per distinct (image, sampler) the materials use: the sampler's state
-    // lives on the texture, so binding it is all a pass does (no sampler object left bound
-    // to a unit that another pass uses for a depth map).
+    // One texture per distinct (image, sampler, sRGB or not) the materials use: the
+    // sampler's state lives on the texture, so binding it is all a pass does (no sampler
+    // object left bound to a unit that another pass uses for a depth map).
     std::vector<gl::Texture> textures_;
-    std::vector<int> materialTexture_;         // per material: index into textures_ or -1
+    // Per material and MaterialTexture: index into textures_, or -1.
+    std::vector<std::array<int, kMaterialTextureCount>> materialTextures_;
 };
 
 } // namespace engine

@@ -22,6 +22,7 @@
 // costs its lookups but not the cache writes: measured 1.10 -> 1.06 x (unshadowed + one
 // depth pass) for 2CylinderEngine with its light orbiting). A single change is still
 // stored at once, and a light that stops is stored on its first still frame.
+#include "engine/render/MaterialTextures.h"
 #include "engine/gl/Texture.h"
 #include "engine/render/Frame.h"
 
@@ -71,9 +72,9 @@ public:
     // Forget everything (a new scene).
     void clear();
 
-    // Texture unit of the cache's sampler: one of the engine's own units (below
-    // kFirstPluginTextureUnit; unit 0 is the base color texture).
-    static constexpr int kTextureUnit = 1;
+    // Texture unit of the cache's sampler: the engine's own unit after the material
+    // textures' (below kFirstPluginTextureUnit).
+    static constexpr int kTextureUnit = static_cast<int>(kMaterialTextureCount);
 
 private:
     void ensureArrays(int width, int height, int layers);
