@@ -5,11 +5,14 @@
 #include "engine/scene/Deform.h"
 #include "engine/scene/Scene.h"
 #include "engine/scene/Shapes.h"
+#include "../support/TangentExpectations.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
 
 #include <cmath>
+
+using engine::test::expectTangent;
 
 namespace {
 
@@ -39,13 +42,6 @@ engine::Scene skinnedScene(engine::Primitive primitive, const glm::dmat4& joint)
     scene.roots = {0, 1};
     scene.updateWorldTransforms();
     return scene;
-}
-
-void expectTangent(const glm::vec4& actual, const glm::vec3& xyz, float w) {
-    EXPECT_NEAR(actual.x, xyz.x, 1e-6f);
-    EXPECT_NEAR(actual.y, xyz.y, 1e-6f);
-    EXPECT_NEAR(actual.z, xyz.z, 1e-6f);
-    EXPECT_EQ(actual.w, w);
 }
 
 } // namespace

@@ -7,11 +7,14 @@
 #include "engine/scene/Deform.h"
 
 #include "gltf_test_support.h"
+#include "../support/TangentExpectations.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cstdint>
+
+using engine::test::expectTangent;
 
 namespace {
 
@@ -46,13 +49,6 @@ void addNormalMap(GltfBuilder& b, json textureInfo) {
 
 const std::vector<glm::vec4>& loadedTangents(const engine::Scene& scene) {
     return scene.meshes.at(0).primitives.at(0).tangents;
-}
-
-void expectTangent(const glm::vec4& actual, const glm::vec3& xyz, float w) {
-    EXPECT_NEAR(actual.x, xyz.x, 1e-6f);
-    EXPECT_NEAR(actual.y, xyz.y, 1e-6f);
-    EXPECT_NEAR(actual.z, xyz.z, 1e-6f);
-    EXPECT_EQ(actual.w, w);
 }
 
 } // namespace

@@ -4,6 +4,7 @@
 // on a cylinder; unit tangents perpendicular to the normal on a curved, skewed mesh; and
 // the fallback for UVs that span no area.
 #include "engine/scene/Tangents.h"
+#include "../support/TangentExpectations.h"
 
 #include <gtest/gtest.h>
 
@@ -11,6 +12,8 @@
 #include <cstdint>
 #include <string>
 #include <vector>
+
+using engine::test::expectTangent;
 
 namespace {
 
@@ -26,13 +29,6 @@ struct Mesh {
 Mesh plane(const std::vector<glm::vec2>& uvs) {
     return {{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}, std::vector<glm::vec3>(4, glm::vec3(0, 0, 1)), uvs,
             {0, 1, 2, 0, 2, 3}};
-}
-
-void expectTangent(const glm::vec4& actual, const glm::vec3& xyz, float w, const char* where = "") {
-    EXPECT_NEAR(actual.x, xyz.x, 1e-6f) << where;
-    EXPECT_NEAR(actual.y, xyz.y, 1e-6f) << where;
-    EXPECT_NEAR(actual.z, xyz.z, 1e-6f) << where;
-    EXPECT_EQ(actual.w, w) << where;
 }
 
 // Unit and perpendicular to the normal, to 1e-6; w exactly +-1.
