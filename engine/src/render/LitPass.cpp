@@ -134,6 +134,7 @@ const gl::Program& LitPass::programFor(const LightVisibilityHook* hook, const st
                                lightDefinesGlsl +
                                (output == Output::Comparison ? "#define LIGHT_DEBUG_VIEW\n" : "") +
                                (output == Output::ShadowMask ? "#define LIGHT_MASK_VIEW\n" : "") +
+                               (config_.exposure != 1.0f ? "#define EXPOSURE\n" : "") +
                                (config_.toneMapping == RendererConfig::ToneMapping::PbrNeutral
                                     ? "#define TONE_MAPPING_PBR_NEUTRAL\n"
                                     : "") +
