@@ -22,7 +22,7 @@ TEST(EngineConfig, ParsesPluginsSettingsAndRenderer) {
     const auto config = engine::parseEngineConfig(
         R"({"plugin_dirs":["plugins"],"plugins":[{"library":"shadowmap_plugin",
             "settings":{"variant":"woo","resolution":1024}}],
-            "renderer":{"ambient":[0.1,0.2,0.3],"shade_cache":false,"unrolled_light_sum":false,
+            "renderer":{"ambient":[0.1,0.2,0.3],"shade_cache":false,"light_footprints":false,"unrolled_light_sum":false,
                         "check_gl_errors":true,"exposure":2.5e-5,"tone_mapping":"pbr_neutral"}})",
         "my/engine.json");
     ASSERT_EQ(config.plugins.size(), 1u);
@@ -32,6 +32,7 @@ TEST(EngineConfig, ParsesPluginsSettingsAndRenderer) {
     EXPECT_EQ(config.pluginDirs[0], std::filesystem::path("my/plugins"));
     EXPECT_FLOAT_EQ(config.renderer.ambient.y, 0.2f);
     EXPECT_FALSE(config.renderer.shadeCache);
+    EXPECT_FALSE(config.renderer.lightFootprints);
     EXPECT_TRUE(config.renderer.checkGlErrors);
     EXPECT_FALSE(config.renderer.unrolledLightSum);
     EXPECT_FLOAT_EQ(config.renderer.exposure, 2.5e-5f);
@@ -40,6 +41,7 @@ TEST(EngineConfig, ParsesPluginsSettingsAndRenderer) {
     EXPECT_EQ(engine::parseEngineConfig("{}", "my/engine.json").renderer.toneMapping,
               engine::RendererConfig::ToneMapping::None);
     EXPECT_TRUE(engine::parseEngineConfig("{}", "my/engine.json").renderer.shadeCache);
+    EXPECT_TRUE(engine::parseEngineConfig("{}", "my/engine.json").renderer.lightFootprints);
     EXPECT_TRUE(engine::parseEngineConfig("{}", "my/engine.json").renderer.unrolledLightSum);
 }
 
@@ -56,6 +58,8 @@ TEST(EngineConfig, BadInputNamesFileAndKey) {
     EXPECT_NE(configError(R"({"renderer":{"ambient":[1,2]}})").find("renderer.ambient"),
               std::string::npos);
     EXPECT_NE(configError(R"({"renderer":{"shade_cache":"yes"}})").find("renderer.shade_cache"),
+              std::string::npos);
+    EXPECT_NE(configError(R"({"renderer":{"light_footprints":"on"}})").find("renderer.light_footprints"),
               std::string::npos);
     EXPECT_NE(configError(R"({"renderer":{"unrolled_light_sum":0}})").find("renderer.unrolled_light_sum"),
               std::string::npos);

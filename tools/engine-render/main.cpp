@@ -243,6 +243,7 @@ int run(const RenderOptions& options, std::unique_ptr<engine::GlContext>& contex
     engine::FrameResult last;
     nlohmann::json shadeCacheFrames = nlohmann::json::array();  // per timed frame
     int framesComputingShade = 0;  // timed frames whose lit pass recomputed a cacheable light
+    int framesLimitingLookups = 0;  // timed frames that looked some light up only in its footprint
     // Untimed: at least --warmup frames, then until a frame compiles nothing new (the shade
     // cache's fetching programs appear in the second frame), so the first timed frame times
     // rendering, not shader compilation. --warmup 0 times the cold start.
@@ -260,6 +261,7 @@ int run(const RenderOptions& options, std::unique_ptr<engine::GlContext>& contex
         last = renderer.renderFrame(request);
         frameMs.push_back(last.frameMs);
         shadeCacheFrames.push_back(last.shadeCache);
+        framesLimitingLookups += last.footprintLimitedLights.empty() ? 0 : 1;
         for (const char* recomputed : {"computed", "moving"})
             if (!last.shadeCache.value(recomputed, nlohmann::json::array()).empty()) {
                 ++framesComputingShade;
@@ -316,6 +318,11 @@ int run(const RenderOptions& options, std::unique_ptr<engine::GlContext>& contex
                     shadeCache["fetched"].dump().c_str(), shadeCache["computed"].dump().c_str(),
                     shadeCache["moving"].dump().c_str(), shadeCache["uncached"].dump().c_str(),
                     framesComputingShade, options.frames);
+    if (framesLimitingLookups > 0)
+        std::printf("  light footprints: last frame looked lights %s up only in their footprints (lit pass in "
+                    "%d regions); lookups limited in %d of %d frames\n",
+                    nlohmann::json(last.footprintLimitedLights).dump().c_str(), last.shadingRegions,
+                    framesLimitingLookups, options.frames);
     nlohmann::json stats = statsJson(options, frameMs, order, passes, last);
     stats["shade_cache"] = shadeCacheFrames;
     if (options.truth) stats["lights"] = printLightErrors(renderer, scene, request.camera, passes);

@@ -31,7 +31,7 @@ PluginConfig parsePlugin(const nlohmann::json& entry, const std::string& file,
 
 RendererConfig parseRenderer(const nlohmann::json& node, const std::string& file) {
     json::requireKnownKeys(node,
-                           {"ambient", "clear_color", "exposure", "tone_mapping", "shade_cache", "unrolled_light_sum",
+                           {"ambient", "clear_color", "exposure", "tone_mapping", "shade_cache", "light_footprints", "unrolled_light_sum",
                             "check_gl_errors"},
                            file, "renderer");
     RendererConfig renderer;
@@ -54,6 +54,8 @@ RendererConfig parseRenderer(const nlohmann::json& node, const std::string& file
     }
     if (node.contains("shade_cache"))
         renderer.shadeCache = json::readBool(node["shade_cache"], file, "renderer.shade_cache");
+    if (node.contains("light_footprints"))
+        renderer.lightFootprints = json::readBool(node["light_footprints"], file, "renderer.light_footprints");
     if (node.contains("unrolled_light_sum"))
         renderer.unrolledLightSum =
             json::readBool(node["unrolled_light_sum"], file, "renderer.unrolled_light_sum");

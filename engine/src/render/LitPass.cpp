@@ -2,7 +2,9 @@
 
 #include "engine/render/MaterialShading.h"
 #include "engine/render/SceneGpu.h"
+#include "engine/render/ShadingRegions.h"
 #include "engine/scene/DrawOrder.h"
+#include "engine/scene/FrustumCull.h"
 #include "engine/scene/Scene.h"
 #include "engine/util/Hasher.h"
 
@@ -112,6 +114,28 @@ std::string lightDefines(const Scene& scene, int lightCount, bool unrolled) {
     return defines;
 }
 
+// Splitting the lit pass by footprints draws a mesh once per region it touches. What that
+// costs against what it spares, measured on llvmpipe (2-core EPYC, 1280x720): a shadow lookup
+// takes about 4.5 ns of frame per covered pixel (showcase, camera orbiting: 5 ms per light
+// over 67 % of the target), a triangle drawn once more about 78 ns (2CylinderEngine: the lit
+// pass's binning, 9.4 ms of main-thread time for 121k triangles). So a split must spare
+// lookups on more pixels than 17 per triangle it draws again.
+constexpr double kPixelsPerRedrawnTriangle = 17.0;
+// And it stays small: a light that would split the target into more regions stays out.
+// Measured on content/scenes/lamps.gltf (four lamps, camera orbiting, 1280x720): at most 9
+// regions limited two lamps (frame 23.0-24.6 -> 21.8-24.4 ms), 32 three (18.5-19.6 ms), 64
+// all four in 33 regions and was no faster (20.2-22.7 against 19.3-23.4 ms).
+constexpr std::size_t kMaxRegions = 32;
+
+// Whether light `slot`'s shade is looked up in this frame's shaded image and not written
+// to the shade cache: only then may a constant stand in for it outside its footprint (the
+// cache holds exact shades only).
+bool evaluatedUnstored(const ShadeCache::Plan& plan, int slot) {
+    const ShadeCache::Source source = plan.sources[slot];
+    if (source == ShadeCache::Source::Inline) return true;
+    return source == ShadeCache::Source::Moving && (plan.writeArray == 0 || plan.channels[slot] < 0);
+}
+
 } // namespace
 
 LitPass::LitPass(const RendererConfig& config)
@@ -167,15 +191,96 @@ void LitPass::uploadLights(const Scene& scene, const FrameCamera& camera) {
     lightBuffer_.update(0, sizeof(lights), lights);
 }
 
-void LitPass::drawScene(const Frame& frame, const Variants& programs, PassContext& context) {
+std::vector<std::pair<PixelRect, ShadeCache::Plan>> LitPass::footprintRegions(const Frame& frame) {
+    const FrameCamera& camera = frame.camera();
+    const PixelRect target = PixelRect::target(camera.width, camera.height);
+    std::vector<std::pair<PixelRect, ShadeCache::Plan>> regions{{target, shadePlan_}};
+    footprintLimitedLights_.clear();
+    shadingRegionCount_ = 1;
+    if (!config_.lightFootprints) return regions;
+    const Scene& scene = frame.scene();
+    const glm::dmat4 viewProjection = camera.projection * glm::inverse(camera.eyeToWorld);
+    // What a light can light on screen: the meshes the camera may see, each with its
+    // footprint and triangles (what drawing it in one more region costs).
+    std::vector<Aabb> receivers;
+    std::vector<PixelRect> receiverFootprints;
+    std::vector<std::int64_t> receiverTriangles;
+    PixelRect covered;  // holds every pixel a mesh may cover
+    for (const MeshInstance& instance : scene.meshInstances) {
+        if (!boxIntersectsFrustum(viewProjection, instance.worldBounds)) continue;
+        receivers.push_back(instance.worldBounds);
+        receiverFootprints.push_back(projectedFootprint(viewProjection, instance.worldBounds, camera.width, camera.height));
+        covered = enclosing(covered, receiverFootprints.back());
+        std::int64_t triangles = 0;
+        for (const SceneGpu::Primitive& primitive : frame.gpu().primitives(instance)) triangles += primitive.indexCount / 3;
+        receiverTriangles.push_back(triangles);
+    }
+    struct Candidate {
+        int slot;
+        PixelRect footprint;
+        std::int64_t sparedPixels;  // of `covered`, outside the footprint
+    };
+    std::vector<Candidate> candidates;
+    for (int slot = 0; slot < static_cast<int>(shadePlan_.sources.size()); ++slot) {
+        if (!evaluatedUnstored(shadePlan_, slot)) continue;
+        const LightInstance& placed = scene.lightInstances[slot];
+        const PixelRect footprint =
+            lightFootprint(scene.lights[placed.light], placed, receivers, viewProjection, camera.width, camera.height);
+        const std::int64_t spared = covered.area() - intersection(covered, footprint).area();
+        if (spared > 0) candidates.push_back({slot, footprint, spared});
+    }
+    std::stable_sort(candidates.begin(), candidates.end(),
+                     [](const Candidate& a, const Candidate& b) { return a.sparedPixels > b.sparedPixels; });
+    // Lights join the split, most pixels spared first, while the split stays small and
+    // spares more lookups than the meshes it draws more than once cost.
+    std::vector<Candidate> limited;
+    std::vector<ShadingRegion> split;
+    std::int64_t spared = 0;
+    for (const Candidate& candidate : candidates) {
+        std::vector<PixelRect> footprints;
+        for (const Candidate& light : limited) footprints.push_back(light.footprint);
+        footprints.push_back(candidate.footprint);
+        std::vector<ShadingRegion> trial = splitByFootprints(footprints, camera.width, camera.height);
+        if (trial.size() > kMaxRegions) continue;
+        std::int64_t redrawnTriangles = 0;
+        for (std::size_t i = 0; i < receiverFootprints.size(); ++i) {
+            const auto touched = std::count_if(trial.begin(), trial.end(), [&](const ShadingRegion& region) {
+                return region.rect.intersects(receiverFootprints[i]);
+            });
+            redrawnTriangles += std::max<std::int64_t>(touched - 1, 0) * receiverTriangles[i];
+        }
+        if (double(spared + candidate.sparedPixels) <= double(redrawnTriangles) * kPixelsPerRedrawnTriangle) continue;
+        spared += candidate.sparedPixels;
+        limited.push_back(candidate);
+        split = std::move(trial);
+    }
+    if (limited.empty()) return regions;
+    regions.clear();
+    for (const ShadingRegion& region : split) {
+        ShadeCache::Plan plan = shadePlan_;
+        for (std::size_t i = 0; i < limited.size(); ++i)
+            if (!(region.footprints & (1u << i))) {
+                plan.sources[limited[i].slot] = ShadeCache::Source::Constant;
+                plan.constants[limited[i].slot] = 1.0f;
+            }
+        regions.emplace_back(region.rect, std::move(plan));
+    }
+    for (const Candidate& light : limited) footprintLimitedLights_.push_back(light.slot);
+    std::sort(footprintLimitedLights_.begin(), footprintLimitedLights_.end());
+    shadingRegionCount_ = static_cast<int>(regions.size());
+    return regions;
+}
+
+void LitPass::drawScene(const Frame& frame, const std::vector<Region>& regions, PassContext& context) {
     const Scene& scene = frame.scene();
     const glm::dmat4 view = glm::inverse(frame.camera().eyeToWorld);
-    for (const gl::Program* program : programs)
-        if (program) {
-            program->set("uProjection", glm::mat4(frame.camera().projection));
-            program->set("uAmbient", config_.ambient);
-            program->set("uExposure", config_.exposure);
-        }
+    for (const Region& region : regions)
+        for (const gl::Program* program : region.programs)
+            if (program) {
+                program->set("uProjection", glm::mat4(frame.camera().projection));
+                program->set("uAmbient", config_.ambient);
+                program->set("uExposure", config_.exposure);
+            }
     glBindBufferBase(GL_UNIFORM_BUFFER, 0, lightBuffer_.id());
     const gl::Program* current = nullptr;
 
@@ -184,29 +289,52 @@ void LitPass::drawScene(const Frame& frame, const Variants& programs, PassContex
     // first so the depth test spares hidden fragments their shading.
     const DrawOrder order = nearestFirst(scene, viewProjection, frame.camera().position());
     culledInstances_ = order.culled;
-    for (const int index : order.instances) {
-        const MeshInstance& instance = scene.meshInstances[index];
-        // Compose in double so only the camera-relative result is rounded to float.
-        const glm::dmat4 modelView = view * frame.gpu().modelMatrix(instance);
-        const glm::dmat3 normalMatrix = glm::transpose(glm::inverse(glm::dmat3(modelView)));
-        // A mirroring transform turns counter-clockwise triangles clockwise on screen.
-        glFrontFace(glm::determinant(glm::dmat3(instance.world)) < 0.0 ? GL_CW : GL_CCW);
-        for (const SceneGpu::Primitive& primitive : frame.gpu().primitives(instance)) {
-            const Material& material = materialOf(scene, primitive);
-            const unsigned variant = materialFeatures(scene, frame.gpu(), primitive, MaterialUse::Shading);
-            const gl::Program& program = *programs[variant];
-            if (&program != current) {
-                program.use();
-                current = &program;
-            }
-            program.set("uModelView", glm::mat4(modelView));
-            program.set("uNormalMatrix", glm::mat3(normalMatrix));
-            program.set("uReceiveShadows", instance.receiveShadows && primitive.receiveShadows ? 1 : 0);
-            applyMaterial(program, scene, frame.gpu(), primitive, variant, MaterialUse::Shading);
-            if (material.doubleSided) glDisable(GL_CULL_FACE);
-            else glEnable(GL_CULL_FACE);
-            context.countDraw(frame.gpu().draw(primitive));
+    const PixelRect target = PixelRect::target(frame.camera().width, frame.camera().height);
+    const bool split = regions.size() > 1;
+    // Each region draws, in the same nearest-first order, the meshes whose footprint touches
+    // it; a pixel lies in one region, so it sees the same fragments in the same order as
+    // without the split.
+    std::vector<PixelRect> meshFootprints;
+    if (split) {
+        glEnable(GL_SCISSOR_TEST);
+        for (const int index : order.instances)
+            meshFootprints.push_back(projectedFootprint(viewProjection, scene.meshInstances[index].worldBounds,
+                                                        target.x1, target.y1));
+    }
+    for (const Region& region : regions) {
+        if (split) glScissor(region.rect.x0, region.rect.y0, region.rect.x1 - region.rect.x0, region.rect.y1 - region.rect.y0);
+        for (std::size_t drawn = 0; drawn < order.instances.size(); ++drawn) {
+            if (split && !meshFootprints[drawn].intersects(region.rect)) continue;
+            drawInstance(frame, order.instances[drawn], view, region.programs, current, context);
         }
+    }
+    if (split) glDisable(GL_SCISSOR_TEST);
+}
+
+void LitPass::drawInstance(const Frame& frame, int index, const glm::dmat4& view, const Variants& programs,
+                           const gl::Program*& current, PassContext& context) {
+    const Scene& scene = frame.scene();
+    const MeshInstance& instance = scene.meshInstances[index];
+    // Compose in double so only the camera-relative result is rounded to float.
+    const glm::dmat4 modelView = view * frame.gpu().modelMatrix(instance);
+    const glm::dmat3 normalMatrix = glm::transpose(glm::inverse(glm::dmat3(modelView)));
+    // A mirroring transform turns counter-clockwise triangles clockwise on screen.
+    glFrontFace(glm::determinant(glm::dmat3(instance.world)) < 0.0 ? GL_CW : GL_CCW);
+    for (const SceneGpu::Primitive& primitive : frame.gpu().primitives(instance)) {
+        const Material& material = materialOf(scene, primitive);
+        const unsigned variant = materialFeatures(scene, frame.gpu(), primitive, MaterialUse::Shading);
+        const gl::Program& program = *programs[variant];
+        if (&program != current) {
+            program.use();
+            current = &program;
+        }
+        program.set("uModelView", glm::mat4(modelView));
+        program.set("uNormalMatrix", glm::mat3(normalMatrix));
+        program.set("uReceiveShadows", instance.receiveShadows && primitive.receiveShadows ? 1 : 0);
+        applyMaterial(program, scene, frame.gpu(), primitive, variant, MaterialUse::Shading);
+        if (material.doubleSided) glDisable(GL_CULL_FACE);
+        else glEnable(GL_CULL_FACE);
+        context.countDraw(frame.gpu().draw(primitive));
     }
 }
 
@@ -222,18 +350,31 @@ void LitPass::addPass(Frame& frame, const std::string& name, ResourceHandle targ
                                                   frame.camera().width, frame.camera().height)
                                : ShadeCache::uncached(lightCount);
     }
-    const std::string loadShadesGlsl =
-        output == Output::Color ? shadePlan_.glsl() : ShadeCache::uncached(lightCount).glsl();
-    // A shaded image that takes every light's shade from the cache needs none of the hook's
-    // code: leaving it out spares llvmpipe its interpolated inputs and uniforms (measured:
-    // 16.8 -> 15.7 ms for the showcase at 1280x720, whose unshadowed frame takes 14.0).
-    const bool evaluatesHook = output != Output::Color || shadePlan_.evaluatesHook();
-    const LightVisibilityHook* shading = hook && evaluatesHook ? &*hook : nullptr;
-    // The material variants the scene's primitives need.
-    Variants programs{};
+    const bool color = output == Output::Color;
+    // The shaded image may be split by light footprints, each region with a shade plan of its
+    // own; the per-light views always ask the hook, everywhere.
+    const std::vector<std::pair<PixelRect, ShadeCache::Plan>> plans =
+        color ? footprintRegions(frame)
+              : std::vector<std::pair<PixelRect, ShadeCache::Plan>>{
+                    {PixelRect::target(frame.camera().width, frame.camera().height), ShadeCache::uncached(lightCount)}};
     const std::string lights = lightDefines(frame.scene(), lightCount, config_.unrolledLightSum);
-    for (const unsigned variant : variantsInUse(frame.scene(), frame.gpu()))
-        programs[variant] = &programFor(shading, lights, output, loadShadesGlsl, variant);
+    const std::vector<unsigned> variants = variantsInUse(frame.scene(), frame.gpu());
+    std::vector<Region> regions;
+    bool evaluatesHook = false;
+    for (const auto& [rect, plan] : plans) {
+        Region& region = regions.emplace_back();
+        region.rect = rect;
+        // A shaded image that takes every light's shade from the cache needs none of the hook's
+        // code: leaving it out spares llvmpipe its interpolated inputs and uniforms (measured:
+        // 16.8 -> 15.7 ms for the showcase at 1280x720, whose unshadowed frame takes 14.0).
+        region.evaluatesHook = hook && (!color || plan.evaluatesHook());
+        evaluatesHook = evaluatesHook || region.evaluatesHook;
+        const std::string loadShadesGlsl = plan.glsl();
+        for (const unsigned variant : variants)
+            region.programs[variant] =
+                &programFor(region.evaluatesHook ? &*hook : nullptr, lights, output, loadShadesGlsl, variant);
+    }
+    const LightVisibilityHook* shading = evaluatesHook ? &*hook : nullptr;
     std::vector<float> dimming(kMaxLights, 0.0f);
     if (hook)
         std::copy_n(hook->dimming.begin(), std::min<std::size_t>(hook->dimming.size(), kMaxLights), dimming.begin());
@@ -242,7 +383,6 @@ void LitPass::addPass(Frame& frame, const std::string& name, ResourceHandle targ
     struct Handles { ResourceHandle target, depth; };
     auto handles = std::make_shared<Handles>();
     handles->target = target;
-    const bool color = output == Output::Color;
     const ShadeCache::Plan* shadePlan = color && shadePlan_.layers > 0 ? &shadePlan_ : nullptr;
     frame.graph().addPass(
         name,
@@ -276,16 +416,17 @@ void LitPass::addPass(Frame& frame, const std::string& name, ResourceHandle targ
             state.srgbWrites = color;
             builder.setState(state);
         },
-        [this, &frame, programs, output, maskSlot, shading, shadePlan, dimming](PassContext& context) {
+        [this, &frame, regions, output, maskSlot, shading, shadePlan, dimming](PassContext& context) {
             if (output == Output::Color) uploadLights(frame.scene(), frame.camera());
             if (shadePlan && shadePlan->readArray) glBindTextureUnit(ShadeCache::kTextureUnit, shadePlan->readArray);
-            for (const gl::Program* program : programs) {
-                if (!program) continue;
-                program->set("uMaskLight", maskSlot);
-                program->set("uLightDimming", dimming);
-                if (shading && shading->bind) shading->bind(*program, context);
-            }
-            drawScene(frame, programs, context);
+            for (const Region& region : regions)
+                for (const gl::Program* program : region.programs) {
+                    if (!program) continue;
+                    program->set("uMaskLight", maskSlot);
+                    program->set("uLightDimming", dimming);
+                    if (region.evaluatesHook && shading->bind) shading->bind(*program, context);
+                }
+            drawScene(frame, regions, context);
             if (shadePlan) {
                 glBindTextureUnit(ShadeCache::kTextureUnit, 0);
                 shadeCache_.commit(*shadePlan);

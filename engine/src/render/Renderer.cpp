@@ -156,6 +156,8 @@ FrameResult Renderer::renderFrame(const FrameRequest& request) {
     result.shadowTermProvided = frame.lightVisibility().has_value();
     result.litInstancesCulled = litPass_->culledInstances();
     result.shadeCache = shadeCacheStats(litPass_->shadePlan());
+    result.footprintLimitedLights = litPass_->footprintLimitedLights();
+    result.shadingRegions = litPass_->shadingRegionCount();
     for (RenderPlugin* plugin : plugins_) result.pluginStats[plugin->name()] = plugin->frameStats();
     result.frameMs =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();

@@ -4,7 +4,7 @@
 //   "plugin_dirs": ["relative/or/absolute/dir", ...],     optional; relative to the config
 //   "plugins": [ {"library": "shadowmap_plugin", "settings": {...}} ],
 //   "renderer": {"ambient": [r,g,b], "clear_color": [r,g,b],          optional
-//                "shade_cache": true, "unrolled_light_sum": true,
+//                "shade_cache": true, "light_footprints": true, "unrolled_light_sum": true,
 //                "check_gl_errors": false}
 // }
 // Unknown keys are errors (a typo must not silently change nothing). Where plugins are
@@ -40,6 +40,10 @@ struct RendererConfig {
     // Reuse a light's per-pixel shade while camera, geometry and light are unchanged
     // (ShadeCache.h); off: every frame asks the visibility hook for every pixel.
     bool shadeCache = true;
+    // Look a spot or ranged point light's shadow up only on the part of the screen its light
+    // can reach (LitPass.cpp, ShadingRegions.h); off: on every pixel. Images are the same
+    // either way (its term is zero outside), only the time differs.
+    bool lightFootprints = true;
     // The lit shader sums the lights term by term, each with literal slot and light type;
     // off: one loop over the lights with their types in a constant array. Unrolled is what
     // llvmpipe runs fastest (lit.frag's header has the numbers); a GPU may prefer the loop

@@ -9,6 +9,7 @@
 #include "engine/render/Frame.h"
 #include "engine/render/MaterialShading.h"
 #include "engine/render/ShadeCache.h"
+#include "engine/scene/ScreenFootprint.h"
 
 #include <array>
 #include <compare>
@@ -16,6 +17,8 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace engine {
 
@@ -29,6 +32,11 @@ public:
     int culledInstances() const { return culledInstances_; }
     // Where the last shaded image took each light's shade from (ShadeCache.h).
     const ShadeCache::Plan& shadePlan() const { return shadePlan_; }
+    // The lights whose shadow the last shaded image looked up only inside their screen
+    // footprint (ShadingRegions.h), by slot, and the regions that split its target into (1:
+    // not split).
+    const std::vector<int>& footprintLimitedLights() const { return footprintLimitedLights_; }
+    int shadingRegionCount() const { return shadingRegionCount_; }
     // A new scene: nothing cached is still right.
     void sceneChanged();
 
@@ -51,8 +59,21 @@ private:
                                   Output output, const std::string& loadShadesGlsl, unsigned variant);
     // A pass's programs by material variant; null where no primitive of the scene needs it.
     using Variants = std::array<const gl::Program*, kMaterialFeatureCombinations>;
+    // A rectangle of the target drawn with programs of its own: the shaded image's lights
+    // whose footprint misses it take a constant shade there (ShadingRegions.h).
+    struct Region {
+        PixelRect rect;
+        Variants programs{};
+        bool evaluatesHook = false;  // its programs hold the visibility hook's code
+    };
+    // The shaded image's regions and the shade plan of each: one region, the whole target,
+    // unless some evaluated light's footprint leaves enough of the target out.
+    std::vector<std::pair<PixelRect, ShadeCache::Plan>> footprintRegions(const Frame& frame);
     void uploadLights(const Scene& scene, const FrameCamera& camera);
-    void drawScene(const Frame& frame, const Variants& programs, PassContext& context);
+    void drawScene(const Frame& frame, const std::vector<Region>& regions, PassContext& context);
+    // One mesh instance's primitives with `programs`; `current` is the program in use.
+    void drawInstance(const Frame& frame, int index, const glm::dmat4& view, const Variants& programs,
+                      const gl::Program*& current, PassContext& context);
 
     // What a lit program is compiled from, without its text: the hook by owner and version
     // (Frame.h), the light and shade-cache defines (a few lines), output and variant.
@@ -72,6 +93,8 @@ private:
     int culledInstances_ = 0;
     ShadeCache shadeCache_;
     ShadeCache::Plan shadePlan_;  // of this frame's shaded image
+    std::vector<int> footprintLimitedLights_;
+    int shadingRegionCount_ = 1;
     std::uint64_t sceneGeneration_ = 0;
 };
 

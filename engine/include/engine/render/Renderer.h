@@ -50,6 +50,10 @@ struct FrameResult {
     // "fetched" (reused), "computed" (recomputed and cached), "moving" (recomputed, not
     // stored: changed two frames running), "uncached", "constant"}.
     nlohmann::json shadeCache = nlohmann::json::object();
+    // The lights (slots) whose shadow the shaded image looked up only inside their screen
+    // footprint, and the regions that split the lit pass into (1: not split).
+    std::vector<int> footprintLimitedLights;
+    int shadingRegions = 1;
     std::map<int, DepthReadback> shadowMaps;  // by light slot (FrameRequest::shadowMapSlots)
     // Every light instance's shadow as the shadow plugin published it (ShadowView.h), by slot.
     std::vector<ShadowView> shadowViews;
