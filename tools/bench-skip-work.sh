@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# What skipping work buys (cached maps, culling, shade cache). For the showcase and
-# Debian's 2CylinderEngine.glb (one spot key light), at 1280x720 with 2048 maps, in one
+# What skipping work buys (cached maps, culling, shade cache, light footprints). For the
+# showcase, the lamps scene (four narrow lamps: lookups limited to each lamp's footprint)
+# and Debian's 2CylinderEngine.glb (one spot key light), at 1280x720 with 2048 maps, in one
 # run: the median frame time with no shadows, with a static light (its map cached; with a
 # still camera the lit pass also reuses every light's shade), with an orbiting light (its
 # map and shade redone every frame), and the same with the camera orbiting (maps cached,
@@ -46,6 +47,7 @@ echo "                 ---------------- still camera ---------------------------
 printf "%-16s %8s %8s %8s %8s %8s %12s | %8s %8s %8s\n" scene none static orbiting depth \
   static/none "orbit/(n+d)" none static static/none
 row showcase content/scenes/showcase.gltf spot_light
+row lamps content/scenes/lamps.gltf lamp_0
 if [ -f "$engine_glb" ]; then
   row 2CylinderEngine "$engine_glb" key_light --key-light spot
 else
