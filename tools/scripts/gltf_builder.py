@@ -8,6 +8,7 @@ here (png_rgba) and embedded as data URIs.
 import base64
 import json
 import math
+import os
 import struct
 import zlib
 
@@ -15,6 +16,15 @@ import zlib
 NEAREST, LINEAR = 9728, 9729
 LINEAR_MIPMAP_LINEAR = 9987
 CLAMP_TO_EDGE, REPEAT = 33071, 10497
+
+
+# Where the generators write unless given a directory: the repository's content/scenes.
+CONTENT_SCENES = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "content", "scenes")
+
+
+def output_dir(argv):
+    """The directory a generator writes into: its first argument, else content/scenes."""
+    return argv[1] if len(argv) > 1 else CONTENT_SCENES
 
 
 def normalize(v):

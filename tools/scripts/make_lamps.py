@@ -10,11 +10,11 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(__file__))
-from gltf_builder import GltfBuilder, box, icosphere  # noqa: E402
+from gltf_builder import GltfBuilder, output_dir, box, icosphere  # noqa: E402
 
 
 def main():
-    out_dir = sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file__), "..", "..", "content", "scenes")
+    out_dir = output_dir(sys.argv)
     g = GltfBuilder()
     stone = g.material("stone", (0.6, 0.6, 0.58), roughness=0.85)
     brick = g.material("brick", (0.65, 0.3, 0.2), roughness=0.7)

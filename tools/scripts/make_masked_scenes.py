@@ -38,9 +38,8 @@ import sys
 
 sys.path.insert(0, os.path.dirname(__file__))
 from gltf_builder import (CLAMP_TO_EDGE, LINEAR, LINEAR_MIPMAP_LINEAR, GltfBuilder, box,  # noqa: E402
-                          png_rgba)
+                          output_dir, png_rgba)
 
-OUT_DIR = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "content", "scenes")
 SAMPLER = {"magFilter": LINEAR, "minFilter": LINEAR_MIPMAP_LINEAR, "wrapS": CLAMP_TO_EDGE, "wrapT": CLAMP_TO_EDGE}
 ALPHA_CUTOFF = 0.5
 # Shadow settings every light starts with (the bench and --light override them).
@@ -307,7 +306,7 @@ def canopy_scene(masked):
 
 def main():
     # An optional output directory (the validation test writes to a scratch one).
-    out_dir = sys.argv[1] if len(sys.argv) > 1 else OUT_DIR
+    out_dir = output_dir(sys.argv)
     for name, builder in [("masked_fence", fence_scene(True)), ("opaque_fence", fence_scene(False)),
                           ("masked_canopy", canopy_scene(True)), ("opaque_canopy", canopy_scene(False))]:
         builder.write(os.path.join(out_dir, name + ".gltf"), name + ".bin")

@@ -11,12 +11,12 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(__file__))
-from gltf_builder import GltfBuilder, box, icosphere, quad, torus  # noqa: E402
+from gltf_builder import GltfBuilder, output_dir, box, icosphere, quad, torus  # noqa: E402
 
 
 def main():
     # An optional output directory (the validation test writes to a scratch one).
-    out_dir = sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file__), "..", "..", "content", "scenes")
+    out_dir = output_dir(sys.argv)
     g = GltfBuilder()
     floor_mat = g.material("floor", (0.75, 0.75, 0.72), roughness=0.9)
     red = g.material("red", (0.8, 0.15, 0.1), roughness=0.4)
