@@ -136,6 +136,68 @@ bool evaluatedUnstored(const ShadeCache::Plan& plan, int slot) {
     return source == ShadeCache::Source::Moving && (plan.writeArray == 0 || plan.channels[slot] < 0);
 }
 
+// The meshes the camera may see, for the footprints: their bounds (what a light can light),
+// their footprints and triangles (what drawing one in one more region costs), and a rect
+// holding every pixel they may cover.
+struct VisibleMeshes {
+    std::vector<Aabb> bounds;
+    std::vector<PixelRect> footprints;
+    std::vector<std::int64_t> triangles;
+    PixelRect covered;
+};
+
+VisibleMeshes visibleMeshes(const Frame& frame, const glm::dmat4& viewProjection) {
+    VisibleMeshes meshes;
+    for (const MeshInstance& instance : frame.scene().meshInstances) {
+        if (!boxIntersectsFrustum(viewProjection, instance.worldBounds)) continue;
+        meshes.bounds.push_back(instance.worldBounds);
+        meshes.footprints.push_back(
+            projectedFootprint(viewProjection, instance.worldBounds, frame.camera().width, frame.camera().height));
+        meshes.covered = enclosing(meshes.covered, meshes.footprints.back());
+        std::int64_t triangles = 0;
+        for (const SceneGpu::Primitive& primitive : frame.gpu().primitives(instance)) triangles += primitive.indexCount / 3;
+        meshes.triangles.push_back(triangles);
+    }
+    return meshes;
+}
+
+// A light whose lookups a footprint could spare on `sparedPixels` of the covered rect.
+struct LimitCandidate {
+    int slot;
+    PixelRect footprint;
+    std::int64_t sparedPixels;
+};
+
+// The candidates that join the split, most pixels spared first, while it stays within
+// kMaxRegions and spares more lookups than the meshes it draws more than once cost; `split`
+// receives their regions (bit i of a region's set: the i-th light returned).
+std::vector<LimitCandidate> lightsWorthLimiting(std::vector<LimitCandidate> candidates, const VisibleMeshes& meshes,
+                                                int width, int height, std::vector<ShadingRegion>& split) {
+    std::stable_sort(candidates.begin(), candidates.end(),
+                     [](const LimitCandidate& a, const LimitCandidate& b) { return a.sparedPixels > b.sparedPixels; });
+    std::vector<LimitCandidate> limited;
+    std::int64_t spared = 0;
+    for (const LimitCandidate& candidate : candidates) {
+        std::vector<PixelRect> footprints;
+        for (const LimitCandidate& light : limited) footprints.push_back(light.footprint);
+        footprints.push_back(candidate.footprint);
+        std::vector<ShadingRegion> trial = splitByFootprints(footprints, width, height);
+        if (trial.size() > kMaxRegions) continue;
+        std::int64_t redrawnTriangles = 0;
+        for (std::size_t i = 0; i < meshes.footprints.size(); ++i) {
+            const auto touched = std::count_if(trial.begin(), trial.end(), [&](const ShadingRegion& region) {
+                return region.rect.intersects(meshes.footprints[i]);
+            });
+            redrawnTriangles += std::max<std::int64_t>(touched - 1, 0) * meshes.triangles[i];
+        }
+        if (double(spared + candidate.sparedPixels) <= double(redrawnTriangles) * kPixelsPerRedrawnTriangle) continue;
+        spared += candidate.sparedPixels;
+        limited.push_back(candidate);
+        split = std::move(trial);
+    }
+    return limited;
+}
+
 } // namespace
 
 LitPass::LitPass(const RendererConfig& config)
@@ -193,67 +255,25 @@ void LitPass::uploadLights(const Scene& scene, const FrameCamera& camera) {
 
 std::vector<std::pair<PixelRect, ShadeCache::Plan>> LitPass::footprintRegions(const Frame& frame) {
     const FrameCamera& camera = frame.camera();
-    const PixelRect target = PixelRect::target(camera.width, camera.height);
-    std::vector<std::pair<PixelRect, ShadeCache::Plan>> regions{{target, shadePlan_}};
+    std::vector<std::pair<PixelRect, ShadeCache::Plan>> regions{
+        {PixelRect::target(camera.width, camera.height), shadePlan_}};
     footprintLimitedLights_.clear();
     shadingRegionCount_ = 1;
     if (!config_.lightFootprints) return regions;
     const Scene& scene = frame.scene();
     const glm::dmat4 viewProjection = camera.projection * glm::inverse(camera.eyeToWorld);
-    // What a light can light on screen: the meshes the camera may see, each with its
-    // footprint and triangles (what drawing it in one more region costs).
-    std::vector<Aabb> receivers;
-    std::vector<PixelRect> receiverFootprints;
-    std::vector<std::int64_t> receiverTriangles;
-    PixelRect covered;  // holds every pixel a mesh may cover
-    for (const MeshInstance& instance : scene.meshInstances) {
-        if (!boxIntersectsFrustum(viewProjection, instance.worldBounds)) continue;
-        receivers.push_back(instance.worldBounds);
-        receiverFootprints.push_back(projectedFootprint(viewProjection, instance.worldBounds, camera.width, camera.height));
-        covered = enclosing(covered, receiverFootprints.back());
-        std::int64_t triangles = 0;
-        for (const SceneGpu::Primitive& primitive : frame.gpu().primitives(instance)) triangles += primitive.indexCount / 3;
-        receiverTriangles.push_back(triangles);
-    }
-    struct Candidate {
-        int slot;
-        PixelRect footprint;
-        std::int64_t sparedPixels;  // of `covered`, outside the footprint
-    };
-    std::vector<Candidate> candidates;
+    const VisibleMeshes meshes = visibleMeshes(frame, viewProjection);
+    std::vector<LimitCandidate> candidates;
     for (int slot = 0; slot < static_cast<int>(shadePlan_.sources.size()); ++slot) {
         if (!evaluatedUnstored(shadePlan_, slot)) continue;
         const LightInstance& placed = scene.lightInstances[slot];
-        const PixelRect footprint =
-            lightFootprint(scene.lights[placed.light], placed, receivers, viewProjection, camera.width, camera.height);
-        const std::int64_t spared = covered.area() - intersection(covered, footprint).area();
+        const PixelRect footprint = lightFootprint(scene.lights[placed.light], placed, meshes.bounds, viewProjection,
+                                                   camera.width, camera.height);
+        const std::int64_t spared = meshes.covered.area() - intersection(meshes.covered, footprint).area();
         if (spared > 0) candidates.push_back({slot, footprint, spared});
     }
-    std::stable_sort(candidates.begin(), candidates.end(),
-                     [](const Candidate& a, const Candidate& b) { return a.sparedPixels > b.sparedPixels; });
-    // Lights join the split, most pixels spared first, while the split stays small and
-    // spares more lookups than the meshes it draws more than once cost.
-    std::vector<Candidate> limited;
     std::vector<ShadingRegion> split;
-    std::int64_t spared = 0;
-    for (const Candidate& candidate : candidates) {
-        std::vector<PixelRect> footprints;
-        for (const Candidate& light : limited) footprints.push_back(light.footprint);
-        footprints.push_back(candidate.footprint);
-        std::vector<ShadingRegion> trial = splitByFootprints(footprints, camera.width, camera.height);
-        if (trial.size() > kMaxRegions) continue;
-        std::int64_t redrawnTriangles = 0;
-        for (std::size_t i = 0; i < receiverFootprints.size(); ++i) {
-            const auto touched = std::count_if(trial.begin(), trial.end(), [&](const ShadingRegion& region) {
-                return region.rect.intersects(receiverFootprints[i]);
-            });
-            redrawnTriangles += std::max<std::int64_t>(touched - 1, 0) * receiverTriangles[i];
-        }
-        if (double(spared + candidate.sparedPixels) <= double(redrawnTriangles) * kPixelsPerRedrawnTriangle) continue;
-        spared += candidate.sparedPixels;
-        limited.push_back(candidate);
-        split = std::move(trial);
-    }
+    const std::vector<LimitCandidate> limited = lightsWorthLimiting(candidates, meshes, camera.width, camera.height, split);
     if (limited.empty()) return regions;
     regions.clear();
     for (const ShadingRegion& region : split) {
@@ -265,7 +285,7 @@ std::vector<std::pair<PixelRect, ShadeCache::Plan>> LitPass::footprintRegions(co
             }
         regions.emplace_back(region.rect, std::move(plan));
     }
-    for (const Candidate& light : limited) footprintLimitedLights_.push_back(light.slot);
+    for (const LimitCandidate& light : limited) footprintLimitedLights_.push_back(light.slot);
     std::sort(footprintLimitedLights_.begin(), footprintLimitedLights_.end());
     shadingRegionCount_ = static_cast<int>(regions.size());
     return regions;
