@@ -59,27 +59,100 @@ ConvexPolyhedron clipByPlane(const ConvexPolyhedron& solid, const glm::dvec3& no
         centre /= double(cut.size());
         glm::dvec3 u, v;
         perpendicularBasis(glm::normalize(normal), u, v);
-        std::sort(cut.begin(), cut.end(), [&](const glm::dvec3& p, const glm::dvec3& q) {
-            return std::atan2(glm::dot(p - centre, v), glm::dot(p - centre, u)) <
-                   std::atan2(glm::dot(q - centre, v), glm::dot(q - centre, u));
-        });
+        // Each angle once (atan2 inside the comparison was most of a footprint's time).
+        std::vector<std::pair<double, glm::dvec3>> around;
+        around.reserve(cut.size());
+        for (const glm::dvec3& point : cut)
+            around.emplace_back(std::atan2(glm::dot(point - centre, v), glm::dot(point - centre, u)), point);
+        std::sort(around.begin(), around.end(),
+                  [](const auto& a, const auto& b) { return a.first < b.first; });
+        for (std::size_t i = 0; i < around.size(); ++i) cut[i] = around[i].second;
         clipped.faces.push_back(std::move(cut));
     }
     return clipped;
 }
 
-// The corners of `solid` inside `box` (none if they do not meet).
-std::vector<glm::dvec3> clipToBox(ConvexPolyhedron solid, const Aabb& box) {
+// The corners of `solid` (whose corners `solidBounds` bounds) inside `box`; none if they do
+// not meet. Only the box's faces that cut the solid's bounds clip: most receivers of a
+// light lie wholly outside its cone's bounds or hold it whole along some axis.
+std::vector<glm::dvec3> clipToBox(ConvexPolyhedron solid, const Aabb& solidBounds, const Aabb& box) {
+    for (int axis = 0; axis < 3; ++axis)
+        if (solidBounds.max[axis] < box.min[axis] || solidBounds.min[axis] > box.max[axis]) return {};
     for (int axis = 0; axis < 3; ++axis) {
         glm::dvec3 normal(0.0);
         normal[axis] = 1.0;
-        solid = clipByPlane(solid, normal, -box.min[axis]);
-        solid = clipByPlane(solid, -normal, box.max[axis]);
+        if (solidBounds.min[axis] < box.min[axis]) solid = clipByPlane(solid, normal, -box.min[axis]);
+        if (solidBounds.max[axis] > box.max[axis]) solid = clipByPlane(solid, -normal, box.max[axis]);
     }
     std::vector<glm::dvec3> corners;
     for (const std::vector<glm::dvec3>& face : solid.faces) corners.insert(corners.end(), face.begin(), face.end());
     return corners;
 }
+
+Aabb intersectionOf(const Aabb& a, const Aabb& b) { return Aabb{glm::max(a.min, b.min), glm::min(a.max, b.max)}; }
+
+// A spot light's cone held in a square pyramid cut at some length, and the pyramid's bounds.
+struct Cone {
+    ConvexPolyhedron pyramid;
+    Aabb bounds;
+
+    // How `box` lies against the pyramid, by its faces' planes: wholly outside one (the cheap
+    // test that spares most receivers of a narrow cone the clip), wholly inside all (the
+    // clip would return the box: most receivers of a key light), or cut.
+    enum class Overlap { Outside, Inside, Cut };
+    Overlap overlap(const Aabb& box) const {
+        const glm::dvec3 centre = (bounds.min + bounds.max) * 0.5;  // inside: the pyramid is convex
+        bool inside = true;
+        for (const std::vector<glm::dvec3>& face : pyramid.faces) {
+            glm::dvec3 outward = glm::cross(face[1] - face[0], face[2] - face[0]);
+            if (glm::dot(outward, centre - face[0]) > 0.0) outward = -outward;
+            int outsideCorners = 0;
+            for (int i = 0; i < 8; ++i) outsideCorners += glm::dot(outward, box.corner(i) - face[0]) > 0.0;
+            if (outsideCorners == 8) return Overlap::Outside;
+            inside = inside && outsideCorners == 0;
+        }
+        return inside ? Overlap::Inside : Overlap::Cut;
+    }
+};
+
+// The pyramids around one spot light's cone: apex a little behind the light, base at
+// `length` along the axis with half side length * tan(half angle). Whatever the apex's
+// offset, a pyramid's cross-section holds the cone's at every distance up to `length`.
+class ConePyramids {
+public:
+    ConePyramids(const LightInstance& placed, double halfAngle)
+        : position_(placed.position()), axis_(placed.direction()), tangent_(std::tan(halfAngle)) {
+        perpendicularBasis(axis_, u_, v_);
+    }
+    // How far the cone can light `box`: to its farthest corner, at most `range` (0: no
+    // limit), with the margin.
+    double reach(const Aabb& box, double range) const {
+        double length = 0.0;
+        for (int i = 0; i < 8; ++i) length = std::max(length, glm::length(box.corner(i) - position_));
+        if (range > 0.0) length = std::min(length, range);
+        return length * (1.0 + kVolumeMargin);
+    }
+    Cone cutAt(double length) const {
+        const double halfSide = length * tangent_;
+        const glm::dvec3 apex = position_ - axis_ * (length * kVolumeMargin);
+        const glm::dvec3 base = position_ + axis_ * length;
+        const std::array<glm::dvec3, 4> corners = {base + (u_ + v_) * halfSide, base + (u_ - v_) * halfSide,
+                                                   base - (u_ + v_) * halfSide, base - (u_ - v_) * halfSide};
+        Cone cone{{{{corners[0], corners[1], corners[2], corners[3]},
+                    {apex, corners[1], corners[0]},
+                    {apex, corners[2], corners[1]},
+                    {apex, corners[3], corners[2]},
+                    {apex, corners[0], corners[3]}}},
+                  {}};
+        cone.bounds.extend(apex);
+        for (const glm::dvec3& corner : corners) cone.bounds.extend(corner);
+        return cone;
+    }
+
+private:
+    glm::dvec3 position_, axis_, u_, v_;
+    double tangent_;
+};
 
 }  // namespace
 
@@ -158,31 +231,22 @@ PixelRect lightFootprint(const Light& light, const LightInstance& placed, std::s
     case Light::Type::Spot: {
         const double halfAngle = light.outerConeAngle + kConeAngleMargin;
         if (!(halfAngle < kWidestBoundedCone)) return receivers.empty() ? footprint : whole;
-        const glm::dvec3 axis = placed.direction();
-        glm::dvec3 u, v;
-        perpendicularBasis(axis, u, v);
+        const ConePyramids cone(placed, halfAngle);
         for (const Aabb& receiver : receivers) {
             if (receiver.empty()) continue;
-            // The cone lights nothing of this box farther than its farthest corner.
-            double length = 0.0;
-            for (int i = 0; i < 8; ++i) length = std::max(length, glm::length(receiver.corner(i) - position));
-            if (light.range > 0.0) length = std::min(length, light.range);
-            length *= 1.0 + kVolumeMargin;
-            // A square pyramid around the cone: apex a little behind the light, base at
-            // `length` along the axis with half side length * tan(half angle). Whatever the
-            // apex's offset, the pyramid's cross-section holds the cone's at every distance
-            // up to `length`.
-            const double halfSide = length * std::tan(halfAngle);
-            const glm::dvec3 apex = position - axis * (length * kVolumeMargin);
-            const glm::dvec3 base = position + axis * length;
-            const std::array<glm::dvec3, 4> corners = {base + (u + v) * halfSide, base + (u - v) * halfSide,
-                                                       base - (u + v) * halfSide, base - (u - v) * halfSide};
-            ConvexPolyhedron pyramid{{{corners[0], corners[1], corners[2], corners[3]},
-                                      {apex, corners[1], corners[0]},
-                                      {apex, corners[2], corners[1]},
-                                      {apex, corners[3], corners[2]},
-                                      {apex, corners[0], corners[3]}}};
-            const std::vector<glm::dvec3> inside = clipToBox(std::move(pyramid), receiver);
+            const Cone cut = cone.cutAt(cone.reach(receiver, light.range));
+            const Cone::Overlap overlap = cut.overlap(receiver);
+            if (overlap == Cone::Overlap::Outside) continue;
+            if (overlap == Cone::Overlap::Inside) {
+                footprint = enclosing(footprint, projectedFootprint(viewProjection, receiver, width, height));
+                continue;
+            }
+            // The box's part inside the pyramid's bounds holds the exact part: when the
+            // footprint so far already holds its pixels, the exact clip cannot add any.
+            const Aabb roughlyLit = intersectionOf(cut.bounds, receiver);
+            if (roughlyLit.empty()) continue;
+            if (enclosing(footprint, projectedFootprint(viewProjection, roughlyLit, width, height)) == footprint) continue;
+            const std::vector<glm::dvec3> inside = clipToBox(cut.pyramid, cut.bounds, receiver);
             if (!inside.empty())
                 footprint = enclosing(footprint, projectedFootprint(viewProjection, inside, width, height));
         }
