@@ -90,6 +90,30 @@ TEST(ScreenFootprint, ASpotsFootprintHoldsEveryPixelItLightsAndLittleMore) {
     EXPECT_GT(rect.area(), 0);
 }
 
+TEST(ScreenFootprint, AConeAtAnAngleOverAFloorItCutsAndBoxesItHolds) {
+    // A wide spot at an angle over a large floor: the pyramid around its cone, cut at the
+    // floor's farthest corner, has the centre of its bounds outside it, so a face-by-face
+    // test oriented by that centre found the floor outside the cone and left the floor's lit
+    // pixels out of the footprint (the shade cache's image test caught it). The boxes on the
+    // floor lie wholly inside the cone.
+    const View view;
+    const Light light = spot(0.7);
+    const LightInstance placed = placedLight({5, 7, -4}, {0, 0, 0});
+    const std::vector<Aabb> receivers = {Aabb{{-10, -0.2, -10}, {10, 0, 10}}, Aabb{{-1, 1, -1}, {1, 2, 1}},
+                                         Aabb{{2, 0, -3}, {2.5, 3, -2.5}}};
+    const PixelRect rect = engine::lightFootprint(light, placed, receivers, view.viewProjection(), kWidth, kHeight);
+    const auto inCone = [&](const glm::dvec3& point) {
+        return glm::dot(glm::normalize(point - placed.position()), placed.direction()) > std::cos(light.outerConeAngle);
+    };
+    int visibleLit = 0, allVisibleLit = 0, outside = 0;
+    for (const Aabb& receiver : receivers) {
+        outside += visibleLitOutside(view, receiver, rect, inCone, visibleLit, 50000);
+        allVisibleLit += visibleLit;
+    }
+    EXPECT_EQ(outside, 0);
+    EXPECT_GT(allVisibleLit, 5000) << "the cone meets too little in view: the test proves nothing";
+}
+
 TEST(ScreenFootprint, RangeCutsTheConeAndThePointLightsSphere) {
     const View view;
     const std::vector<Aabb> receivers = {Aabb{{-10, -0.2, -10}, {10, 0, 10}}};

@@ -95,17 +95,18 @@ Aabb intersectionOf(const Aabb& a, const Aabb& b) { return Aabb{glm::max(a.min, 
 struct Cone {
     ConvexPolyhedron pyramid;
     Aabb bounds;
+    glm::dvec3 interior;  // the corners' centroid: inside, as the pyramid is convex (the
+                          // centre of its bounds need not be)
 
     // How `box` lies against the pyramid, by its faces' planes: wholly outside one (the cheap
     // test that spares most receivers of a narrow cone the clip), wholly inside all (the
     // clip would return the box: most receivers of a key light), or cut.
     enum class Overlap { Outside, Inside, Cut };
     Overlap overlap(const Aabb& box) const {
-        const glm::dvec3 centre = (bounds.min + bounds.max) * 0.5;  // inside: the pyramid is convex
         bool inside = true;
         for (const std::vector<glm::dvec3>& face : pyramid.faces) {
             glm::dvec3 outward = glm::cross(face[1] - face[0], face[2] - face[0]);
-            if (glm::dot(outward, centre - face[0]) > 0.0) outward = -outward;
+            if (glm::dot(outward, interior - face[0]) > 0.0) outward = -outward;
             int outsideCorners = 0;
             for (int i = 0; i < 8; ++i) outsideCorners += glm::dot(outward, box.corner(i) - face[0]) > 0.0;
             if (outsideCorners == 8) return Overlap::Outside;
@@ -143,7 +144,8 @@ public:
                     {apex, corners[2], corners[1]},
                     {apex, corners[3], corners[2]},
                     {apex, corners[0], corners[3]}}},
-                  {}};
+                  {},
+                  (apex + corners[0] + corners[1] + corners[2] + corners[3]) / 5.0};
         cone.bounds.extend(apex);
         for (const glm::dvec3& corner : corners) cone.bounds.extend(corner);
         return cone;
