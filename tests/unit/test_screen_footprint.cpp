@@ -114,6 +114,45 @@ TEST(ScreenFootprint, AConeAtAnAngleOverAFloorItCutsAndBoxesItHolds) {
     EXPECT_GT(allVisibleLit, 5000) << "the cone meets too little in view: the test proves nothing";
 }
 
+TEST(ScreenFootprint, RandomLightsBoxesAndCamerasNeverLeaveALitPixelOut) {
+    // 300 seeded random scenes: 2-6 boxes of every shape, a spot (cone 0.05-1.3 rad, ranged
+    // or not) or a ranged point light anywhere, a camera above or among the boxes looking at
+    // one; every sampled lit point the camera sees must be inside the footprint.
+    std::mt19937 random(20261203);
+    std::uniform_real_distribution<double> coordinate(-8.0, 8.0), size(0.1, 6.0), unit(0.0, 1.0);
+    int visibleLitTotal = 0;
+    for (int scene = 0; scene < 300; ++scene) {
+        std::vector<Aabb> receivers;
+        const int boxes = 2 + scene % 5;
+        for (int i = 0; i < boxes; ++i) {
+            const glm::dvec3 corner(coordinate(random), coordinate(random) * 0.3, coordinate(random));
+            receivers.push_back({corner, corner + glm::dvec3(size(random), size(random) * 0.5, size(random))});
+        }
+        View view;
+        // Every other camera stands low among the boxes, so some reach behind it.
+        const glm::dvec3 eye = scene % 2 ? glm::dvec3(coordinate(random), 0.3 + unit(random) * 2.0, coordinate(random))
+                                         : glm::dvec3(coordinate(random) * 2.0, 2.0 + unit(random) * 12.0, coordinate(random) * 2.0);
+        view.camera = engine::test::cameraLooking(eye, receivers[0].center(), kWidth, kHeight);
+        const glm::dvec3 position(coordinate(random), unit(random) * 10.0, coordinate(random));
+        const LightInstance placed = placedLight(position, receivers[scene % boxes].center());
+        Light light = scene % 3 == 0 ? Light{} : spot(0.05 + 1.25 * unit(random), unit(random) < 0.5 ? 0.0 : 3.0 + 10.0 * unit(random));
+        if (scene % 3 == 0) light.range = 2.0 + 8.0 * unit(random);  // Light{}: a point light
+        const PixelRect rect = engine::lightFootprint(light, placed, receivers, view.viewProjection(), kWidth, kHeight);
+        const auto lit = [&](const glm::dvec3& point) {
+            const glm::dvec3 toPoint = point - placed.position();
+            if (light.range > 0.0 && glm::length(toPoint) >= light.range) return false;
+            return light.type == Light::Type::Point ||
+                   glm::dot(glm::normalize(toPoint), placed.direction()) > std::cos(light.outerConeAngle);
+        };
+        for (const Aabb& receiver : receivers) {
+            int visibleLit = 0;
+            ASSERT_EQ(visibleLitOutside(view, receiver, rect, lit, visibleLit, 400), 0) << "scene " << scene;
+            visibleLitTotal += visibleLit;
+        }
+    }
+    EXPECT_GT(visibleLitTotal, 20000) << "too few lit points in view: the test proves little";
+}
+
 TEST(ScreenFootprint, RangeCutsTheConeAndThePointLightsSphere) {
     const View view;
     const std::vector<Aabb> receivers = {Aabb{{-10, -0.2, -10}, {10, 0, 10}}};
