@@ -225,7 +225,7 @@ PixelRect lightFootprint(const Light& light, const LightInstance& placed, std::s
         if (!(light.range > 0.0)) return receivers.empty() ? footprint : whole;
         const glm::dvec3 reach(light.range * (1.0 + kVolumeMargin));
         for (const Aabb& receiver : receivers) {
-            const Aabb lit{glm::max(receiver.min, position - reach), glm::min(receiver.max, position + reach)};
+            const Aabb lit = intersectionOf(receiver, Aabb{position - reach, position + reach});
             footprint = enclosing(footprint, projectedFootprint(viewProjection, lit, width, height));
         }
         return footprint;
