@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <fstream>
 #include <regex>
+#include <vector>
 
 namespace {
 
@@ -399,26 +400,44 @@ TEST_F(EngineRenderShadows, EveryVariantStaysWithinItsErrorBoundAt2048) {
 }
 
 // cascades 1 is the one fitted map the plugin drew before cascades existed, and on the
-// showcase the default (auto) chooses it: the showcase renders to the very bytes of the
-// reference image made then (see tests/shadowmap/data/README.md), with the setting left out
-// and with it given.
-TEST_F(EngineRenderShadows, OneCascadeRendersTheShowcaseAsBeforeCascades) {
-    int width = 0, height = 0;
-    const auto reference =
-        engine::readPng(fs::path(SHADOWMAP_TEST_DATA_DIR) / "showcase_160x90_one_map.png", 4, width, height);
-    ASSERT_EQ(reference.size(), 160u * 90u * 4u);
-    for (const std::string setting : {"", " --light-set sun.cascades=1"}) {
+// showcase the default (auto) chooses it: both render the very same bytes, made in one run
+// on one CPU, so the guard holds on any machine. (A stored image cannot be this guard across
+// CPUs: an Intel Xeon's llvmpipe rendered 436 of its 57,600 bytes differently from the AMD
+// machine that stored it, while real changes of the sun's map -- 2 cascades, or 2040 texels
+// instead of 2048 -- changed only 90 and 55 bytes at this size.) What the one map should
+// render is the truth's to say: the sun's error at 160x90 measured 0.077 % of 9,578 evaluated
+// pixels (one pixel is 0.010 %); the bound, 0.15 %, leaves seven pixels of margin.
+TEST_F(EngineRenderShadows, OneCascadeIsTheMapTheDefaultChoosesOnTheShowcase) {
+    std::vector<unsigned char> images[2];
+    const std::string settings[2] = {"", " --light-set sun.cascades=1"};
+    for (int i = 0; i < 2; ++i) {
+        const fs::path stats = dir_ / ("stats" + std::to_string(i) + ".json");
         const CommandResult result =
             runEngineRender("--config " + std::string(CONTENT_DIR) + "/engine.json --scene " + CONTENT_DIR +
                             "/scenes/showcase.gltf --out " + (dir_ / "out.png").string() +
-                            " --width 160 --height 90 --warmup 0" + setting);
+                            " --width 160 --height 90 --warmup 0 --truth --stats " + stats.string() + settings[i]);
         ASSERT_EQ(result.exitCode, 0) << result.output;
-        const auto image = engine::readPng(dir_ / "out.png", 4, width, height);
-        std::size_t differing = 0;
-        for (std::size_t i = 0; i < image.size() && i < reference.size(); ++i) differing += image[i] != reference[i];
-        EXPECT_EQ(image.size(), reference.size()) << setting;
-        EXPECT_EQ(differing, 0u) << "bytes differing from the one-map reference" << setting;
+        int width = 0, height = 0;
+        images[i] = engine::readPng(dir_ / "out.png", 4, width, height);
+        ASSERT_EQ(images[i].size(), 160u * 90u * 4u);
+        std::ifstream in(stats);
+        const nlohmann::json all = nlohmann::json::parse(in);
+        bool sunSeen = false;
+        for (const auto& entry : all["lights"]) {
+            if (entry["light"] != "sun") continue;
+            sunSeen = true;
+            EXPECT_GT(entry["evaluated_pixels"].get<int>(), 9000) << entry;
+            EXPECT_LE(entry["error"].get<double>(), 0.15) << settings[i] << " " << entry;
+        }
+        EXPECT_TRUE(sunSeen) << all.dump();
+        for (const auto& entry : all["plugins"]["shadowmap_plugin"]["lights"]) {
+            if (entry["light"] != "sun") continue;
+            EXPECT_EQ(entry["map"], "2d") << settings[i] << " " << entry;
+        }
     }
+    std::size_t differing = 0;
+    for (std::size_t i = 0; i < images[0].size(); ++i) differing += images[0][i] != images[1][i];
+    EXPECT_EQ(differing, 0u) << "bytes differing between the default (auto) and cascades 1";
 }
 
 // woo with an explicit polygon_offset: both of its passes take the offset, so the peel still
