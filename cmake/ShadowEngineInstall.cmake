@@ -1,5 +1,5 @@
 # `cmake --install`, find_package(ShadowEngine), pkg-config shadow-engine and `cpack -G DEB`.
-# The layout is in cmake/InstallLayout.cmake; the README's "Installing" section is the
+# The layout is in cmake/InstallLayout.cmake; docs/installing.md is the
 # user's view of both.
 include(CMakePackageConfigHelpers)
 

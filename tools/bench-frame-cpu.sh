@@ -2,7 +2,7 @@
 # Where a frame's CPU time goes on llvmpipe: the application thread (draw calls, vertex work,
 # binning) and each of llvmpipe's rasterizer threads (fragment work), in ms of CPU per frame.
 # On N cores no arrangement of the same work over contexts and threads can make a frame
-# shorter than (sum of all threads) / N: the README's "Where a moving frame's time goes"
+# shorter than (sum of all threads) / N: docs/caching.md's "Where a moving frame's time goes"
 # uses this to show what a speed target is up against.
 # Method: perf samples per thread (cpu-clock, 1999 Hz) of two runs, FEW and MANY timed
 # frames; the difference over MANY - FEW frames removes start-up, loading and warm-up.

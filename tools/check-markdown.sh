@@ -8,7 +8,11 @@
 #    the end of the file) and every fence after it pairs up wrongly;
 #  - no fenced code block holds a line that starts like a fence of its own kind (the
 #    "``` text" that the author meant as a closing fence);
-#  - every link or image to a relative path names a file that exists (beside FILE.md).
+#  - every link or image to a relative path names a file that exists (beside FILE.md);
+#  - every link with a fragment to a Markdown file ("other.md#a-heading", or "#a-heading"
+#    within FILE.md) names a heading there by its GitHub-style anchor: the heading's text
+#    lowercased, punctuation dropped but for '-' and '_', spaces turned into '-'; a repeated
+#    anchor gets -1, -2, ... in order (see heading_anchors below).
 # A "#" heading (level 1) is not required: shell comments in code blocks start that way.
 # Usage: tools/check-markdown.sh FILE.md...   (exit 0: all render right; 1: one line per problem)
 set -euo pipefail
@@ -16,6 +20,26 @@ set -euo pipefail
 
 [ $# -gt 0 ] || { echo "usage: check-markdown.sh FILE.md..."; exit 1; }
 command -v cmark > /dev/null || { echo "check-markdown: cmark not found (tools/install-deps.sh installs it)"; exit 1; }
+
+# The anchors GitHub gives FILE's headings, one a line, in order (github-slugger's rules): the
+# heading's rendered text (cmark's HTML, tags and entities dropped), lowercased (ASCII),
+# ASCII punctuation other than '-' and '_' dropped, and the common non-ASCII punctuation and
+# symbols too (letters and digits of any script stay), each space turned into '-'; an anchor
+# seen before gets -1, -2, ... (the first suffix that is free).
+heading_anchors() {
+    cmark --to html "$1" |
+        sed -n 's/^<h[1-6][^>]*>\(.*\)<\/h[1-6]>$/\1/p' |
+        sed 's/<[^>]*>//g; s/&[A-Za-z][A-Za-z]*;//g; s/&#[0-9][0-9]*;//g; s/&#[xX][0-9A-Fa-f][0-9A-Fa-f]*;//g' |
+        LC_ALL=C sed 's/[][!"#$%&'"'"'()*+,./:;<=>?@\\^`{|}~]//g' |
+        sed 's/—//g; s/–//g; s/‘//g; s/’//g; s/“//g; s/”//g; s/…//g; s/×//g; s/·//g; s/→//g; s/≤//g; s/≥//g; s/±//g; s/°//g; s/²//g' |
+        LC_ALL=C tr 'A-Z ' 'a-z-' |
+        awk '{
+            slug = $0; base = slug
+            while (slug in seen) { seen[base]++; slug = base "-" seen[base] }
+            seen[slug] = 0
+            print slug
+        }'
+}
 
 # Prints one line per problem of one file; fails when there is any.
 check_file() {
@@ -60,15 +84,26 @@ check_file() {
         exit problems > 0
     }' "$file" || problems=1
     # Links and images: what cmark parsed as such, so code blocks and spans do not count.
-    local target
+    local target path fragment
     while IFS= read -r target; do
-        case $target in *://*|mailto:*|\#*) continue ;; esac
-        target=${target%%#*}
-        [ -e "$(dirname "$file")/$target" ] || { echo "$file: link to \"$target\", which does not exist"; problems=1; }
+        case $target in *://*|mailto:*) continue ;; esac
+        path=${target%%#*}
+        if [ -n "$path" ]; then
+            [ -e "$(dirname "$file")/$path" ] || { echo "$file: link to \"$path\", which does not exist"; problems=1; continue; }
+        fi
+        case $target in *'#'*) fragment=${target#*#} ;; *) continue ;; esac
+        # Fragments are checked in Markdown files only (a source file's #L12 is GitHub's).
+        if [ -z "$path" ]; then path=$file; else path=$(dirname "$file")/$path; fi
+        case $path in *.md) ;; *) continue ;; esac
+        [ -f "$path" ] || continue
+        [ -n "${anchors_of[$path]+set}" ] || anchors_of[$path]=$(heading_anchors "$path")
+        grep -qxF -- "$fragment" <<< "${anchors_of[$path]}" ||
+            { echo "$file: link to \"$target\": $path has no heading with the anchor \"#$fragment\""; problems=1; }
     done < <(cmark --to xml "$file" | grep -o '<\(link\|image\) destination="[^"]*"' | sed 's/.*destination="//; s/"$//')
     return $problems
 }
 
+declare -A anchors_of  # each linked file's anchors, worked out once
 status=0
 for file in "$@"; do check_file "$file" || status=1; done
 exit $status

@@ -9,12 +9,12 @@ packages=(
   libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri
   libembree-dev libgtest-dev libgmock-dev libbenchmark-dev
   gnuplot-nox assimp-testmodels xvfb xauth
-  # GNU parallel runs shadowmap-bench's shards side by side (README, "Sharded sweeps").
+  # GNU parallel runs shadowmap-bench's shards side by side (docs/tuning.md, "Sharded sweeps").
   parallel
   # The scene generators (tools/scripts/*.py) and tools/engine-view/test/settings_round_trip.sh
   # run python3, which a minimal Debian 12 lacks.
   python3
-  # tools/check-markdown.sh (CTest Readme.*) renders the README with CommonMark's reference
+  # tools/check-markdown.sh (CTest Readme.*) renders the README and docs/ with CommonMark's reference
   # implementation.
   cmark
   # glTF loader fuzzing (tools/fuzz/run.sh): clang, and libFuzzer's runtime

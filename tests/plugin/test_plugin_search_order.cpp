@@ -1,5 +1,5 @@
 // Where the plugin host looks for plugins and where programs find the default config
-// (README "Installing"): the config's plugin_dirs, then ENGINE_PLUGIN_PATH, then the install's
+// (docs/installing.md): the config's plugin_dirs, then ENGINE_PLUGIN_PATH, then the install's
 // plugin folder beside libengine, then the build tree's. The winner is told apart by the
 // plugin's own name: a copy of the "marker" fixture renamed shadowmap_plugin.so shadows the
 // real shadow plugin of the build tree only when its folder comes first.

@@ -3,8 +3,8 @@
 // shorthand --light NAME=VARIANT): parsed, resolved to the scene's light instances, handed
 // to the plugins, and the warning for a --set that a light's own settings make do nothing.
 //
-// Where a light's setting comes from, most specific last (README, "Per-light shadow
-// settings"): built-in defaults < the engine config's plugin settings (--set edits them) <
+// Where a light's setting comes from, most specific last (docs/settings.md, "Precedence"):
+// built-in defaults < the engine config's plugin settings (--set edits them) <
 // the light's glTF extras < these per-light options.
 #include "SettingOverrides.h"
 

@@ -12,7 +12,7 @@ const char* const kViewUsage =
     "  [--camera NAME|NUMBER] [--width W --height H]   (initial window size, default 1280x720)\n"
     "  [--script FILE]          (one command per frame: key, select, set, view, camera, orbit,\n"
     "                            pan, zoom, frames, screenshot, save, overlay, resize, quit;\n"
-    "                            see the README), then quit\n"
+    "                            see docs/viewer.md), then quit\n"
     "  [--stay]                 (after the script, stay interactive instead of quitting)\n"
     "  [--screenshot OUT.png]   (the window after the first frame (after the script, if any), then quit)\n"
     "  [--save-settings OUT.gltf|.glb]  (where S writes the scene with the lights' settings;\n"

@@ -3,7 +3,7 @@
 // setting, numbered across scenes in sweep order, shard K taking jobs K-1, K-1+N, ...) and
 // writes its rows with a manifest (shard.json); --merge reads the N folders back and
 // writes what one run would have (rows in the single run's order). No scheduler of our
-// own: GNU parallel or a Slurm job array starts the shards (README, "Sharded sweeps").
+// own: GNU parallel or a Slurm job array starts the shards (docs/tuning.md, "Sharded sweeps").
 #include "BenchRow.h"
 #include "OptionValues.h"
 #include "SummaryReport.h"

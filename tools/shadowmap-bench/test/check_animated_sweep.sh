@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# shadowmap-bench --time on an animated scene (the README's animation benchmark scene at
+# shadowmap-bench --time on an animated scene (docs/animation.md's benchmark scene at
 # 96x64, one setting): one scene per listed time, named <stem>@<T>s; each pose measured
 # against the truth of that pose; the light whose caster swings changes between the poses,
 # the light whose casters are still does not.

@@ -31,7 +31,7 @@ public:
     // The file each loaded library came from (canonical), in load order.
     std::vector<std::filesystem::path> loadedFiles() const;
 
-    // Where plugins are looked for, first match wins (README "Installing"):
+    // Where plugins are looked for, first match wins (docs/installing.md):
     //   1. the config's plugin_dirs (a relative one is relative to the config file);
     //   2. ENGINE_PLUGIN_PATH, colon-separated, in its order;
     //   3. the installed plugin folder, <libdir>/shadow-engine/plugins beside the running
