@@ -10,7 +10,8 @@
 // directional lights, candela / d^2 for the others); the radiance is multiplied by the
 // renderer's exposure, tone mapped when TONE_MAPPING_PBR_NEUTRAL is defined (else the sRGB
 // target clamps it at 1) and encoded by the sRGB target.
-// The engine prepends "#version 450 core", MAX_LIGHTS, LIGHT_COUNT (the scene's lights)
+// The engine prepends "#version 450 core", MAX_LIGHTS and LIGHTS_BLOCK_BINDING (Frame.h),
+// LIGHT_COUNT (the scene's lights)
 // and FOR_EACH_LIGHT(F), which expands to F(slot, type) for every light, both literal
 // numbers: the sum is written out term by term, never looped, so each term indexes the
 // light data and the shades with constants and keeps only its own type's code. (A loop
@@ -30,7 +31,7 @@ struct LightData {
     vec4 radiance;        // linear color * intensity
     vec4 cone;            // x = cos(outer), y = cos(inner)
 };
-layout(std140, binding = 0) uniform Lights {
+layout(std140, binding = LIGHTS_BLOCK_BINDING) uniform Lights {
     LightData uLights[MAX_LIGHTS];
 };
 uniform vec3 uAmbient;

@@ -1,7 +1,8 @@
 // Every light's shadow parameters, one std140 uniform block shared by the hook's vertex part
 // (texgen.glsl) and its fragment part (visibility.glsl), filled once per frame from
-// plugin/ShadowBlock.h (the same layout, static_asserted there). Binding 1: the lit pass's
-// lights are block 0 (engine/render/Frame.h).
+// plugin/ShadowBlock.h (the same layout, static_asserted there; ShadowBlockLayoutTest checks
+// it against the compiled block). SHADOW_BLOCK_BINDING and MAX_CASCADES are defined from
+// ShadowBlock.h's constants (shadowBlockGlslDefines), MAX_LIGHTS from engine/render/Frame.h.
 //   eyePlanes   Ee, rows s,t,r,q (2D maps)
 //   params      x: 1 = reversed Z (ShadowSettings reversed_z: window depth 1 at near, 0 at
 //               far, and the map compares with GL_GEQUAL); y: bias subtracted from the
@@ -14,19 +15,20 @@
 //   pointFar    x: far (cube maps); 0 = infinite; y: the cube lookup's texel bias,
 //               kCubeTexelBias * 2 / resolution (ShadowMapPlugin.cpp)
 //   eyeToWorld  R_V in its upper 3x3: cube lookups use world axes
-//   cascadePlanes  Ee of each cascade of a cascaded directional light, [slot * 4 + cascade]
+//   cascadePlanes  Ee of each cascade of a cascaded directional light,
+//               [slot * MAX_CASCADES + cascade]
 //   cascadeFar  the far view depth (distance along the camera's -Z) of cascades 0..3; the
 //               largest float for cascades the light does not have
 //   cascadeBlend  x: cascade_blend (the band past each split, as a fraction of the nearer
 //               cascade's depth range, where the lookup fades into the next cascade; 0: none),
 //               y: the near view depth of cascade 0
-layout(std140, binding = 1) uniform ShadowData {
+layout(std140, binding = SHADOW_BLOCK_BINDING) uniform ShadowData {
     mat4 eyePlanes[MAX_LIGHTS];
     vec4 params[MAX_LIGHTS];
     vec4 pointLight[MAX_LIGHTS];
     vec4 pointFar[MAX_LIGHTS];
     mat4 eyeToWorld;
-    mat4 cascadePlanes[MAX_LIGHTS * 4];
+    mat4 cascadePlanes[MAX_LIGHTS * MAX_CASCADES];
     vec4 cascadeFar[MAX_LIGHTS];
     vec4 cascadeBlend[MAX_LIGHTS];
 } shadowData;

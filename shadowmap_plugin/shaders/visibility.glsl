@@ -51,7 +51,7 @@ int cascadeIndex(int slot, vec3 eyePosition, int count) {
 }
 
 vec3 cascadeCoordinates(int slot, vec3 eyePosition, int cascade) {
-    return (shadowData.cascadePlanes[slot * 4 + cascade] * vec4(eyePosition, 1.0)).xyz;
+    return (shadowData.cascadePlanes[slot * MAX_CASCADES + cascade] * vec4(eyePosition, 1.0)).xyz;
 }
 
 // One cascade's lookup (as shadowMap2D, orthographic: q = 1, never behind the light).
@@ -128,7 +128,7 @@ vec4 comparison2D(int slot, vec4 coord, sampler2D depth) {
 
 vec4 comparisonCascades(int slot, vec3 eyePosition, sampler2DArray depth, int count) {
     int cascade = cascadeIndex(slot, eyePosition, count);
-    vec3 p = (shadowData.cascadePlanes[slot * 4 + cascade] * vec4(eyePosition, 1.0)).xyz;
+    vec3 p = (shadowData.cascadePlanes[slot * MAX_CASCADES + cascade] * vec4(eyePosition, 1.0)).xyz;
     if (any(lessThan(p, vec3(0.0))) || any(greaterThan(p, vec3(1.0)))) return vec4(0.4, 0.4, 0.4, 1.0);
     float stored = texture(depth, vec3(p.xy, float(cascade))).r;
     return shadowData.params[slot].x > 0.5 ? comparisonColor(stored, p.z) : comparisonColor(p.z, stored);

@@ -216,7 +216,8 @@ const gl::Program& LitPass::programFor(const LightVisibilityHook* hook, const st
     if (found != programs_.end()) return *found->second;
     const std::string visibilityGlsl = hook ? hook->glsl : kNoShadowsGlsl;
     const std::string vertexTail = hook && !hook->vertexGlsl.empty() ? hook->vertexGlsl : kNoTexgenGlsl;
-    const std::string header = "#version 450 core\n#define MAX_LIGHTS " + std::to_string(kMaxLights) + "\n" +
+    const std::string header = "#version 450 core\n#define MAX_LIGHTS " + std::to_string(kMaxLights) +
+                               "\n#define LIGHTS_BLOCK_BINDING " + std::to_string(kLightsUniformBinding) + "\n" +
                                lightDefinesGlsl +
                                (output == Output::Comparison ? "#define LIGHT_DEBUG_VIEW\n" : "") +
                                (output == Output::ShadowMask ? "#define LIGHT_MASK_VIEW\n" : "") +
@@ -301,7 +302,7 @@ void LitPass::drawScene(const Frame& frame, const std::vector<Region>& regions, 
                 program->set("uAmbient", config_.ambient);
                 program->set("uExposure", config_.exposure);
             }
-    glBindBufferBase(GL_UNIFORM_BUFFER, 0, lightBuffer_.id());
+    glBindBufferBase(GL_UNIFORM_BUFFER, kLightsUniformBinding, lightBuffer_.id());
     const gl::Program* current = nullptr;
 
     const glm::dmat4 viewProjection = frame.camera().projection * view;

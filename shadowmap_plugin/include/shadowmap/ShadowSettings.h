@@ -92,6 +92,8 @@
 // units * 2^-24 from the reference (the d24 meaning of units) so depths below 0.5 keep
 // their bias.
 #include <glm/glm.hpp>
+#include "shadowmap/ShadowLimits.h"
+
 #include <nlohmann/json.hpp>
 
 #include <optional>
@@ -121,7 +123,7 @@ inline constexpr int kAutoCascades = 0;
 
 struct ShadowSettings {
     Variant variant = Variant::Standard;
-    int resolution = 2048;
+    int resolution = kDefaultResolution;
     DepthFormat depthFormat = DepthFormat::D24;
     Filter filter = Filter::Pcf;
     std::optional<glm::vec2> polygonOffset;  // unset: the variant's default

@@ -21,14 +21,13 @@
 // keep it. The cost: a square around a sphere holds the slice with spare texels, up to
 // about twice the texel size of the fitted box.
 #include "math/LightFrustum.h"
+#include "shadowmap/ShadowLimits.h"
 
 #include <glm/glm.hpp>
 #include <string>
 #include <vector>
 
 namespace shadowmap {
-
-inline constexpr int kMaxCascades = 4;
 
 // count + 1 distances: [0] = nearDepth, [count] = farDepth. lambda in [0, 1].
 std::vector<double> cascadeSplits(double nearDepth, double farDepth, int count, double lambda);
@@ -46,7 +45,7 @@ struct CascadeOptions {
     // its depth range past its far split, where the lookup fades into the next one.
     double blend = 0.0;
     bool stable = false;
-    int resolution = 2048;  // texels per side of each cascade's map (stable snapping)
+    int resolution = kDefaultResolution;  // texels per side of each cascade's map (stable snapping)
     FrustumFitOptions fit;  // margins and reversed Z
 };
 

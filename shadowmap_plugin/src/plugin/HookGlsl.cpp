@@ -1,5 +1,7 @@
 #include "plugin/HookGlsl.h"
 
+#include "plugin/ShadowBlock.h"
+
 namespace shadowmap {
 
 namespace shaders {
@@ -49,12 +51,12 @@ HookGlsl::Code generate(const std::vector<HookGlsl::Lookup>& lookups) {
                     slot + ", " + coordinate + ", uShadowMap" + slot + ");\n";
     }
     HookGlsl::Code code;
-    code.fragment = std::string(shaders::shadow_data_glsl) + shaders::visibility_glsl + declarations +
+    code.fragment = shadowBlockGlslDefines() + shaders::shadow_data_glsl + shaders::visibility_glsl + declarations +
                     "float lightVisibility(int lightSlot, vec3 eyePosition, vec3 eyeNormal) {\n" + dispatch +
                     "    return shadowData.params[lightSlot].w;\n}\n" +
                     "vec4 lightDebugColor(int lightSlot, vec3 eyePosition, vec3 eyeNormal) {\n" + debugDispatch +
                     "    return vec4(0.4, 0.4, 0.4, 1.0);\n}\n";
-    code.vertex = std::string(shaders::shadow_data_glsl) + shaders::texgen_glsl + texgenOutputs +
+    code.vertex = shadowBlockGlslDefines() + shaders::shadow_data_glsl + shaders::texgen_glsl + texgenOutputs +
                   "void lightTexgen(vec3 eyePosition) {\n" + texgen + "}\n";
     return code;
 }

@@ -7,11 +7,13 @@
 #include <glm/glm.hpp>
 
 #include <cstddef>
+#include <string>
 
 namespace shadowmap {
 
-// The block's binding point (shadow_data.glsl says the same); the lit pass's lights use 0.
-constexpr unsigned kShadowBlockBinding = 1;
+// The block's binding point: the first a visibility hook may use (the lit pass's lights
+// come before it).
+constexpr unsigned kShadowBlockBinding = engine::kFirstPluginUniformBinding;
 
 struct ShadowBlock {
     glm::mat4 eyePlanes[engine::kMaxLights];
@@ -19,11 +21,14 @@ struct ShadowBlock {
     glm::vec4 pointLight[engine::kMaxLights];
     glm::vec4 pointFar[engine::kMaxLights];  // x: far, y: cube texel bias (a float array would have a 16-byte stride anyway)
     glm::mat4 eyeToWorld;
-    glm::mat4 cascadePlanes[engine::kMaxLights * kMaxCascades];  // light slot * 4 + cascade
+    glm::mat4 cascadePlanes[engine::kMaxLights * kMaxCascades];  // light slot * kMaxCascades + cascade
     glm::vec4 cascadeFar[engine::kMaxLights];                    // far view depth per cascade
     glm::vec4 cascadeBlend[engine::kMaxLights];                  // x: blend fraction, y: first split
 };
 
+// cascadeFar holds a light's cascades' far depths in one vec4 (visibility.glsl compares it
+// with the pixel's depth at once).
+static_assert(kMaxCascades <= 4);
 static_assert(offsetof(ShadowBlock, params) == engine::kMaxLights * 64);
 static_assert(offsetof(ShadowBlock, pointLight) == engine::kMaxLights * 80);
 static_assert(offsetof(ShadowBlock, pointFar) == engine::kMaxLights * 96);
@@ -32,5 +37,12 @@ static_assert(offsetof(ShadowBlock, cascadePlanes) == engine::kMaxLights * 112 +
 static_assert(offsetof(ShadowBlock, cascadeFar) == engine::kMaxLights * (112 + 64 * kMaxCascades) + 64);
 static_assert(offsetof(ShadowBlock, cascadeBlend) == engine::kMaxLights * (128 + 64 * kMaxCascades) + 64);
 static_assert(sizeof(ShadowBlock) == engine::kMaxLights * (144 + 64 * kMaxCascades) + 64);
+
+// The constants shadow_data.glsl and visibility.glsl take from here, as #defines to put
+// before them (MAX_LIGHTS comes from the lit pass's own header).
+inline std::string shadowBlockGlslDefines() {
+    return "#define SHADOW_BLOCK_BINDING " + std::to_string(kShadowBlockBinding) + "\n#define MAX_CASCADES " +
+           std::to_string(kMaxCascades) + "\n";
+}
 
 } // namespace shadowmap

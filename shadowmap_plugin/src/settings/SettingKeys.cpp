@@ -114,10 +114,10 @@ std::vector<SettingKey> makeKeys() {
 
     SettingKey cascades = makeKey("cascades", SettingKind::Integer);
     cascades.minimum = 1;
-    cascades.maximum = 4;
-    cascades.steps = {1, 2, 3, 4};
+    cascades.maximum = kMaxCascades;
+    for (int count = 1; count <= kMaxCascades; ++count) cascades.steps.push_back(count);
     cascades.choices = {"auto"};
-    cascades.values = "`auto`, 1 … 4";
+    cascades.values = "`auto`, 1 … " + std::to_string(kMaxCascades);
     cascades.description = "directional lights: slices of the camera's view depth, each with its own map "
                            "(a layer of the light's array map); 1: one map for every visible receiver; "
                            "`auto`: the count the view needs, chosen per frame";

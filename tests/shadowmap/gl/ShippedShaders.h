@@ -18,11 +18,11 @@ extern const char visibility_glsl[];
 namespace shadowmap::test {
 
 // What comes before the plugin's shipped functions in a lit shader: the version and
-// MAX_LIGHTS (LitPass.cpp), which sizes the arrays of the plugin's block, and the block
-// (HookGlsl.cpp puts shadow_data.glsl first).
+// MAX_LIGHTS (LitPass.cpp), which sizes the arrays of the plugin's block, and the block with
+// the constants it is defined from (HookGlsl.cpp puts both first).
 inline std::string hookPrelude() {
     return "#version 450 core\n#define MAX_LIGHTS " + std::to_string(engine::kMaxLights) + "\n" +
-           shaders::shadow_data_glsl;
+           shadowBlockGlslDefines() + shaders::shadow_data_glsl;
 }
 
 // The block filled as the plugin fills it, bound where the shipped code reads it. Keep the

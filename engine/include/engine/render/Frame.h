@@ -31,8 +31,10 @@ constexpr int kMaxLights = 32;
 // Texture units 0..kFirstPluginTextureUnit-1 belong to the engine: the five material
 // textures (MaterialTextures.h) and the shade cache (ShadeCache.h).
 constexpr int kFirstPluginTextureUnit = 6;
-// Uniform block binding 0 is the lit pass's lights; a visibility hook's blocks start here.
-constexpr unsigned kFirstPluginUniformBinding = 1;
+// The lit pass's lights block (lit.frag reads it as LIGHTS_BLOCK_BINDING, defined from this);
+// a visibility hook's blocks start after it.
+constexpr unsigned kLightsUniformBinding = 0;
+constexpr unsigned kFirstPluginUniformBinding = kLightsUniformBinding + 1;
 
 struct FrameCamera {
     glm::dmat4 eyeToWorld{1.0};  // V (eye -> world); the view matrix is V^-1
