@@ -3,6 +3,7 @@
 // (shadowmap-bench, shadowmap-tune, engine-view): its settings (the defaults a light's
 // extras.shadow overrides) and map caching turned off for timing.
 #include "engine/config/EngineConfig.h"
+#include "shadowmap/ShadowSettings.h"
 
 #include <nlohmann/json.hpp>
 
@@ -10,7 +11,7 @@
 
 namespace tools {
 
-inline constexpr const char* kShadowPlugin = "shadowmap_plugin";
+inline constexpr const char* kShadowPlugin = shadowmap::kPluginName;
 
 // The shadow plugin's settings object in the config (empty when it loads none).
 nlohmann::json shadowPluginSettings(const engine::EngineConfig& config);

@@ -294,7 +294,7 @@ int run(const RenderOptions& options, std::unique_ptr<engine::GlContext>& contex
                                      "(variant none, nothing in its frustum, or no shadow plugin)");
         int width = 0, height = 0;
         auto gray = depthToGray(found->second, width, height);
-        if (found->second.layers == 6) labelCubeFaces(gray, width, height, found->second.width);
+        if (found->second.cube) labelCubeFaces(gray, width, height, found->second.width);
         engine::writePngAtomically(file, width, height, 1, gray);
     }
 

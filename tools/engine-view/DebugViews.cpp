@@ -126,11 +126,11 @@ ViewFrame DebugViews::depthMap(const ViewedLight& light, const engine::FrameCame
     }
     int width = 0, height = 0;
     std::vector<std::uint8_t> gray = depthToGray(found->second, width, height);
-    if (found->second.layers == 6) labelCubeFaces(gray, width, height, found->second.width);
+    if (found->second.cube) labelCubeFaces(gray, width, height, found->second.width);
     out.image = Image::fromGray(width, height, gray);
     out.notes.push_back("depth map of " + light.name + " (" + std::to_string(found->second.width) + "x" +
                         std::to_string(found->second.height) +
-                        (found->second.layers == 6 ? ", cube: +X -X +Y -Y +Z -Z, labelled" : "") +
+                        (found->second.cube ? ", cube: +X -X +Y -Y +Z -Z, labelled" : "") +
                         "): near dark, far white");
     return out;
 }

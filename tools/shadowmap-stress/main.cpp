@@ -113,7 +113,7 @@ engine::EngineConfig makeConfig(const Options& options) {
         config = engine::loadEngineConfig(options.config);
     } else {
         config.sourcePath = "shadowmap-stress built-in config";
-        config.plugins.push_back({"shadowmap_plugin", nlohmann::json::object()});
+        config.plugins.push_back({shadowmap::kPluginName, nlohmann::json::object()});
     }
     tools::applySettingOverrides(config, options.pluginSettings);
     return config;

@@ -148,6 +148,7 @@ FrameResult Renderer::renderFrame(const FrameRequest& request) {
         DepthReadback& readback = result.shadowMaps[slot];
         readback.width = desc.width;
         readback.height = desc.height;
+        readback.cube = desc.cube;
         readback.layers = desc.cube ? 6 : desc.layers;
         readback.depth = readDepthLayersTopDown(texture, desc.width, desc.height, readback.layers);
     }

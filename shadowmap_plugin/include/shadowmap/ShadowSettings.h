@@ -118,6 +118,10 @@ const char* toString(Filter);
 glm::vec2 defaultPolygonOffset(Variant variant, Filter filter, bool reversedZ);
 
 // Default-constructed: the built-in defaults (the table above).
+// The plugin's one name, in configs ("library"), messages, --stats and --set: the library's,
+// since that is the name users type.
+inline constexpr char kPluginName[] = "shadowmap_plugin";
+
 // ShadowSettings::cascades for "auto".
 inline constexpr int kAutoCascades = 0;
 

@@ -18,10 +18,6 @@
 
 namespace shadowmap {
 
-// The plugin's one name, in configs ("library"), messages, --stats and --set: the library's,
-// since that is the name users type.
-inline constexpr char kPluginName[] = "shadowmap_plugin";
-
 class ShadowMapPlugin final : public engine::RenderPlugin {
 public:
     // cacheMaps: keep a light's map across frames while its inputs are unchanged, and give

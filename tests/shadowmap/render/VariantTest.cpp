@@ -191,3 +191,27 @@ TEST_F(ShadowVariants, WooMapHoldsTheMidpointOfTheFirstTwoLayers) {
     EXPECT_GT(floor, 1000);
     EXPECT_EQ(other, 0);
 }
+
+// A read-back map says whether its layers are a cube's faces (the tools label them by it),
+// rather than leaving the tools to guess from the layer count.
+TEST_F(ShadowVariants, AReadBackMapSaysWhetherItIsACube) {
+    SceneBuilder builder;
+    builder.addBox("floor", kFloor.min, kFloor.max);
+    builder.addBox("plate", {-1, 2.0, -1}, {1, 2.5, 1});
+    builder.addLight("sun", Light::Type::Directional, {0, 10, 0}, {0, 0, 0}, {{"resolution", 64}});
+    builder.addLight("bulb", Light::Type::Point, {0, 4, 0}, {0, 0, 0}, {{"resolution", 64}});
+    const engine::Scene scene = builder.build();
+
+    engine::Renderer renderer({}, plugins());
+    renderer.setScene(scene);
+    engine::FrameRequest request;
+    request.camera = camera();
+    request.shadowMapSlots = {0, 1};
+    const engine::FrameResult frame = renderer.renderFrame(request);
+    ASSERT_EQ(frame.shadowMaps.count(0), 1u);
+    ASSERT_EQ(frame.shadowMaps.count(1), 1u);
+    EXPECT_FALSE(frame.shadowMaps.at(0).cube);
+    EXPECT_TRUE(frame.shadowMaps.at(1).cube);
+    EXPECT_EQ(frame.shadowMaps.at(1).layers, 6);
+    EXPECT_EQ(frame.shadowMaps.at(1).depth.size(), 6u * 64u * 64u);
+}

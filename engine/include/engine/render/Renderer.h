@@ -34,6 +34,7 @@ struct FrameRequest {
 
 struct DepthReadback {
     int width = 0, height = 0, layers = 1;  // layers: 6 for a cube (GL face order)
+    bool cube = false;                      // the layers are a cube map's faces
     std::vector<float> depth;               // layer after layer, each top row first
 };
 
