@@ -13,7 +13,7 @@
 //               sees: every visible point is outside it)
 //   pointLight  eye-space light position, near (cube maps)
 //   pointFar    x: far (cube maps); 0 = infinite; y: the cube lookup's texel bias,
-//               kCubeTexelBias * 2 / resolution (ShadowMapPlugin.cpp)
+//               kCubeTexelBias * 2 / resolution (CubeMapProjection.cpp)
 //   eyeToWorld  R_V in its upper 3x3: cube lookups use world axes
 //   cascadePlanes  Ee of each cascade of a cascaded directional light,
 //               [slot * MAX_CASCADES + cascade]

@@ -140,7 +140,7 @@ float cubeBiasedReference(int slot, float major) {
     float depth = cubeReferenceDepth(slot, major) - shadowData.params[slot].y;
     bool reversed = shadowData.params[slot].x > 0.5;
     // Lowered by the depth a 45-degree surface spans across kCubeTexelBias texels here
-    // (ShadowMapPlugin.cpp says why): d(depth)/d(major) times a texel's width, 2 major / res
+    // (CubeMapProjection.cpp says why): d(depth)/d(major) times a texel's width, 2 major / res
     // (pointFar.y holds kCubeTexelBias * 2 / res), so the bias is a fixed part of a texel at
     // every distance; the window depth grows with major as n f / ((f - n) major^2), or n / major^2
     // with an infinite far, and falls (reversed Z) as fast.

@@ -4,7 +4,7 @@
 // module resolves every light through it; the tools (engine-view, shadowmap-bench,
 // shadowmap-stress) ask it for defaults and allowed values instead of repeating them, and
 // the README's settings table is checked against settingKeys() by a test.
-// No GL here: the GL side of a depth format lives with the plugin (plugin/DepthFormatGl.h).
+// No GL here: the GL side of a depth format lives with the plugin (technique/DepthFormatGl.h).
 //
 // Per-light shadow settings and where they come from, most specific last:
 //   built-in defaults  <-  plugin settings in the engine config (--set PLUGIN.KEY=JSON edits

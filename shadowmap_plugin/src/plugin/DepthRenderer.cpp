@@ -29,14 +29,6 @@ engine::gl::Program compileDepthProgram(const std::string& name, const std::stri
                {GL_FRAGMENT_SHADER, header + engine::materialFragmentGlsl() + shaders::depth_frag}});
 }
 
-// Reversed Z stores near as 1 and far as 0: "away from the light" is then a negative
-// offset, and glPolygonOffsetClamp's clamp must carry the same sign (a negative clamp is a
-// lower bound).
-glm::vec3 signedOffset(const glm::vec2& offset, const DepthPassStyle& style) {
-    const float sign = style.reversedZ ? -1.0f : 1.0f;
-    return sign * glm::vec3(offset, style.offsetClamp);
-}
-
 // The offset of one caster's draws when it differs from the pass's (backface's open casters).
 void setPolygonOffset(const glm::vec2& offset, const DepthPassStyle& style) {
     if (offset == glm::vec2(0.0f)) {
@@ -49,25 +41,6 @@ void setPolygonOffset(const glm::vec2& offset, const DepthPassStyle& style) {
 }
 
 } // namespace
-
-engine::PassState depthPassState(const DepthPassStyle& style) {
-    engine::PassState state;
-    state.depthTest = style.reversedZ ? engine::PassState::DepthTest::Greater : engine::PassState::DepthTest::Less;
-    state.clipDepth = style.reversedZ ? engine::PassState::ClipDepth::ZeroToOne
-                                      : engine::PassState::ClipDepth::NegativeOneToOne;
-    state.cull = style.backFacesOnly ? engine::PassState::Cull::Front : engine::PassState::Cull::None;
-    if (style.polygonOffset != glm::vec2(0.0f)) {
-        const glm::vec3 offset = signedOffset(style.polygonOffset, style);
-        state.offsetFactor = offset.x;
-        state.offsetUnits = offset.y;
-        state.offsetClamp = offset.z;
-    }
-    return state;
-}
-
-engine::PassTargets depthPassTargets(engine::ResourceHandle map, int layer, const DepthPassStyle& style) {
-    return engine::PassTargets::depthOnly(map, layer, style.reversedZ ? 0.0f : 1.0f);
-}
 
 DepthRenderer::DepthRenderer() : empty_(engine::gl::VertexArray::create()) {
     // The opaque casters' programs, which every scene with shadows uses, before the first frame.

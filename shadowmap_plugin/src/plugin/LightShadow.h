@@ -1,15 +1,11 @@
 #pragma once
-// One light's shadow state across frames: its resolved settings, its depth map (a 2D
-// texture for spot and directional lights, a 2D array of one layer per cascade for a
-// directional light with cascades > 1, a cube for point lights, owned here so it can
-// outlive a frame), and what the last frame did with it.
-#include "math/CascadeFit.h"
-#include "math/LightFrustum.h"
-#include "shadowmap/ShadowSettings.h"
+// One light's shadow as the plugin keeps it: the GL-free state (technique/LightState.h) and
+// its depth map (a 2D texture, a 2D array of one layer per cascade, or a cube, as its
+// projection's MapShape says), owned here so it can outlive a frame.
+#include "technique/LightState.h"
 
 #include "engine/gl/Texture.h"
 #include "engine/render/ShadowView.h"
-#include "engine/scene/Scene.h"
 
 #include <nlohmann/json.hpp>
 
@@ -18,56 +14,12 @@
 
 namespace shadowmap {
 
-enum class MapKind { None = 0, Map2D = 1, Cube = 2, Cascades = 3 };
-
-struct LightShadowFrame {
-    MapKind kind = MapKind::None;
-    LightView view;              // spot / directional
-    PointLightViews pointViews;  // point
-    CascadeViews cascades;       // directional with cascades > 1: one view per array layer
-    int cascadeCount = 1;        // directional: the cascades this frame (1: one map)
-    bool autoCascades = false;   // the count was chosen (cascades: auto) from cascadeNeed
-    bool cascadeNeedReused = false;  // ... weighed last frame: nothing it depends on changed
-    CascadeNeed cascadeNeed;
-    std::string skipReason;      // why no map this frame (variant none, empty frustum...)
-    bool emptyFrustum = false;   // skipped because no visible receiver is inside it
-    int facesRendered = 0, facesSkipped = 0;
-    std::uint64_t draws = 0, triangles = 0, castersCulled = 0;
-    std::vector<std::string> openCasters;  // backface: casters drawn two-sided
-    bool cacheHit = false;                 // the map was still right: no depth pass
-    std::vector<std::uint64_t> cascadeKeys;  // cascades: each layer's key (MapCacheKey.h)
-    std::vector<bool> cascadeHits;           // cascades: the layer was still right
-    std::uint64_t mapKey = 0;              // what the map holds this frame (MapCacheKey.h)
-};
-
-struct LightShadow {
-    std::string name;  // for people: the light's name, else its node's, else "light <slot>"
-    int slot = -1;     // index into Scene::lightInstances (the lit pass's light slot): its identity
-    engine::Light::Type type = engine::Light::Type::Point;
-    ShadowSettings settings;
+struct LightShadow : LightState {
     engine::gl::Texture map;
-    LightShadowFrame frame;
-    // Key of the inputs the map was last rendered from (MapCacheKey.h); 0 = none.
-    std::uint64_t renderedKey = 0;
-    // Cascades: the key each layer was last rendered from; 0 = none.
-    std::vector<std::uint64_t> renderedCascadeKeys;
-    // cascades: auto: the count chosen last frame (0: none yet), which a small change keeps,
-    // and what was weighed for it, with the hash of its inputs (reused while they hold).
-    int autoCascadeCount = 0;
-    CascadeNeed cascadeNeed;
-    std::uint64_t cascadeNeedKey = 0;
 
-    // (Re)creates the map when size, format, filter or kind changed, with the comparison
-    // state the visibility hook relies on (GL_COMPARE_REF_TO_TEXTURE, GL_LEQUAL).
+    // (Re)creates the map when size, format or shape changed (a new texture holds nothing:
+    // its rendered keys are reset), with the comparison state and filter the lookup needs.
     void ensureMap();
-    // Graph names, keyed by the light instance (names may repeat or be empty): the map as
-    // imported, and per map layer (-1: the 2D map; 0-5: cube faces in GL order) the depth
-    // pass (woo: the peel pass) and woo's first layer and the pass drawing it; cascades
-    // are layers 0..N-1 of the array map.
-    std::string mapResource() const;
-    std::string depthPass(int layer) const;
-    std::string firstLayerPass(int layer) const;
-    std::string firstLayerResource(int layer) const;
     // The passes that render the map this frame, in order.
     std::vector<std::string> depthPasses() const;
     // The settings in effect, keyed as in extras.shadow.

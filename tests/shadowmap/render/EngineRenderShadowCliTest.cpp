@@ -576,7 +576,7 @@ TEST_F(EngineRenderShadows, ThePluginIsCalledShadowmapPluginEverywhere) {
 // A point light's cube faces are axis-aligned: a surface facing a face's axis has zero depth
 // slope there, so the polygon offset's slope term gives it no margin, and a small step in it
 // (2CylinderEngine's crankcase top under the key point light) drew a dotted acne line
-// until the cube lookup got a texel bias of its own (ShadowMapPlugin.cpp, kCubeTexelBias).
+// until the cube lookup got a texel bias of its own (technique/projection/CubeMapProjection.cpp, kCubeTexelBias).
 // Measured at this size: acne 1.230% without the bias, 1.001% with it (leak 0.245% and
 // 0.253%); the bound sits between, 0.1 points above what the fix gives.
 TEST(EngineRenderCubeAcne, AFloorFacingACubeFaceGetsATexelBias) {

@@ -1,4 +1,4 @@
-#include "plugin/MapCacheKey.h"
+#include "technique/MapCacheKey.h"
 
 #include "engine/scene/FrustumCull.h"
 #include "engine/util/Hasher.h"
@@ -7,7 +7,7 @@ namespace shadowmap {
 
 namespace {
 
-void addSettings(engine::Hasher& hasher, const LightShadow& light, std::uint64_t sceneGeneration) {
+void addSettings(engine::Hasher& hasher, const LightState& light, std::uint64_t sceneGeneration) {
     hasher.add(sceneGeneration);
     const ShadowSettings& s = light.settings;
     hasher.add(static_cast<int>(s.variant));
@@ -41,7 +41,7 @@ void addCasters(engine::Hasher& hasher, const engine::Scene& scene, const std::v
 
 } // namespace
 
-std::uint64_t mapCacheKey(const LightShadow& light, const engine::Scene& scene,
+std::uint64_t mapCacheKey(const LightState& light, const engine::Scene& scene,
                           std::uint64_t sceneGeneration) {
     engine::Hasher hasher;
     addSettings(hasher, light, sceneGeneration);
@@ -63,7 +63,7 @@ std::uint64_t mapCacheKey(const LightShadow& light, const engine::Scene& scene,
     return hasher.value();
 }
 
-std::uint64_t cascadeCacheKey(const LightShadow& light, int cascade, const engine::Scene& scene,
+std::uint64_t cascadeCacheKey(const LightState& light, int cascade, const engine::Scene& scene,
                               std::uint64_t sceneGeneration) {
     engine::Hasher hasher;
     addSettings(hasher, light, sceneGeneration);
@@ -72,6 +72,14 @@ std::uint64_t cascadeCacheKey(const LightShadow& light, int cascade, const engin
     const LightView& view = light.frame.cascades.cascades[cascade];
     hasher.add(view.empty);
     if (!view.empty) addCasters(hasher, scene, {view.viewProjection()});
+    return hasher.value();
+}
+
+std::uint64_t withDepthSettings(std::uint64_t key, const ShadowSettings& settings) {
+    engine::Hasher hasher;
+    hasher.add(key);
+    hasher.add(settings.reversedZ);
+    hasher.add(settings.polygonOffsetClamp);
     return hasher.value();
 }
 

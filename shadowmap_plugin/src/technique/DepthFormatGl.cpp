@@ -1,4 +1,4 @@
-#include "plugin/DepthFormatGl.h"
+#include "technique/DepthFormatGl.h"
 
 #include <epoxy/gl.h>
 

@@ -1,0 +1,19 @@
+#pragma once
+// A light's depth passes for this frame: per layer its projection asks for, the passes its
+// depth technique declares, in the style its settings give (offsets, depth direction, the
+// slope-offset clamp), drawing through the DepthRenderer.
+#include "plugin/DepthRenderer.h"
+#include "plugin/LightShadow.h"
+
+#include "engine/render/Frame.h"
+
+#include <vector>
+
+namespace shadowmap {
+
+// closedMeshes: per Scene::meshes, closed and not double-sided (backface culls only those).
+// Counts what is drawn into light.frame; each layer's key is recorded once its passes ran.
+void addDepthPasses(LightShadow& light, engine::Frame& frame, engine::ResourceHandle map, DepthRenderer& renderer,
+                    const std::vector<bool>& closedMeshes);
+
+} // namespace shadowmap

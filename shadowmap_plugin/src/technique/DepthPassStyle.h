@@ -1,0 +1,47 @@
+#pragma once
+// How a depth pass draws the casters of one map layer: what differs between the ways of
+// making a map (DepthTechnique.h) is a style, not another renderer (plugin/DepthRenderer.h
+// draws every style).
+#include "engine/graph/RenderGraph.h"
+
+#include <glm/glm.hpp>
+
+#include <vector>
+
+namespace shadowmap {
+
+struct DepthPassStyle {
+    // standard and woo: every face (open casters must cast too). backface: only faces
+    // turned away from the light, for casters that are closed; open ones are drawn with
+    // both faces (and openCasterOffset) so their shadow stays right.
+    bool backFacesOnly = false;
+    glm::vec2 polygonOffset{0.0f};      // for every draw (standard; both woo passes), or none
+    glm::vec2 openCasterOffset{0.0f};   // backface: the offset for two-sided open casters
+    const std::vector<bool>* closedMeshes = nullptr;  // backface: per Scene::meshes
+    // Woo pass 2: the nearest-layer depth to peel against (0: not peeling), a 2D texture of
+    // the map's size (one per cube face).
+    unsigned firstLayer = 0;
+    float peelEpsilon = 0.0f;  // depth within which a fragment counts as the first layer
+                               // (reversedZ: relative to the first layer's depth)
+    // Reversed Z (ShadowSettings reversed_z, d32f): glClipControl(GL_LOWER_LEFT,
+    // GL_ZERO_TO_ONE) for the pass, clear depth 0, GL_GREATER depth test, polygon offsets
+    // negated (away from the light is toward 0).
+    bool reversedZ = false;
+    // > 0: glPolygonOffsetClamp's clamp, in window depth (ShadowSettings
+    // polygon_offset_clamp converted per light); 0: plain glPolygonOffset.
+    float offsetClamp = 0.0f;
+};
+
+// The state a depth pass of this style declares (engine/graph/PassState.h): depth test and
+// clip range for the depth direction, the offset, and front-face culling for backface
+// (switched per caster: closed casters only).
+engine::PassState depthPassState(const DepthPassStyle& style);
+// The target of such a pass: `layer` of `map` (-1: a 2D map), cleared to the far depth.
+engine::PassTargets depthPassTargets(engine::ResourceHandle map, int layer, const DepthPassStyle& style);
+
+// Reversed Z stores near as 1 and far as 0: "away from the light" is then a negative
+// offset, and glPolygonOffsetClamp's clamp must carry the same sign (a negative clamp is a
+// lower bound). (factor, units, clamp) as GL takes them.
+glm::vec3 signedOffset(const glm::vec2& offset, const DepthPassStyle& style);
+
+} // namespace shadowmap

@@ -1,0 +1,21 @@
+#pragma once
+// How the lit pass reads a light's map: one axis of a shadow technique (Techniques.h).
+// Today both lookups are the hardware depth comparison, nearest or bilinear (GL_LINEAR on
+// a comparing texture is 2x2 percentage-closer filtering); each in lookup/.
+#include "shadowmap/ShadowSettings.h"
+
+#include "engine/util/Hasher.h"
+
+namespace shadowmap {
+
+class MapLookup {
+public:
+    virtual ~MapLookup() = default;
+    virtual Filter filter() const = 0;
+    // The comparing texture's min/mag filter: bilinear (true) or nearest.
+    virtual bool bilinearCompare() const = 0;
+    // What, beyond the map, decides the shade this lookup gives a pixel.
+    virtual void addShadeKey(engine::Hasher& key) const { key.add(filter()); }
+};
+
+} // namespace shadowmap

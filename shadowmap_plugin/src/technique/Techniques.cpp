@@ -1,0 +1,63 @@
+#include "technique/Techniques.h"
+
+#include "technique/depth/BackfaceDepth.h"
+#include "technique/depth/StandardDepth.h"
+#include "technique/depth/WooDepth.h"
+#include "technique/lookup/HardwareCompareLookup.h"
+#include "technique/projection/CascadedMapProjection.h"
+#include "technique/projection/CubeMapProjection.h"
+#include "technique/projection/FittedMapProjection.h"
+
+#include <stdexcept>
+#include <string>
+
+namespace shadowmap {
+
+namespace {
+
+const StandardDepth kStandard;
+const WooDepth kWoo;
+const BackfaceDepth kBackface;
+const DepthTechnique* const kDepthTechniques[] = {&kStandard, &kWoo, &kBackface};
+
+const FittedMapProjection kFittedMap;
+const CubeMapProjection kCubeMap;
+const CascadedMapProjection kCascadedMap;
+const MapProjection* const kProjections[] = {&kFittedMap, &kCubeMap, &kCascadedMap};
+
+const HardwareCompareLookup kNearest(Filter::Nearest, false);
+const HardwareCompareLookup kPcf(Filter::Pcf, true);
+const MapLookup* const kLookups[] = {&kNearest, &kPcf};
+
+// The entry whose key matches, or nullptr.
+template <typename Entry, std::size_t N, typename Key, typename KeyOf>
+const Entry* find(const Entry* const (&table)[N], Key key, KeyOf keyOf) {
+    for (const Entry* entry : table)
+        if (keyOf(*entry) == key) return entry;
+    return nullptr;
+}
+
+} // namespace
+
+const DepthTechnique* depthTechnique(Variant variant) {
+    return find(kDepthTechniques, variant, [](const DepthTechnique& t) { return t.variant(); });
+}
+
+const MapProjection* mapProjection(MapKind kind) {
+    return find(kProjections, kind, [](const MapProjection& p) { return p.kind(); });
+}
+
+const MapProjection& projectionFor(engine::Light::Type type, int cascadeCount) {
+    if (type == engine::Light::Type::Point) return kCubeMap;
+    if (type == engine::Light::Type::Directional && cascadeCount > 1) return kCascadedMap;
+    return kFittedMap;
+}
+
+const MapLookup& mapLookup(Filter filter) {
+    const MapLookup* lookup = find(kLookups, filter, [](const MapLookup& l) { return l.filter(); });
+    // Every filter the settings accept has a lookup (TechniquesTest checks each).
+    if (!lookup) throw std::logic_error("no lookup for filter " + std::string(toString(filter)));
+    return *lookup;
+}
+
+} // namespace shadowmap

@@ -1,0 +1,20 @@
+#pragma once
+// The registry of shadow techniques along their three axes: how the map is made
+// (DepthTechnique.h, by variant), how it is projected (MapProjection.h, by map kind) and how
+// it is looked up (MapLookup.h, by filter). A technique is a class in its axis's folder plus
+// one line in its table in Techniques.cpp; nothing else names it.
+#include "technique/DepthTechnique.h"
+#include "technique/MapLookup.h"
+#include "technique/MapProjection.h"
+
+namespace shadowmap {
+
+// The variant's technique; nullptr for Variant::None (no map).
+const DepthTechnique* depthTechnique(Variant variant);
+// The projection of a map kind; nullptr for MapKind::None.
+const MapProjection* mapProjection(MapKind kind);
+// The projection a light of this type gets with this many cascades this frame.
+const MapProjection& projectionFor(engine::Light::Type type, int cascadeCount);
+const MapLookup& mapLookup(Filter filter);
+
+} // namespace shadowmap

@@ -1,0 +1,29 @@
+#include "technique/depth/StandardDepth.h"
+
+namespace shadowmap {
+
+void addSingleDepthPass(const LayerPasses& passes) {
+    const engine::ResourceHandle map = passes.map;
+    const int layer = passes.layer.layer;
+    const DepthPassStyle style = passes.style;
+    passes.graph.addPass(
+        passes.light.depthPass(layer),
+        [map, layer, style](engine::PassBuilder& builder) {
+            (void)builder.write(map, layer);
+            builder.setTargets(depthPassTargets(map, layer, style));
+            builder.setState(depthPassState(style));
+        },
+        [draw = passes.draw, done = passes.done, viewProjection = passes.layer.viewProjection, style,
+         drawCasters = passes.layer.drawsCasters](engine::PassContext& context) {
+            if (drawCasters) draw(context, viewProjection, style);
+            done();
+        });
+}
+
+void StandardDepth::addLayerPasses(const LayerPasses& passes) const { addSingleDepthPass(passes); }
+
+void StandardDepth::passNames(const LightState& light, const MapLayer& layer, std::vector<std::string>& names) const {
+    names.push_back(light.depthPass(layer.layer));
+}
+
+} // namespace shadowmap

@@ -1,0 +1,17 @@
+#pragma once
+// Woo's midpoint map: per layer, the nearest surface z1 first (a transient of the map's
+// size), then a pass peeling it: fragments behind z1 write the midpoint (z + z1) / 2 and
+// the depth test keeps the nearest, so the layer holds the midpoint between the two
+// nearest surfaces (shaders/depth.frag).
+#include "technique/DepthTechnique.h"
+
+namespace shadowmap {
+
+class WooDepth final : public DepthTechnique {
+public:
+    Variant variant() const override { return Variant::Woo; }
+    void addLayerPasses(const LayerPasses& passes) const override;
+    void passNames(const LightState& light, const MapLayer& layer, std::vector<std::string>& names) const override;
+};
+
+} // namespace shadowmap

@@ -1,0 +1,132 @@
+#include "technique/projection/CascadedMapProjection.h"
+
+#include "technique/MapCacheKey.h"
+#include "technique/projection/FiniteMatrix.h"
+
+#include "math/Texgen.h"
+
+#include <algorithm>
+
+#include <limits>
+
+namespace shadowmap {
+
+CascadeOptions cascadeOptions(const ShadowSettings& settings, const FrustumFitOptions& fit) {
+    CascadeOptions options;
+    options.count = settings.cascades;
+    options.lambda = settings.cascadeLambda;
+    options.blend = settings.cascadeBlend;
+    options.stable = settings.stable;
+    options.resolution = settings.resolution;
+    options.fit = fit;
+    return options;
+}
+
+ProjectionFit CascadedMapProjection::fit(LightState& light, const PlanContext& context,
+                                         const FrustumFitOptions& fitOptions) const {
+    LightShadowFrame& plan = light.frame;
+    const engine::LightInstance& placed = context.scene.lightInstances[light.slot];
+    CascadeOptions options = cascadeOptions(light.settings, fitOptions);
+    options.count = plan.cascadeCount;
+    plan.cascades = fitDirectionalCascades(placed, context.scene.lights[placed.light], context.bounds,
+                                           context.everything,
+                                           {context.camera.eyeToWorld, context.camera.projection}, options);
+    // Nothing to draw in any cascade (or no cascade: no visible receiver) is no map at all.
+    bool empty = true;
+    for (const LightView& cascade : plan.cascades.cascades) empty = empty && cascade.empty;
+    return {plan.cascades.valid, empty, plan.cascades.invalidReason};
+}
+
+void CascadedMapProjection::decideCache(LightState& light, const engine::Scene& scene,
+                                        std::uint64_t sceneGeneration, bool cacheMaps) const {
+    LightShadowFrame& plan = light.frame;
+    const std::size_t count = plan.cascades.cascades.size();
+    plan.cascadeKeys.assign(count, 0);
+    plan.cascadeHits.assign(count, false);
+    light.renderedCascadeKeys.resize(count, 0);
+    engine::Hasher combined;
+    for (std::size_t c = 0; c < count; ++c) {
+        plan.cascadeKeys[c] =
+            withDepthSettings(cascadeCacheKey(light, static_cast<int>(c), scene, sceneGeneration), light.settings);
+        plan.cascadeHits[c] = cacheMaps && plan.cascadeKeys[c] == light.renderedCascadeKeys[c];
+        combined.add(plan.cascadeKeys[c]);
+    }
+    plan.mapKey = combined.value();
+    plan.cacheHit = std::find(plan.cascadeHits.begin(), plan.cascadeHits.end(), false) == plan.cascadeHits.end();
+}
+
+std::vector<MapLayer> CascadedMapProjection::layers(const LightState& light) const {
+    // One layer per cascade; one whose slice holds no receiver is cleared (reads "far").
+    // Layers still right from an earlier frame keep their depth.
+    std::vector<MapLayer> out;
+    const std::vector<LightView>& cascades = light.frame.cascades.cascades;
+    for (std::size_t c = 0; c < cascades.size(); ++c) {
+        if (light.frame.cascadeHits[c]) continue;
+        const int layer = static_cast<int>(c);
+        out.push_back({layer, cascades[c].viewProjection(), !cascades[c].empty, layer, light.frame.cascadeKeys[c]});
+    }
+    return out;
+}
+
+const LightView& CascadedMapProjection::finestView(const LightState& light) const {
+    // The nearest cascade that draws anything has the smallest texels.
+    for (const LightView& view : light.frame.cascades.cascades)
+        if (!view.empty) return view;
+    return light.frame.cascades.cascades.front();
+}
+
+bool CascadedMapProjection::packLookup(const LightState& light, const LookupContext& context, ShadowBlock& block,
+                                       HookGlsl::Lookup& lookup) const {
+    const CascadeViews& views = light.frame.cascades;
+    std::vector<glm::mat4> planes;  // per cascade, Ee as for a 2D map
+    for (const LightView& cascade : views.cascades) {
+        planes.emplace_back(eyePlanesForCamera(cascade.texgenPlanes(), context.eyeToWorld));
+        if (!isFinite(planes.back())) return false;
+    }
+    const int count = static_cast<int>(planes.size());
+    // The far view depth of each cascade; unused entries never match (visibility.glsl).
+    for (int c = 0; c < kMaxCascades; ++c) {
+        if (c < count) block.cascadePlanes[light.slot * kMaxCascades + c] = planes[c];
+        block.cascadeFar[light.slot][c] =
+            c < count ? static_cast<float>(views.splits[c + 1]) : std::numeric_limits<float>::max();
+    }
+    block.cascadeBlend[light.slot] = glm::vec4(static_cast<float>(light.settings.cascadeBlend),
+                                               static_cast<float>(views.splits.front()), 0.0f, 0.0f);
+    lookup.cascades = count;
+    return true;
+}
+
+void CascadedMapProjection::addShadeKey(const LightState& light, engine::Hasher& key) const {
+    // Which cascade a pixel reads (the splits) and how it fades into the next.
+    for (const double split : light.frame.cascades.splits) key.add(split);
+    key.add(light.settings.cascadeBlend);
+}
+
+void CascadedMapProjection::addStats(const LightState& light, nlohmann::json& stats) const {
+    // Per cascade: the view depths it covers and its map's extent and depth range, in world
+    // units, so a reader sees where the texels went.
+    nlohmann::json cascades = nlohmann::json::array();
+    const LightShadowFrame& frame = light.frame;
+    const CascadeViews& views = frame.cascades;
+    for (std::size_t c = 0; c < views.cascades.size(); ++c) {
+        const LightView& view = views.cascades[c];
+        cascades.push_back({{"from", views.splits[c]},
+                            {"to", views.splits[c + 1]},
+                            {"rendered", !view.empty},
+                            {"cache", c < frame.cascadeHits.size() && frame.cascadeHits[c] ? "hit" : "miss"},
+                            {"width", view.empty ? 0.0 : 2.0 / view.projection[0][0]},
+                            {"depth", view.farPlane - view.nearPlane}});
+    }
+    stats["cascades"] = cascades;
+}
+
+void CascadedMapProjection::describe(const LightState& light, engine::ShadowView& out) const {
+    const CascadeViews& views = light.frame.cascades;
+    for (const LightView& cascade : views.cascades)
+        out.layers.push_back({cascade.lightToWorld, cascade.projection, !cascade.empty});
+    out.cascadeSplits = views.splits;
+    out.nearPlane = views.cascades.front().nearPlane;
+    out.farPlane = views.cascades.front().farPlane;
+}
+
+} // namespace shadowmap

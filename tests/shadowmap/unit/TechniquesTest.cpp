@@ -1,0 +1,136 @@
+// The technique registry (technique/Techniques.h) and the depth techniques' passes, checked on
+// the render graph without GL: every choice the settings accept has its technique, and each
+// way of making a map declares, runs and draws the passes it says it does.
+#include "technique/Techniques.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+namespace {
+
+using shadowmap::DepthTechnique;
+using shadowmap::LightState;
+using shadowmap::MapKind;
+using shadowmap::MapLayer;
+
+// Every value the settings API accepts for `key`, parsed.
+std::vector<shadowmap::ShadowSettings> everyChoiceOf(const std::string& key) {
+    std::vector<shadowmap::ShadowSettings> settings;
+    for (const std::string& choice : shadowmap::settingKey(key).choices)
+        settings.push_back(shadowmap::parseSettings({{key, choice}}, "test", "defaults"));
+    return settings;
+}
+
+TEST(Techniques, EveryVariantButNoneHasTheDepthTechniqueOfItsName) {
+    for (const shadowmap::ShadowSettings& settings : everyChoiceOf("variant")) {
+        const DepthTechnique* technique = shadowmap::depthTechnique(settings.variant);
+        if (settings.variant == shadowmap::Variant::None) {
+            EXPECT_EQ(technique, nullptr);
+            continue;
+        }
+        ASSERT_NE(technique, nullptr) << toString(settings.variant);
+        EXPECT_EQ(technique->variant(), settings.variant);
+    }
+}
+
+TEST(Techniques, EveryFilterHasItsLookup) {
+    for (const shadowmap::ShadowSettings& settings : everyChoiceOf("filter"))
+        EXPECT_EQ(shadowmap::mapLookup(settings.filter).filter(), settings.filter) << toString(settings.filter);
+    EXPECT_TRUE(shadowmap::mapLookup(shadowmap::Filter::Pcf).bilinearCompare());
+    EXPECT_FALSE(shadowmap::mapLookup(shadowmap::Filter::Nearest).bilinearCompare());
+}
+
+TEST(Techniques, EachLightTypeGetsItsProjection) {
+    using Type = engine::Light::Type;
+    EXPECT_EQ(shadowmap::projectionFor(Type::Point, 1).kind(), MapKind::Cube);
+    EXPECT_EQ(shadowmap::projectionFor(Type::Spot, 1).kind(), MapKind::Map2D);
+    EXPECT_EQ(shadowmap::projectionFor(Type::Spot, 3).kind(), MapKind::Map2D);
+    EXPECT_EQ(shadowmap::projectionFor(Type::Directional, 1).kind(), MapKind::Map2D);
+    EXPECT_EQ(shadowmap::projectionFor(Type::Directional, 2).kind(), MapKind::Cascades);
+    EXPECT_EQ(shadowmap::mapProjection(MapKind::None), nullptr);
+    for (const MapKind kind : {MapKind::Map2D, MapKind::Cube, MapKind::Cascades})
+        EXPECT_EQ(shadowmap::mapProjection(kind)->kind(), kind);
+}
+
+struct CountingAllocator : engine::ResourceAllocator {
+    std::uint32_t next = 100;
+    int live = 0;
+    std::uint32_t acquire(const engine::TextureDesc&) override {
+        ++live;
+        return next++;
+    }
+    void release(std::uint32_t, const engine::TextureDesc&) override { --live; }
+};
+
+// One light's layers through a depth technique on a graph whose output is the map: what
+// runs, in which order, and what each pass drew.
+struct LayerRun {
+    std::vector<std::string> declared;  // the technique's passNames
+    std::vector<std::string> executed;  // the graph's execution order
+    // In order: "draw PASS" per caster draw, "peel PASS" for one peeling against a first
+    // layer, "done" when a layer says it is complete.
+    std::vector<std::string> events;
+    int transientsLeft = 0;
+};
+
+LayerRun run(shadowmap::Variant variant, const std::vector<MapLayer>& layers) {
+    LightState light;
+    light.name = "lamp";
+    light.slot = 2;
+    light.settings.variant = variant;
+    light.settings.resolution = 64;
+    light.frame.kind = layers.size() > 1 ? MapKind::Cube : MapKind::Map2D;
+    const DepthTechnique& technique = *shadowmap::depthTechnique(variant);
+    LayerRun result;
+    engine::RenderGraph graph;
+    const engine::TextureDesc desc{64, 64, engine::TextureFormat::Depth24, 1, layers.size() > 1};
+    const engine::ResourceHandle map = graph.importTexture(light.mapResource(), desc, 7);
+    const shadowmap::CasterDraw draw = [&result](engine::PassContext& context, const glm::dmat4&,
+                                                 const shadowmap::DepthPassStyle& style) {
+        result.events.push_back((style.firstLayer != 0 ? "peel " : "draw ") + context.passName());
+    };
+    for (const MapLayer& layer : layers) {
+        technique.passNames(light, layer, result.declared);
+        technique.addLayerPasses({graph, light, map, layer, shadowmap::DepthPassStyle{}, draw,
+                                  [&result] { result.events.push_back("done"); }});
+    }
+    graph.markOutput(map);
+    CountingAllocator allocator;
+    graph.execute(allocator);
+    result.executed = graph.executionOrder();
+    result.transientsLeft = allocator.live;
+    return result;
+}
+
+const std::vector<MapLayer> kOneMap = {{-1, glm::dmat4(1.0), true, -1, 42}};
+// Two cube faces: one with casters, one only cleared.
+const std::vector<MapLayer> kTwoFaces = {{0, glm::dmat4(1.0), true, -1, 0}, {1, glm::dmat4(1.0), false, -1, 42}};
+
+TEST(Techniques, StandardAndBackfaceDrawEachLayerInOnePass) {
+    for (const auto variant : {shadowmap::Variant::Standard, shadowmap::Variant::Backface}) {
+        const LayerRun map = run(variant, kOneMap);
+        EXPECT_EQ(map.declared, std::vector<std::string>{"shadow_2_lamp"});
+        EXPECT_EQ(map.executed, map.declared);
+        EXPECT_EQ(map.events, (std::vector<std::string>{"draw shadow_2_lamp", "done"}));
+        const LayerRun faces = run(variant, kTwoFaces);
+        EXPECT_EQ(faces.declared, (std::vector<std::string>{"shadow_2_lamp_+x", "shadow_2_lamp_-x"}));
+        EXPECT_EQ(faces.executed, faces.declared);
+        // -x is only cleared: no draw, and done all the same.
+        EXPECT_EQ(faces.events, (std::vector<std::string>{"draw shadow_2_lamp_+x", "done", "done"}));
+    }
+}
+
+TEST(Techniques, WooDrawsTheFirstLayerThenPeelsItAndOnlyClearsALayerWithoutCasters) {
+    const LayerRun faces = run(shadowmap::Variant::Woo, kTwoFaces);
+    const std::vector<std::string> passes = {"shadow_2_lamp_+x_first_layer", "shadow_2_lamp_+x", "shadow_2_lamp_-x"};
+    EXPECT_EQ(faces.declared, passes);
+    EXPECT_EQ(faces.executed, passes);
+    // The layer is done after its peel, not after its first layer.
+    EXPECT_EQ(faces.events, (std::vector<std::string>{"draw shadow_2_lamp_+x_first_layer", "peel shadow_2_lamp_+x",
+                                                      "done", "done"}));
+    EXPECT_EQ(faces.transientsLeft, 0);  // the first layer went back to the allocator
+}
+
+} // namespace
