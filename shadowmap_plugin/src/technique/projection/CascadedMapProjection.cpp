@@ -57,13 +57,17 @@ void CascadedMapProjection::decideCache(LightState& light, const engine::Scene& 
 
 std::vector<MapLayer> CascadedMapProjection::layers(const LightState& light) const {
     // One layer per cascade; one whose slice holds no receiver is cleared (reads "far").
-    // Layers still right from an earlier frame keep their depth.
+    // Layers still right from an earlier frame keep their depth (before the cache decision
+    // every layer is to be rendered, with no key yet).
     std::vector<MapLayer> out;
-    const std::vector<LightView>& cascades = light.frame.cascades.cascades;
+    const LightShadowFrame& frame = light.frame;
+    const std::vector<LightView>& cascades = frame.cascades.cascades;
     for (std::size_t c = 0; c < cascades.size(); ++c) {
-        if (light.frame.cascadeHits[c]) continue;
+        const bool decided = c < frame.cascadeHits.size();
+        if (decided && frame.cascadeHits[c]) continue;
         const int layer = static_cast<int>(c);
-        out.push_back({layer, cascades[c].viewProjection(), !cascades[c].empty, layer, light.frame.cascadeKeys[c]});
+        out.push_back({layer, cascades[c].viewProjection(), !cascades[c].empty, layer,
+                       decided ? frame.cascadeKeys[c] : 0});
     }
     return out;
 }
