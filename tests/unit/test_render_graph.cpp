@@ -8,6 +8,7 @@
 #include <chrono>
 #include <thread>
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -41,6 +42,7 @@ const PassReport& reportOf(const RenderGraph& graph, const std::string& name) {
 
 struct GraphTest : ::testing::Test {
     RenderGraph graph;
+    std::map<std::string, ResourceHandle> made;  // transients by name, as their creators got them
     std::vector<std::string> log;
     FakeAllocator allocator{log};
     // An execute callback that logs the pass name.
@@ -70,8 +72,8 @@ TEST_F(GraphTest, TiesKeepDeclarationOrder) {
     const auto target = graph.importTexture("target", kColor, 100);
     graph.markOutput(target);
     for (const char* name : {"c", "a", "b"})
-        graph.addPass(name, [&](PassBuilder& b) { (void)b.create(std::string(name) + "_out", kColor); b.sideEffect(); }, {});
-    graph.addPass("final", [&](PassBuilder& b) { b.read("a_out"); (void)b.write(target); }, {});
+        graph.addPass(name, [&](PassBuilder& b) { made[std::string(name) + "_out"] = b.create(std::string(name) + "_out", kColor); b.sideEffect(); }, {});
+    graph.addPass("final", [&](PassBuilder& b) { b.read(made.at("a_out")); (void)b.write(target); }, {});
     graph.compile();
     EXPECT_EQ(graph.executionOrder(), (std::vector<std::string>{"c", "a", "b", "final"}));
 }
@@ -81,7 +83,7 @@ TEST_F(GraphTest, PassNobodyReadsIsCulledWithReasonAndNeverExecuted) {
     graph.markOutput(target);
     ResourceHandle light1;
     graph.addPass("shadow_light1", [&](PassBuilder& b) { light1 = b.create("shadow_map_light1", kDepth); }, logged("shadow_light1"));
-    graph.addPass("shadow_light2", [&](PassBuilder& b) { (void)b.create("shadow_map_light2", kDepth); }, logged("shadow_light2"));
+    graph.addPass("shadow_light2", [&](PassBuilder& b) { made["shadow_map_light2"] = b.create("shadow_map_light2", kDepth); }, logged("shadow_light2"));
     graph.addPass("lit", [&](PassBuilder& b) { b.read(light1); (void)b.write(target); }, logged("lit"));
     graph.addPass("idle", [](PassBuilder&) {}, logged("idle"));
     graph.execute(allocator);
@@ -98,9 +100,9 @@ TEST_F(GraphTest, PassNobodyReadsIsCulledWithReasonAndNeverExecuted) {
 }
 
 TEST_F(GraphTest, ChainWhoseEndIsCulledIsCulledEntirely) {
-    graph.addPass("a", [](PassBuilder& b) { (void)b.create("a_out", kColor); }, logged("a"));
-    graph.addPass("b", [](PassBuilder& b) { b.read("a_out"); (void)b.create("b_out", kColor); }, logged("b"));
-    graph.addPass("c", [](PassBuilder& b) { b.read("b_out"); (void)b.create("c_out", kColor); }, logged("c"));
+    graph.addPass("a", [this](PassBuilder& b) { made["a_out"] = b.create("a_out", kColor); }, logged("a"));
+    graph.addPass("b", [this](PassBuilder& b) { b.read(made.at("a_out")); made["b_out"] = b.create("b_out", kColor); }, logged("b"));
+    graph.addPass("c", [this](PassBuilder& b) { b.read(made.at("b_out")); made["c_out"] = b.create("c_out", kColor); }, logged("c"));
     graph.execute(allocator);
     EXPECT_TRUE(log.empty());  // nothing executed, no transient acquired
     for (const char* name : {"a", "b", "c"}) EXPECT_TRUE(reportOf(graph, name).culled) << name;
@@ -109,8 +111,8 @@ TEST_F(GraphTest, ChainWhoseEndIsCulledIsCulledEntirely) {
 }
 
 TEST_F(GraphTest, SideEffectPassSurvivesWithItsInputs) {
-    graph.addPass("render", [](PassBuilder& b) { (void)b.create("color", kColor); }, logged("render"));
-    graph.addPass("readback", [](PassBuilder& b) { b.read("color"); b.sideEffect(); }, logged("readback"));
+    graph.addPass("render", [this](PassBuilder& b) { made["color"] = b.create("color", kColor); }, logged("render"));
+    graph.addPass("readback", [this](PassBuilder& b) { b.read(made.at("color")); b.sideEffect(); }, logged("readback"));
     graph.execute(allocator);
     EXPECT_EQ(log, (std::vector<std::string>{"acquire 1 64x64 RGBA8", "exec render", "exec readback",
                                              "release 1"}));
@@ -119,8 +121,8 @@ TEST_F(GraphTest, SideEffectPassSurvivesWithItsInputs) {
 TEST_F(GraphTest, CycleIsRejectedNamingThePasses) {
     // Only imports can close a cycle: "first" reads an import that "second" writes later.
     const auto history = graph.importTexture("history", kColor, 100);
-    graph.addPass("first", [&](PassBuilder& b) { b.read(history); (void)b.create("tmp", kColor); }, {});
-    graph.addPass("second", [&](PassBuilder& b) { b.read("tmp"); (void)b.write(history); b.sideEffect(); }, {});
+    graph.addPass("first", [&](PassBuilder& b) { b.read(history); made["tmp"] = b.create("tmp", kColor); }, {});
+    graph.addPass("second", [&](PassBuilder& b) { b.read(made.at("tmp")); (void)b.write(history); b.sideEffect(); }, {});
     graph.addPass("unrelated", [](PassBuilder& b) { b.sideEffect(); }, {});
     expectGraphError([&] { graph.compile(); }, {"cycle", "'first'", "'second'", "'tmp'", "'history'"});
     try {
@@ -135,36 +137,48 @@ TEST_F(GraphTest, SecondWriterIsRejectedNamingResourceAndBothPasses) {
     graph.addPass("one", [&](PassBuilder& b) { (void)b.write(target); }, {});
     expectGraphError([&] { graph.addPass("two", [&](PassBuilder& b) { (void)b.write(target); }, {}); },
                      {"'target'", "'one'", "'two'"});
-    ResourceHandle made;
-    graph.addPass("maker", [&](PassBuilder& b) { made = b.create("made", kColor); }, {});
-    expectGraphError([&] { graph.addPass("thief", [&](PassBuilder& b) { (void)b.write(made); }, {}); },
+    ResourceHandle byMaker;
+    graph.addPass("maker", [&](PassBuilder& b) { byMaker = b.create("made", kColor); }, {});
+    expectGraphError([&] { graph.addPass("thief", [&](PassBuilder& b) { (void)b.write(byMaker); }, {}); },
                      {"'made'", "'maker'", "'thief'"});
 }
 
 TEST_F(GraphTest, DuplicateNameIsRejectedNamingBothPasses) {
-    graph.addPass("first", [](PassBuilder& b) { (void)b.create("shared", kColor); }, {});
-    expectGraphError([&] { graph.addPass("second", [](PassBuilder& b) { (void)b.create("shared", kColor); }, {}); },
+    graph.addPass("first", [this](PassBuilder& b) { made["shared"] = b.create("shared", kColor); }, {});
+    expectGraphError([&] { graph.addPass("second", [this](PassBuilder& b) { made["shared"] = b.create("shared", kColor); }, {}); },
                      {"'shared'", "'first'", "'second'"});
     expectGraphError([&] { graph.importTexture("shared", kColor, 1); }, {"'shared'", "'first'"});
     expectGraphError([&] { graph.addPass("first", {}, {}); }, {"'first'", "twice"});
 }
 
-TEST_F(GraphTest, UnknownNameReadIsRejectedNamingPassAndResource) {
-    expectGraphError([&] { graph.addPass("lit", [](PassBuilder& b) { b.read("shadow_map_sun"); }, {}); },
-                     {"'lit'", "'shadow_map_sun'"});
+TEST_F(GraphTest, InvalidHandleIsRejectedNamingThePass) {
+    expectGraphError([&] { graph.addPass("lit", [](PassBuilder& b) { b.read(ResourceHandle{}); }, {}); },
+                     {"'lit'", "invalid resource handle"});
+    expectGraphError([&] { graph.addPass("lit", [](PassBuilder& b) { (void)b.write(ResourceHandle{7}); }, {}); },
+                     {"'lit'", "invalid resource handle"});
+}
+
+TEST_F(GraphTest, AHandleOfAnotherGraphIsRejectedNamingThePass) {
+    // A handle kept from an earlier frame's graph (a map's, say) names nothing in this one,
+    // even where its index happens to be in range.
+    RenderGraph lastFrame;
+    const ResourceHandle old = lastFrame.importTexture("shadow_map_0", kDepth, 5);
+    (void)graph.importTexture("target", kColor, 100);
+    expectGraphError([&] { graph.addPass("lit", [&](PassBuilder& b) { b.read(old); }, {}); },
+                     {"'lit'", "another graph"});
+    EXPECT_EQ(graph.importedPhysical(old), 0u);
 }
 
 TEST_F(GraphTest, FailedSetupLeavesGraphUsable) {
     const auto target = graph.importTexture("target", kColor, 100);
     auto failing = [&](PassBuilder& b) {
-        (void)b.create("half_done", kColor);
+        made["half_done"] = b.create("half_done", kColor);
         (void)b.write(target);
-        b.read("missing");
+        b.read(ResourceHandle{});
     };
     EXPECT_THROW(graph.addPass("broken", failing, {}), GraphError);
-    EXPECT_FALSE(graph.find("half_done").valid());
     // The rollback freed both the name and the import's writer.
-    graph.addPass("broken", [&](PassBuilder& b) { (void)b.create("half_done", kColor); (void)b.write(target); }, {});
+    graph.addPass("broken", [&](PassBuilder& b) { made["half_done"] = b.create("half_done", kColor); (void)b.write(target); }, {});
     graph.markOutput(target);
     graph.compile();
     EXPECT_EQ(graph.executionOrder(), (std::vector<std::string>{"broken"}));
@@ -208,14 +222,14 @@ TEST_F(GraphTest, UndeclaredTextureAccessIsRejected) {
 // a -> b -> c in a chain: a_out dies after b, so c_out (same desc) can take its slot, while
 // b_out overlaps both. A depth texture never shares with a color one.
 TEST_F(GraphTest, DisjointEqualDescTransientsShareOneSlotOverlappingDoNot) {
-    graph.addPass("a", [](PassBuilder& b) { (void)b.create("a_out", kColor); }, {});
-    graph.addPass("b", [](PassBuilder& b) { b.read("a_out"); (void)b.create("b_out", kColor); }, {});
-    graph.addPass("c", [](PassBuilder& b) { b.read("b_out"); (void)b.create("c_out", kColor); }, {});
-    graph.addPass("d", [](PassBuilder& b) { b.read("c_out"); (void)b.create("d_depth", kDepth); }, {});
-    graph.addPass("e", [](PassBuilder& b) { b.read("d_depth"); b.sideEffect(); }, {});
+    graph.addPass("a", [this](PassBuilder& b) { made["a_out"] = b.create("a_out", kColor); }, {});
+    graph.addPass("b", [this](PassBuilder& b) { b.read(made.at("a_out")); made["b_out"] = b.create("b_out", kColor); }, {});
+    graph.addPass("c", [this](PassBuilder& b) { b.read(made.at("b_out")); made["c_out"] = b.create("c_out", kColor); }, {});
+    graph.addPass("d", [this](PassBuilder& b) { b.read(made.at("c_out")); made["d_depth"] = b.create("d_depth", kDepth); }, {});
+    graph.addPass("e", [this](PassBuilder& b) { b.read(made.at("d_depth")); b.sideEffect(); }, {});
     graph.compile();
-    const int a = graph.physicalSlot(graph.find("a_out")), bb = graph.physicalSlot(graph.find("b_out"));
-    const int c = graph.physicalSlot(graph.find("c_out")), d = graph.physicalSlot(graph.find("d_depth"));
+    const int a = graph.physicalSlot(made.at("a_out")), bb = graph.physicalSlot(made.at("b_out"));
+    const int c = graph.physicalSlot(made.at("c_out")), d = graph.physicalSlot(made.at("d_depth"));
     EXPECT_EQ(a, c);
     EXPECT_NE(a, bb);
     EXPECT_NE(d, a);
@@ -226,11 +240,11 @@ TEST_F(GraphTest, DisjointEqualDescTransientsShareOneSlotOverlappingDoNot) {
 TEST_F(GraphTest, ExecuteAcquiresBeforeFirstUserAndReleasesAfterLastUser) {
     const auto target = graph.importTexture("target", kColor, 100);
     graph.markOutput(target);
-    graph.addPass("shadow", [](PassBuilder& b) { (void)b.create("shadow_map", kDepth); }, logged("shadow"));
-    graph.addPass("gbuffer", [](PassBuilder& b) { (void)b.create("albedo", kColor); }, logged("gbuffer"));
-    graph.addPass("unused", [](PassBuilder& b) { (void)b.create("junk", kColor); }, logged("unused"));
-    graph.addPass("light", [](PassBuilder& b) { b.read("shadow_map"); b.read("albedo"); (void)b.create("hdr", kColor); }, logged("light"));
-    graph.addPass("tonemap", [&](PassBuilder& b) { b.read("hdr"); (void)b.write(target); }, logged("tonemap"));
+    graph.addPass("shadow", [this](PassBuilder& b) { made["shadow_map"] = b.create("shadow_map", kDepth); }, logged("shadow"));
+    graph.addPass("gbuffer", [this](PassBuilder& b) { made["albedo"] = b.create("albedo", kColor); }, logged("gbuffer"));
+    graph.addPass("unused", [this](PassBuilder& b) { made["junk"] = b.create("junk", kColor); }, logged("unused"));
+    graph.addPass("light", [this](PassBuilder& b) { b.read(made.at("shadow_map")); b.read(made.at("albedo")); made["hdr"] = b.create("hdr", kColor); }, logged("light"));
+    graph.addPass("tonemap", [&](PassBuilder& b) { b.read(made.at("hdr")); (void)b.write(target); }, logged("tonemap"));
     graph.execute(allocator);
     EXPECT_EQ(log, (std::vector<std::string>{
                        "acquire 1 256x256 Depth32F", "exec shadow",
@@ -241,8 +255,8 @@ TEST_F(GraphTest, ExecuteAcquiresBeforeFirstUserAndReleasesAfterLastUser) {
 }
 
 TEST_F(GraphTest, ThrowingPassReleasesWhatWasAcquired) {
-    graph.addPass("make", [](PassBuilder& b) { (void)b.create("tmp", kColor); }, logged("make"));
-    graph.addPass("boom", [](PassBuilder& b) { b.read("tmp"); b.sideEffect(); },
+    graph.addPass("make", [this](PassBuilder& b) { made["tmp"] = b.create("tmp", kColor); }, logged("make"));
+    graph.addPass("boom", [this](PassBuilder& b) { b.read(made.at("tmp")); b.sideEffect(); },
                   [](PassContext&) { throw std::runtime_error("boom"); });
     EXPECT_THROW(graph.execute(allocator), std::runtime_error);
     EXPECT_EQ(log, (std::vector<std::string>{"acquire 1 64x64 RGBA8", "exec make", "release 1"}));
@@ -281,7 +295,7 @@ TEST_F(GraphTest, TimingCallsFinishAfterEachPass) {
 TEST_F(GraphTest, GraphvizMarksCulledPassesDashedWithReason) {
     const auto target = graph.importTexture("target", kColor, 100);
     graph.markOutput(target);
-    graph.addPass("shadow_light2", [](PassBuilder& b) { (void)b.create("shadow_map_light2", kDepth); }, {});
+    graph.addPass("shadow_light2", [this](PassBuilder& b) { made["shadow_map_light2"] = b.create("shadow_map_light2", kDepth); }, {});
     graph.addPass("lit \"main\"", [&](PassBuilder& b) { (void)b.write(target); }, {});
     graph.compile();
     const std::string dot = graph.graphviz();

@@ -66,25 +66,20 @@ struct PassSummary {
     engine::PassReport last;
 };
 
-// A light's map time over the timed frames: the median of each of its passes, summed.
-// `rendered` is false when no timed frame drew the map (served from the cache every time,
-// e.g. a still light after warm-up, or the light has none); `frames` counts the timed frames
-// that drew it.
+// A light's map time over the timed frames: the median, over the frames that drew its map,
+// of its passes' time that frame (FrameResult::shadowPassMs). `rendered` is false when no
+// timed frame drew the map (served from the cache every time, e.g. a still light after
+// warm-up, or the light has none); `frames` counts the timed frames that drew it.
 struct MapTime {
     double ms = 0.0;
     bool rendered = false;
     int frames = 0;
 };
-MapTime mapTime(const engine::ShadowView& view, const std::map<std::string, PassSummary>& passes) {
-    MapTime time;
-    for (const std::string& pass : view.passes) {
-        const auto found = passes.find(pass);
-        if (found == passes.end() || found->second.wallMs.empty()) continue;
-        time.ms += tools::median(found->second.wallMs);
-        time.rendered = true;
-        time.frames = std::max(time.frames, found->second.framesRun);
-    }
-    return time;
+using MapTimes = std::map<int, std::vector<double>>;  // light slot -> ms of each frame that drew its map
+MapTime mapTime(const engine::ShadowView& view, const MapTimes& times) {
+    const auto found = times.find(view.slot);
+    if (found == times.end() || found->second.empty()) return {};
+    return {tools::median(found->second), true, static_cast<int>(found->second.size())};
 }
 
 // engine::mapKindName for the printed table, which says how many cascades: "csm 3".
@@ -94,7 +89,7 @@ std::string mapLabel(const engine::ShadowView& view) {
 
 nlohmann::json statsJson(const RenderOptions& options, const std::vector<double>& frameMs,
                          const std::vector<std::string>& order,
-                         const std::map<std::string, PassSummary>& passes,
+                         const std::map<std::string, PassSummary>& passes, const MapTimes& mapTimes,
                          const engine::FrameResult& last) {
     nlohmann::json stats;
     stats["scene"] = options.scene;
@@ -120,7 +115,7 @@ nlohmann::json statsJson(const RenderOptions& options, const std::vector<double>
     // rather than pass names, which may change.
     nlohmann::json maps = nlohmann::json::array();
     for (const engine::ShadowView& view : last.shadowViews) {
-        const MapTime time = mapTime(view, passes);
+        const MapTime time = mapTime(view, mapTimes);
         maps.push_back({{"light", view.name}, {"slot", view.slot}, {"variant", view.variant},
                         {"map", engine::mapKindName(view)}, {"map_ms", time.rendered ? nlohmann::json(time.ms) : nlohmann::json(nullptr)},
                         {"map_cached", view.hasMap && !time.rendered}, {"frames_rendered", time.frames}});
@@ -135,7 +130,7 @@ nlohmann::json statsJson(const RenderOptions& options, const std::vector<double>
 // truth (docs/metrics.md, percent of the evaluation set), printed and returned for --stats.
 nlohmann::json printLightErrors(engine::Renderer& renderer, const engine::Scene& scene,
                                 const engine::FrameCamera& camera,
-                                const std::map<std::string, PassSummary>& passes) {
+                                const MapTimes& mapTimes) {
     evaluation::ShadowEvaluator evaluator(renderer, scene);
     const evaluation::ViewResult view = evaluator.evaluate(camera, 0);
     std::printf("  %-20s %-9s %6s %9s %8s %8s %8s %12s\n", "light", "variant", "map", "map ms",
@@ -143,7 +138,7 @@ nlohmann::json printLightErrors(engine::Renderer& renderer, const engine::Scene&
     nlohmann::json lights = nlohmann::json::array();
     for (const evaluation::LightResult& light : view.lights) {
         // A map served from the cache in every timed frame has no time to report, and says so.
-        const MapTime time = mapTime(light.view, passes);
+        const MapTime time = mapTime(light.view, mapTimes);
         const truth::ShadowErrors& e = light.errors;
         char shownTime[32];
         std::snprintf(shownTime, sizeof shownTime, time.rendered ? "%.2f" : !light.view.hasMap ? "-" : "cached",
@@ -240,6 +235,7 @@ int run(const RenderOptions& options, std::unique_ptr<engine::GlContext>& contex
     std::vector<double> frameMs;
     std::vector<std::string> order;
     std::map<std::string, PassSummary> passes;
+    MapTimes mapTimes;
     engine::FrameResult last;
     nlohmann::json shadeCacheFrames = nlohmann::json::array();  // per timed frame
     int framesComputingShade = 0;  // timed frames whose lit pass recomputed a cacheable light
@@ -260,19 +256,20 @@ int run(const RenderOptions& options, std::unique_ptr<engine::GlContext>& contex
             request.camera.eyeToWorld = engine::orbitTransform(request.camera.eyeToWorld, orbitCenter, kOrbitStep);
         last = renderer.renderFrame(request);
         frameMs.push_back(last.frameMs);
-        shadeCacheFrames.push_back(last.shadeCache);
+        shadeCacheFrames.push_back(last.shadeCache.toJson());
         framesLimitingLookups += last.footprintLimitedLights.empty() ? 0 : 1;
-        for (const char* recomputed : {"computed", "moving"})
-            if (!last.shadeCache.value(recomputed, nlohmann::json::array()).empty()) {
-                ++framesComputingShade;
-                break;
-            }
+        framesComputingShade += last.shadeCache.recomputed() ? 1 : 0;
         for (const engine::PassReport& report : last.passes) {
             auto [it, inserted] = passes.try_emplace(report.name);
             if (inserted) order.push_back(report.name);
             if (!report.culled) it->second.wallMs.push_back(report.wallMs);
             it->second.framesRun += report.culled ? 0 : 1;
             it->second.last = report;
+        }
+        for (const engine::ShadowView& view : last.shadowViews) {
+            bool ran = false;
+            const double ms = last.shadowPassMs(view, ran);
+            if (ran) mapTimes[view.slot].push_back(ms);
         }
     }
     if ((!options.shadowMasks.empty() || !options.comparisons.empty()) && !last.shadowTermProvided)
@@ -311,8 +308,8 @@ int run(const RenderOptions& options, std::unique_ptr<engine::GlContext>& contex
                     static_cast<unsigned long long>(pass.last.draws),
                     static_cast<unsigned long long>(pass.last.triangles), state.c_str());
     }
-    const nlohmann::json& shadeCache = last.shadeCache;
-    if (shadeCache.value("layers", 0) > 0)
+    const nlohmann::json shadeCache = last.shadeCache.toJson();
+    if (last.shadeCache.layers > 0)
         std::printf("  shade cache: last frame fetched lights %s, computed %s, moving %s, uncached %s; "
                     "lights recomputed in %d of %d frames\n",
                     shadeCache["fetched"].dump().c_str(), shadeCache["computed"].dump().c_str(),
@@ -323,9 +320,9 @@ int run(const RenderOptions& options, std::unique_ptr<engine::GlContext>& contex
                     "%d regions); lookups limited in %d of %d frames\n",
                     nlohmann::json(last.footprintLimitedLights).dump().c_str(), last.shadingRegions,
                     framesLimitingLookups, options.frames);
-    nlohmann::json stats = statsJson(options, frameMs, order, passes, last);
+    nlohmann::json stats = statsJson(options, frameMs, order, passes, mapTimes, last);
     stats["shade_cache"] = shadeCacheFrames;
-    if (options.truth) stats["lights"] = printLightErrors(renderer, scene, request.camera, passes);
+    if (options.truth) stats["lights"] = printLightErrors(renderer, scene, request.camera, mapTimes);
     if (!options.stats.empty()) engine::writeFileAtomically(options.stats, stats.dump(2));
     if (!options.graphDot.empty()) engine::writeFileAtomically(options.graphDot, last.graphviz);
     return 0;

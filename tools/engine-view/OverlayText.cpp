@@ -17,16 +17,13 @@ std::string format(const char* pattern, auto... values) {
 
 } // namespace
 
-std::string OverlayText::shadeSource(const nlohmann::json& shadeCache, int slot) {
-    static const std::pair<const char*, const char*> kSources[] = {
-        {"fetched", "shade reused"}, {"computed", "shade computed"}, {"moving", "shade moving"},
-        {"uncached", "shade live"}, {"constant", "shade constant"}};
-    for (const auto& [key, text] : kSources) {
-        const auto list = shadeCache.find(key);
-        if (list == shadeCache.end() || !list->is_array()) continue;
-        for (const nlohmann::json& entry : *list)
-            if (entry.is_number_integer() && entry.get<int>() == slot) return text;
-    }
+std::string OverlayText::shadeSource(const engine::ShadeCacheReport& shadeCache, int slot) {
+    const std::pair<const std::vector<int>*, const char*> sources[] = {
+        {&shadeCache.fetched, "shade reused"}, {&shadeCache.computed, "shade computed"},
+        {&shadeCache.moving, "shade moving"},  {&shadeCache.uncached, "shade live"},
+        {&shadeCache.constant, "shade constant"}};
+    for (const auto& [slots, text] : sources)
+        if (std::find(slots->begin(), slots->end(), slot) != slots->end()) return text;
     return {};
 }
 

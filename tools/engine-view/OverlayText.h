@@ -27,7 +27,7 @@ public:
     // Where the frame's lit pass took light `slot`'s shade from, from FrameResult::shadeCache:
     // "shade reused" (shade cache), "shade computed" (and cached), "shade live" (evaluated,
     // not cached), "shade constant", or "" when the frame does not say.
-    static std::string shadeSource(const nlohmann::json& shadeCache, int slot);
+    static std::string shadeSource(const engine::ShadeCacheReport& shadeCache, int slot);
 
 private:
     std::map<int, double> lastMs_;  // by light slot

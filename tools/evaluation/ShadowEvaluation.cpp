@@ -37,13 +37,13 @@ ViewResult ShadowEvaluator::evaluate(const engine::FrameCamera& camera, int fram
     request.timing = false;
     const std::vector<engine::ShadowView> views = renderer_.renderFrame(request).shadowViews;
     for (const engine::ShadowView& view : views)
-        if (view.variant != "none") request.shadowMaskSlots.push_back(view.slot);
+        if (view.castsShadows) request.shadowMaskSlots.push_back(view.slot);
     if (request.shadowMaskSlots.empty()) return result;
     renderer_.renderFrame(request);
 
     const truth::SurfaceBuffer surfaces = capture_.capture(scene_, renderer_.gpu(), camera);
     for (const engine::ShadowView& view : views) {
-        if (view.variant == "none") continue;
+        if (!view.castsShadows) continue;
         LightResult out;
         out.light = view.name;
         out.slot = view.slot;
@@ -77,7 +77,7 @@ std::vector<LightShimmer> ShadowEvaluator::shimmer(const std::vector<engine::Fra
     engine::FrameRequest request;
     request.camera = path.front();
     for (const engine::ShadowView& view : renderer_.renderFrame(request).shadowViews)
-        if (view.variant != "none") {
+        if (view.castsShadows) {
             request.shadowMaskSlots.push_back(view.slot);
             lights.push_back({view.name, view.slot, {}});
         }

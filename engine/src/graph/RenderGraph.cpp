@@ -3,6 +3,7 @@
 #include "engine/graph/RenderGraph.h"
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 
 namespace engine {
@@ -23,7 +24,16 @@ int attachableLayers(const TextureDesc& desc) { return desc.cube ? 6 * desc.laye
 ResourceHandle RenderGraph::importTexture(const std::string& name, const TextureDesc& desc,
                                           std::uint32_t physical) {
     Resource resource{.name = name, .desc = desc, .imported = true, .physical = physical};
-    return {addResource(std::move(resource), -1)};
+    return handleOf(addResource(std::move(resource), -1));
+}
+
+std::uint64_t RenderGraph::nextSerial() {
+    static std::atomic<std::uint64_t> serial{0};
+    return ++serial;
+}
+
+bool RenderGraph::owns(ResourceHandle handle) const {
+    return handle.graph == serial_ && handle.index >= 0 && handle.index < static_cast<int>(resources_.size());
 }
 
 int RenderGraph::addResource(Resource resource, int pass) {
@@ -46,14 +56,17 @@ int RenderGraph::addResource(Resource resource, int pass) {
 }
 
 const RenderGraph::Resource& RenderGraph::resourceAt(ResourceHandle handle, int pass) const {
-    if (handle.index < 0 || handle.index >= static_cast<int>(resources_.size()))
+    if (handle.valid() && handle.graph != 0 && handle.graph != serial_)
+        throw GraphError("pass " + quoted(passes_[pass].name) + ": resource handle " + std::to_string(handle.index) +
+                         " of another graph (kept from an earlier frame?)");
+    if (!owns(handle))
         throw GraphError("pass " + quoted(passes_[pass].name) + ": invalid resource handle " +
                          std::to_string(handle.index));
     return resources_[handle.index];
 }
 
-void RenderGraph::addPass(std::string name, std::function<void(PassBuilder&)> setup,
-                          std::function<void(PassContext&)> execute) {
+PassId RenderGraph::addPass(std::string name, std::function<void(PassBuilder&)> setup,
+                            std::function<void(PassContext&)> execute) {
     for (const Pass& pass : passes_)
         if (pass.name == name) throw GraphError("pass " + quoted(name) + " declared twice");
     passes_.push_back(Pass{.name = std::move(name), .execute = std::move(execute)});
@@ -73,35 +86,34 @@ void RenderGraph::addPass(std::string name, std::function<void(PassBuilder&)> se
         passes_.pop_back();
         throw;
     }
+    return PassId{index};
 }
 
 void RenderGraph::markOutput(ResourceHandle resource) {
-    if (resource.index < 0 || resource.index >= static_cast<int>(resources_.size()))
-        throw GraphError("markOutput: invalid resource handle " + std::to_string(resource.index));
+    if (!owns(resource))
+        throw GraphError("markOutput: resource handle " + std::to_string(resource.index) +
+                         (resource.valid() && resource.graph != 0 && resource.graph != serial_ ? " of another graph"
+                                                                                               : " invalid"));
     resources_[resource.index].output = true;
     compiled_ = false;
 }
 
-ResourceHandle RenderGraph::find(const std::string& name) const {
-    auto it = resourceByName_.find(name);
-    return it == resourceByName_.end() ? ResourceHandle{} : ResourceHandle{it->second};
-}
-
 std::uint32_t RenderGraph::importedPhysical(ResourceHandle resource) const {
-    if (!resource.valid() || resource.index >= static_cast<int>(resources_.size())) return 0;
+    if (!owns(resource)) return 0;
     const Resource& found = resources_[resource.index];
     return found.imported ? found.physical : 0;
 }
 
 const TextureDesc& RenderGraph::descOf(ResourceHandle resource) const {
-    return resources_.at(resource.index).desc;
+    if (!owns(resource)) throw GraphError("descOf: resource handle " + std::to_string(resource.index) + " not of this graph");
+    return resources_[resource.index].desc;
 }
 
 ResourceHandle PassBuilder::create(const std::string& name, const TextureDesc& desc) {
     RenderGraph::Resource resource{.name = name, .desc = desc};
     const int index = graph_.addResource(std::move(resource), pass_);
     graph_.passes_[pass_].writes.push_back(index);
-    return {index};
+    return graph_.handleOf(index);
 }
 
 ResourceHandle PassBuilder::read(ResourceHandle handle) {
@@ -114,14 +126,6 @@ ResourceHandle PassBuilder::read(ResourceHandle handle) {
                          ", which it writes itself");
     if (!contains(pass.reads, handle.index)) pass.reads.push_back(handle.index);
     return handle;
-}
-
-ResourceHandle PassBuilder::read(const std::string& name) {
-    const ResourceHandle handle = graph_.find(name);
-    if (!handle.valid())
-        throw GraphError("pass " + quoted(graph_.passes_[pass_].name) + " reads unknown resource " +
-                         quoted(name));
-    return read(handle);
 }
 
 ResourceHandle PassBuilder::write(ResourceHandle handle) { return write(handle, -1); }

@@ -142,7 +142,10 @@ void RenderGraph::compile() {
     planLifetimes();
 
     reports_.assign(passes_.size(), PassReport{});
-    for (std::size_t p = 0; p < passes_.size(); ++p) reports_[p].name = passes_[p].name;
+    for (std::size_t p = 0; p < passes_.size(); ++p) {
+        reports_[p].name = passes_[p].name;
+        for (const int r : passes_[p].reads) reports_[p].reads.push_back(handleOf(r));
+    }
     for (std::size_t position = 0; position < order_.size(); ++position)
         reports_[order_[position]].order = static_cast<int>(position);
     for (std::size_t p = 0; p < passes_.size(); ++p) {
@@ -174,7 +177,7 @@ std::vector<std::string> RenderGraph::executionOrder() const {
 }
 
 int RenderGraph::physicalSlot(ResourceHandle resource) const {
-    if (resource.index < 0 || resource.index >= static_cast<int>(resources_.size())) return -1;
+    if (!owns(resource)) return -1;
     return resources_[resource.index].slot;
 }
 

@@ -16,21 +16,19 @@ namespace {
 // Which lights the shaded image took from the shade cache, which it recomputed (and
 // cached), which it evaluated without storing because they keep changing, which it
 // evaluated without caching and which had one shade everywhere, by slot.
-nlohmann::json shadeCacheStats(const ShadeCache::Plan& plan) {
-    nlohmann::json fetched = nlohmann::json::array(), computed = nlohmann::json::array(),
-                   moving = nlohmann::json::array(), uncached = nlohmann::json::array(),
-                   constant = nlohmann::json::array();
-    for (std::size_t slot = 0; slot < plan.sources.size(); ++slot) {
+ShadeCacheReport shadeCacheReport(const ShadeCache::Plan& plan) {
+    ShadeCacheReport report;
+    report.layers = plan.layers;
+    for (int slot = 0; slot < static_cast<int>(plan.sources.size()); ++slot) {
         switch (plan.sources[slot]) {
-        case ShadeCache::Source::Fetch: fetched.push_back(slot); break;
-        case ShadeCache::Source::Compute: computed.push_back(slot); break;
-        case ShadeCache::Source::Moving: moving.push_back(slot); break;
-        case ShadeCache::Source::Inline: uncached.push_back(slot); break;
-        case ShadeCache::Source::Constant: constant.push_back(slot); break;
+        case ShadeCache::Source::Fetch: report.fetched.push_back(slot); break;
+        case ShadeCache::Source::Compute: report.computed.push_back(slot); break;
+        case ShadeCache::Source::Moving: report.moving.push_back(slot); break;
+        case ShadeCache::Source::Inline: report.uncached.push_back(slot); break;
+        case ShadeCache::Source::Constant: report.constant.push_back(slot); break;
         }
     }
-    return {{"layers", plan.layers}, {"fetched", fetched}, {"computed", computed},
-            {"moving", moving}, {"uncached", uncached}, {"constant", constant}};
+    return report;
 }
 
 } // namespace
@@ -141,7 +139,7 @@ FrameResult Renderer::renderFrame(const FrameRequest& request) {
     for (const int slot : request.shadowMapSlots) {
         const ShadowView* view = result.shadowView(slot);
         if (!view || !view->hasMap) continue;
-        const ResourceHandle resource = graph.find(view->mapResource);
+        const ResourceHandle resource = view->map;
         const std::uint32_t texture = graph.importedPhysical(resource);
         if (!texture || !isDepthFormat(graph.descOf(resource).format)) continue;
         const TextureDesc& desc = graph.descOf(resource);
@@ -156,7 +154,7 @@ FrameResult Renderer::renderFrame(const FrameRequest& request) {
     result.graphviz = graph.graphviz();
     result.shadowTermProvided = frame.lightVisibility().has_value();
     result.litInstancesCulled = litPass_->culledInstances();
-    result.shadeCache = shadeCacheStats(litPass_->shadePlan());
+    result.shadeCache = shadeCacheReport(litPass_->shadePlan());
     result.footprintLimitedLights = litPass_->footprintLimitedLights();
     result.shadingRegions = litPass_->shadingRegionCount();
     for (RenderPlugin* plugin : plugins_) result.pluginStats[plugin->name()] = plugin->frameStats();
@@ -183,14 +181,20 @@ std::vector<std::uint8_t> Renderer::readComparison(int slot) const {
     return found == lightViews_.end() ? std::vector<std::uint8_t>{} : readTextureRGBA8TopDown(found->second);
 }
 
+nlohmann::json ShadeCacheReport::toJson() const {
+    return {{"layers", layers},     {"fetched", fetched},   {"computed", computed},
+            {"moving", moving},     {"uncached", uncached}, {"constant", constant}};
+}
+
 double FrameResult::shadowPassMs(const ShadowView& view, bool& ran) const {
     double total = 0.0;
     ran = false;
-    for (const PassReport& pass : passes)
-        if (!pass.culled && std::find(view.passes.begin(), view.passes.end(), pass.name) != view.passes.end()) {
-            total += pass.wallMs;
-            ran = true;
-        }
+    for (const PassId id : view.passes) {
+        const PassReport& pass = passes.at(id.index);
+        if (pass.culled) continue;
+        total += pass.wallMs;
+        ran = true;
+    }
     return total;
 }
 

@@ -57,9 +57,11 @@ void addDepthPasses(LightShadow& light, engine::Frame& frame, engine::ResourceHa
         recorded = 0;
         std::uint64_t* target = &recorded;
         const std::uint64_t key = layer.keyWhenDone;
-        technique.addLayerPasses({frame.graph(), light, map, layer, style, draw, [target, key] {
+        technique.addLayerPasses({frame.graph(), light, map, layer, style, draw,
+                                  [target, key] {
                                       if (key) *target = key;
-                                  }});
+                                  },
+                                  light.frame.passes});
     }
 }
 

@@ -36,15 +36,6 @@ void LightShadow::ensureMap() {
     map.setParameter(GL_TEXTURE_MAG_FILTER, filter);
 }
 
-std::vector<std::string> LightShadow::depthPasses() const {
-    std::vector<std::string> passes;
-    const DepthTechnique* technique = depthTechnique(settings.variant);
-    const MapProjection* projection = mapProjection(frame.kind);
-    if (!technique || !projection) return passes;
-    for (const MapLayer& layer : projection->layers(*this)) technique->passNames(*this, layer, passes);
-    return passes;
-}
-
 nlohmann::json LightShadow::settingsJson() const {
     return {{"variant", toString(settings.variant)},
             {"resolution", settings.resolution},
@@ -90,6 +81,7 @@ engine::ShadowView LightShadow::view() const {
     out.slot = slot;
     out.name = name;
     out.variant = toString(settings.variant);
+    out.castsShadows = settings.variant != Variant::None;
     out.settings = settingsJson();
     out.hasMap = frame.kind != MapKind::None;
     out.skipReason = frame.skipReason;
@@ -97,8 +89,8 @@ engine::ShadowView LightShadow::view() const {
     if (const MapProjection* projection = mapProjection(frame.kind)) projection->describe(*this, out);
     if (out.hasMap) {
         out.renderedThisFrame = !frame.cacheHit;
-        out.mapResource = mapResource();
-        out.passes = depthPasses();
+        out.map = frame.map;
+        out.passes = frame.passes;
     }
     return out;
 }

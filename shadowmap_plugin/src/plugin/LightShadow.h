@@ -20,8 +20,6 @@ struct LightShadow : LightState {
     // (Re)creates the map when size, format or shape changed (a new texture holds nothing:
     // its rendered keys are reset), with the comparison state and filter the lookup needs.
     void ensureMap();
-    // The passes that render the map this frame, in order.
-    std::vector<std::string> depthPasses() const;
     // The settings in effect, keyed as in extras.shadow.
     nlohmann::json settingsJson() const;
     nlohmann::json stats() const;

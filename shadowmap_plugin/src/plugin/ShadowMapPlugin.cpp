@@ -88,6 +88,7 @@ void ShadowMapPlugin::addPasses(engine::Frame& frame) {
                                            shape.arrayLayers(),
                                            shape.target == MapShape::Target::Cube};
             const engine::ResourceHandle map = frame.graph().importTexture(light.mapResource(), desc, light.map.id());
+            light.frame.map = map;
             if (light.frame.cacheHit) {
                 ++cacheHits_;  // the map is an input nobody writes this frame: no depth pass
             } else {

@@ -29,6 +29,7 @@ struct LayerPasses {
     DepthPassStyle style;
     CasterDraw draw;
     std::function<void()> done;  // call once the layer's last pass has run
+    std::vector<engine::PassId>& added;  // receives each pass added, in order
 };
 
 // What a technique's style may depend on beyond the light.
@@ -44,8 +45,6 @@ public:
     // Its part of the depth passes' style (the offsets and depth direction are set).
     virtual void adjustStyle(LightState&, const DepthStyleContext&, DepthPassStyle&) const {}
     virtual void addLayerPasses(const LayerPasses& passes) const = 0;
-    // The names of the passes addLayerPasses adds for this layer, in order.
-    virtual void passNames(const LightState& light, const MapLayer& layer, std::vector<std::string>& names) const = 0;
 };
 
 } // namespace shadowmap

@@ -6,6 +6,8 @@
 #include "math/LightFrustum.h"
 #include "shadowmap/ShadowSettings.h"
 
+#include "engine/graph/PassId.h"
+#include "engine/graph/ResourceHandle.h"
 #include "engine/scene/Scene.h"
 
 #include <cstdint>
@@ -38,6 +40,8 @@ struct LightShadowFrame {
     std::vector<std::uint64_t> cascadeKeys;  // cascades: each layer's key (MapCacheKey.h)
     std::vector<bool> cascadeHits;           // cascades: the layer was still right
     std::uint64_t mapKey = 0;              // what the map holds this frame (MapCacheKey.h)
+    engine::ResourceHandle map;            // the map in this frame's graph
+    std::vector<engine::PassId> passes;    // the passes rendering it this frame, in order
 };
 
 struct LightState {

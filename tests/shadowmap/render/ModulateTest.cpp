@@ -44,7 +44,7 @@ protected:
         request.shadowMaskSlots = {0};
         engine::FrameResult result;
         for (int i = 0; i <= frame; ++i) result = renderer.renderFrame(request);
-        EXPECT_EQ(result.shadeCache[frame == 0 ? "computed" : "fetched"], nlohmann::json::array({0}));
+        EXPECT_EQ(frame == 0 ? result.shadeCache.computed : result.shadeCache.fetched, std::vector<int>{0});
         return {renderer.readColor(), renderer.readShadowMask(0)};
     }
 };

@@ -7,27 +7,22 @@
 
 #include "engine/scene/SceneEdit.h"
 
+#include <algorithm>
+
 namespace {
 
 using engine::Light;
 using engine::test::SceneBuilder;
 
-// Whether a pass of the frame reads a shadow map, from the graph's DOT: resources are
-// `rN [... label="shadow_map_...`, reads are `rN -> pM`. (The lit pass also reads the shade
-// cache, an input of another kind.)
-bool aPassReadsAShadowMap(const std::string& dot) {
-    std::size_t at = 0;
-    while ((at = dot.find("label=\"shadow_map_", at)) != std::string::npos) {
-        const std::size_t nodeStart = dot.find_first_not_of(' ', dot.rfind('\n', at) + 1);
-        const std::string node = dot.substr(nodeStart, dot.find(' ', nodeStart) - nodeStart);
-        if (dot.find("  " + node + " -> p") != std::string::npos) return true;
-        ++at;
-    }
+// Whether a pass that ran this frame read a light's shadow map (the maps as the plugin's
+// shadow views name them). (The lit pass also reads the shade cache, an input of another kind.)
+bool aPassReadsAShadowMap(const engine::FrameResult& frame) {
+    for (const engine::PassReport& pass : frame.passes)
+        for (const engine::ShadowView& view : frame.shadowViews)
+            if (!pass.culled && view.hasMap &&
+                std::find(pass.reads.begin(), pass.reads.end(), view.map) != pass.reads.end())
+                return true;
     return false;
-}
-
-std::vector<int> slots(const engine::FrameResult& result, const char* source) {
-    return result.shadeCache.at(source).get<std::vector<int>>();
 }
 
 class ShadeCacheTest : public engine::test::ShadowPluginTest {
@@ -70,16 +65,16 @@ protected:
 TEST_F(ShadeCacheTest, AStaticSceneComputesEachShadeOnceThenFetchesIt) {
     Session session(boxTwoShadowedLightsAndOneWithout().builder.build());
     const engine::FrameResult first = session.frame();
-    EXPECT_EQ(first.shadeCache["layers"], 1);
-    EXPECT_EQ(slots(first, "computed"), (std::vector<int>{0, 1}));
-    EXPECT_EQ(slots(first, "constant"), (std::vector<int>{2}));  // variant none: shade 1
-    EXPECT_TRUE(aPassReadsAShadowMap(first.graphviz)) << first.graphviz;
+    EXPECT_EQ(first.shadeCache.layers, 1);
+    EXPECT_EQ(first.shadeCache.computed, (std::vector<int>{0, 1}));
+    EXPECT_EQ(first.shadeCache.constant, (std::vector<int>{2}));  // variant none: shade 1
+    EXPECT_TRUE(aPassReadsAShadowMap(first)) << first.graphviz;
     for (int frame = 1; frame < 4; ++frame) {
         const engine::FrameResult later = session.frame();
-        EXPECT_EQ(slots(later, "fetched"), (std::vector<int>{0, 1})) << "frame " << frame;
-        EXPECT_TRUE(slots(later, "computed").empty()) << "frame " << frame;
+        EXPECT_EQ(later.shadeCache.fetched, (std::vector<int>{0, 1})) << "frame " << frame;
+        EXPECT_TRUE(later.shadeCache.computed.empty()) << "frame " << frame;
         // Every shade reused: the lit pass reads no shadow map (frame 0's reads both).
-        EXPECT_FALSE(aPassReadsAShadowMap(later.graphviz)) << later.graphviz;
+        EXPECT_FALSE(aPassReadsAShadowMap(later)) << later.graphviz;
     }
 }
 
@@ -92,7 +87,7 @@ TEST_F(ShadeCacheTest, WarmUpRendersUntilAFrameCompilesNothingNew) {
     Session session(boxTwoShadowedLightsAndOneWithout().builder.build());
     EXPECT_EQ(session.renderer.warmUp(session.request, 1, 10), 3);
     EXPECT_EQ(session.renderer.warmUp(session.request, 1, 10), 1);
-    EXPECT_EQ(slots(session.frame(), "fetched"), (std::vector<int>{0, 1}));
+    EXPECT_EQ(session.frame().shadeCache.fetched, (std::vector<int>{0, 1}));
     // At least minFrames, at most maxFrames, whatever compiles.
     Session bounded(boxTwoShadowedLightsAndOneWithout().builder.build());
     EXPECT_EQ(bounded.renderer.warmUp(bounded.request, 1, 2), 2);
@@ -106,22 +101,22 @@ TEST_F(ShadeCacheTest, MovingOneLightRecomputesOnlyItsShade) {
     // Moved once: recomputed and stored, the other light fetched.
     engine::orbitNode(session.scene, lit.spot, {0, 0, 0}, 0.1);
     engine::FrameResult result = session.frame();
-    EXPECT_EQ(slots(result, "computed"), (std::vector<int>{0}));
-    EXPECT_EQ(slots(result, "fetched"), (std::vector<int>{1}));
+    EXPECT_EQ(result.shadeCache.computed, (std::vector<int>{0}));
+    EXPECT_EQ(result.shadeCache.fetched, (std::vector<int>{1}));
     // Moved again, and again: moving, recomputed without storing; the frame writes no cache
     // array at all (nothing is computed), the other light is still fetched.
     for (int frame = 2; frame < 4; ++frame) {
         engine::orbitNode(session.scene, lit.spot, {0, 0, 0}, 0.1);
         result = session.frame();
-        EXPECT_EQ(slots(result, "moving"), (std::vector<int>{0})) << "frame " << frame;
-        EXPECT_TRUE(slots(result, "computed").empty()) << "frame " << frame;
-        EXPECT_EQ(slots(result, "fetched"), (std::vector<int>{1})) << "frame " << frame;
+        EXPECT_EQ(result.shadeCache.moving, (std::vector<int>{0})) << "frame " << frame;
+        EXPECT_TRUE(result.shadeCache.computed.empty()) << "frame " << frame;
+        EXPECT_EQ(result.shadeCache.fetched, (std::vector<int>{1})) << "frame " << frame;
     }
     // Stopped: stored on its first still frame, fetched from then on.
     result = session.frame();
-    EXPECT_EQ(slots(result, "computed"), (std::vector<int>{0}));
-    EXPECT_TRUE(slots(result, "moving").empty());
-    EXPECT_EQ(slots(session.frame(), "fetched"), (std::vector<int>{0, 1}));
+    EXPECT_EQ(result.shadeCache.computed, (std::vector<int>{0}));
+    EXPECT_TRUE(result.shadeCache.moving.empty());
+    EXPECT_EQ(session.frame().shadeCache.fetched, (std::vector<int>{0, 1}));
 }
 
 TEST_F(ShadeCacheTest, AMovingLightIsStoredWhenAnotherLightWritesTheCache) {
@@ -138,9 +133,9 @@ TEST_F(ShadeCacheTest, AMovingLightIsStoredWhenAnotherLightWritesTheCache) {
     engine::orbitNode(session.scene, lit.spot, {0, 0, 0}, 0.1);
     engine::orbitNode(session.scene, lit.bulb, {0, 0, 0}, 0.1);
     const engine::FrameResult both = session.frame();
-    EXPECT_EQ(slots(both, "moving"), (std::vector<int>{0}));
-    EXPECT_EQ(slots(both, "computed"), (std::vector<int>{1}));
-    EXPECT_EQ(slots(session.frame(), "fetched"), (std::vector<int>{0, 1}));
+    EXPECT_EQ(both.shadeCache.moving, (std::vector<int>{0}));
+    EXPECT_EQ(both.shadeCache.computed, (std::vector<int>{1}));
+    EXPECT_EQ(session.frame().shadeCache.fetched, (std::vector<int>{0, 1}));
 }
 
 TEST_F(ShadeCacheTest, MovingTheCameraOrAnyMeshRecomputesEveryShade) {
@@ -150,29 +145,29 @@ TEST_F(ShadeCacheTest, MovingTheCameraOrAnyMeshRecomputesEveryShade) {
     session.frame();
 
     session.request.camera.eyeToWorld = engine::orbitTransform(session.request.camera.eyeToWorld, {0, 0, 0}, 0.05);
-    EXPECT_EQ(slots(session.frame(), "computed"), (std::vector<int>{0, 1}));
-    EXPECT_EQ(slots(session.frame(), "fetched"), (std::vector<int>{0, 1}));
+    EXPECT_EQ(session.frame().shadeCache.computed, (std::vector<int>{0, 1}));
+    EXPECT_EQ(session.frame().shadeCache.fetched, (std::vector<int>{0, 1}));
 
     // A mesh no light and no camera sees still counts: the key covers every surface the
     // lit pass may draw, so nothing visible can have changed without a recompute.
     session.scene.nodes[farAway].local[3].x += 1.0;
     session.scene.updateWorldTransforms();
-    EXPECT_EQ(slots(session.frame(), "computed"), (std::vector<int>{0, 1}));
+    EXPECT_EQ(session.frame().shadeCache.computed, (std::vector<int>{0, 1}));
 
     // Two changes in a row (the mesh above, the camera now): every light is moving.
     session.request.camera.eyeToWorld = engine::orbitTransform(session.request.camera.eyeToWorld, {0, 0, 0}, 0.05);
-    EXPECT_EQ(slots(session.frame(), "moving"), (std::vector<int>{0, 1}));
-    EXPECT_EQ(slots(session.frame(), "computed"), (std::vector<int>{0, 1}));
+    EXPECT_EQ(session.frame().shadeCache.moving, (std::vector<int>{0, 1}));
+    EXPECT_EQ(session.frame().shadeCache.computed, (std::vector<int>{0, 1}));
 
     // So does a new target size (the cache arrays are recreated at it).
     session.request.camera.width = 80;
     session.request.camera.height = 60;
-    EXPECT_EQ(slots(session.frame(), "computed"), (std::vector<int>{0, 1}));
-    EXPECT_EQ(slots(session.frame(), "fetched"), (std::vector<int>{0, 1}));
+    EXPECT_EQ(session.frame().shadeCache.computed, (std::vector<int>{0, 1}));
+    EXPECT_EQ(session.frame().shadeCache.fetched, (std::vector<int>{0, 1}));
 
     // A new scene forgets everything.
     session.renderer.setScene(session.scene);
-    EXPECT_EQ(slots(session.frame(), "computed"), (std::vector<int>{0, 1}));
+    EXPECT_EQ(session.frame().shadeCache.computed, (std::vector<int>{0, 1}));
 }
 
 TEST_F(ShadeCacheTest, ShadeCacheOffOrNoShadowedLightMeansNoCache) {
@@ -181,14 +176,14 @@ TEST_F(ShadeCacheTest, ShadeCacheOffOrNoShadowedLightMeansNoCache) {
     Session session(boxTwoShadowedLightsAndOneWithout().builder.build(), config);
     session.frame();
     const engine::FrameResult off = session.frame();
-    EXPECT_EQ(off.shadeCache["layers"], 0);
-    EXPECT_EQ(slots(off, "uncached"), (std::vector<int>{0, 1, 2}));
+    EXPECT_EQ(off.shadeCache.layers, 0);
+    EXPECT_EQ(off.shadeCache.uncached, (std::vector<int>{0, 1, 2}));
 
     SceneBuilder unshadowed;
     unshadowed.addBox("floor", {-10, -0.2, -10}, {10, 0, 10});
     unshadowed.addLight("plain", Light::Type::Spot, {3, 6, 3}, {0, 0, 0}, {{"variant", "none"}});
     Session plain(unshadowed.build());
-    EXPECT_EQ(plain.frame().shadeCache["layers"], 0);
+    EXPECT_EQ(plain.frame().shadeCache.layers, 0);
 }
 
 TEST_F(ShadeCacheTest, ReusedShadeGivesTheImageOfAFreshFrame) {
@@ -235,11 +230,11 @@ TEST_F(ShadeCacheTest, ReusedShadeGivesTheImageOfAFreshFrame) {
         }
         const engine::FrameResult result = cached.renderFrame(request);
         fresh.renderFrame(request);
-        EXPECT_EQ(result.shadeCache["layers"], 2);
-        EXPECT_EQ(slots(result, "constant"), (std::vector<int>{5, 6}));
-        fetchedFrames += !slots(result, "fetched").empty();
+        EXPECT_EQ(result.shadeCache.layers, 2);
+        EXPECT_EQ(result.shadeCache.constant, (std::vector<int>{5, 6}));
+        fetchedFrames += !result.shadeCache.fetched.empty();
         if (frame == 3) {
-            EXPECT_EQ(slots(result, "moving"), (std::vector<int>{0}));
+            EXPECT_EQ(result.shadeCache.moving, (std::vector<int>{0}));
         }
         const std::vector<std::uint8_t> image = cached.readColor(), expected = fresh.readColor();
         ASSERT_EQ(image.size(), expected.size());
@@ -264,8 +259,8 @@ TEST_F(ShadeCacheTest, WithoutMapCachingEveryFrameRendersEveryMapAndShade) {
     request.camera = camera();
     for (int frame = 0; frame < 3; ++frame) {
         const engine::FrameResult result = renderer.renderFrame(request);
-        EXPECT_EQ(slots(result, "uncached"), (std::vector<int>{0, 1})) << "frame " << frame;
-        EXPECT_EQ(slots(result, "constant"), (std::vector<int>{2})) << "frame " << frame;
+        EXPECT_EQ(result.shadeCache.uncached, (std::vector<int>{0, 1})) << "frame " << frame;
+        EXPECT_EQ(result.shadeCache.constant, (std::vector<int>{2})) << "frame " << frame;
         for (const int slot : {0, 1}) {  // spot and bulb: their maps re-rendered every frame
             bool ran = false;
             ASSERT_TRUE(result.shadowView(slot));

@@ -67,7 +67,7 @@ struct CountingAllocator : engine::ResourceAllocator {
 // One light's layers through a depth technique on a graph whose output is the map: what
 // runs, in which order, and what each pass drew.
 struct LayerRun {
-    std::vector<std::string> declared;  // the technique's passNames
+    std::vector<std::string> declared;  // the passes the technique said it added, by name
     std::vector<std::string> executed;  // the graph's execution order
     // In order: "draw PASS" per caster draw, "peel PASS" for one peeling against a first
     // layer, "done" when a layer says it is complete.
@@ -91,14 +91,14 @@ LayerRun run(shadowmap::Variant variant, const std::vector<MapLayer>& layers) {
                                                  const shadowmap::DepthPassStyle& style) {
         result.events.push_back((style.firstLayer != 0 ? "peel " : "draw ") + context.passName());
     };
-    for (const MapLayer& layer : layers) {
-        technique.passNames(light, layer, result.declared);
+    std::vector<engine::PassId> added;
+    for (const MapLayer& layer : layers)
         technique.addLayerPasses({graph, light, map, layer, shadowmap::DepthPassStyle{}, draw,
-                                  [&result] { result.events.push_back("done"); }});
-    }
+                                  [&result] { result.events.push_back("done"); }, added});
     graph.markOutput(map);
     CountingAllocator allocator;
     graph.execute(allocator);
+    for (const engine::PassId pass : added) result.declared.push_back(graph.reports().at(pass.index).name);
     result.executed = graph.executionOrder();
     result.transientsLeft = allocator.live;
     return result;

@@ -279,16 +279,22 @@ TEST(ViewerState, ViewsHaveNames) {
 }
 
 TEST(OverlayText, SaysWhereEachLightsShadeCameFrom) {
-    const nlohmann::json shadeCache = {{"layers", 1}, {"fetched", {0, 2}}, {"computed", {1}},
-                                       {"uncached", nlohmann::json::array()}, {"constant", {3}}};
+    engine::ShadeCacheReport shadeCache;
+    shadeCache.layers = 1;
+    shadeCache.fetched = {0, 2};
+    shadeCache.computed = {1};
+    shadeCache.constant = {3};
     EXPECT_EQ(OverlayText::shadeSource(shadeCache, 0), "shade reused");
     EXPECT_EQ(OverlayText::shadeSource(shadeCache, 1), "shade computed");
     EXPECT_EQ(OverlayText::shadeSource(shadeCache, 2), "shade reused");
     EXPECT_EQ(OverlayText::shadeSource(shadeCache, 3), "shade constant");
-    EXPECT_EQ(OverlayText::shadeSource({{"uncached", {4}}}, 4), "shade live");
-    EXPECT_EQ(OverlayText::shadeSource({{"moving", {5}}}, 5), "shade moving");
+    engine::ShadeCacheReport other;
+    other.uncached = {4};
+    other.moving = {5};
+    EXPECT_EQ(OverlayText::shadeSource(other, 4), "shade live");
+    EXPECT_EQ(OverlayText::shadeSource(other, 5), "shade moving");
     EXPECT_EQ(OverlayText::shadeSource(shadeCache, 7), "");
-    EXPECT_EQ(OverlayText::shadeSource(nlohmann::json::object(), 0), "");
+    EXPECT_EQ(OverlayText::shadeSource({}, 0), "");
 }
 
 } // namespace engine_view

@@ -10,8 +10,10 @@
 //   shadow maps, the final target) and is written either whole by at most one pass, via
 //   write(), or layer by layer (cube faces, array layers) by several passes, each writing
 //   layers no other pass writes, via write(resource, layer).
-//   A duplicate name, a second writer of the same texels, an unknown name or a pass reading
-//   what it writes is a GraphError naming the pass(es) and the resource.
+//   A duplicate name, a second writer of the same texels, an invalid handle or one another
+//   graph returned (kept from an earlier frame), or a pass reading what it writes is a
+//   GraphError naming the pass(es) and the resource. Resources are reached only through
+//   the handles their creators returned: names are for Graphviz and messages.
 // - Dependencies run from a resource's writers to every reader, whatever the declaration
 //   order: a pass reading an import that other passes write runs after all of them and sees
 //   this frame's contents. An import nobody writes is a valid input (its contents come from
@@ -27,6 +29,7 @@
 //   their last user, so the allocator can reuse a texture within the frame. compile() also
 //   plans that reuse statically (physicalSlot / physicalSlotCount): transients of equal desc
 //   with disjoint lifetimes share one slot. To keep contents past the frame, import instead.
+#include "engine/graph/PassId.h"
 #include "engine/graph/PassState.h"
 #include "engine/graph/PassTargets.h"
 #include "engine/graph/ResourceAllocator.h"
@@ -55,7 +58,6 @@ public:
     // A transient texture this pass writes; the name must be new to the graph.
     [[nodiscard]] ResourceHandle create(const std::string& name, const TextureDesc& desc);
     ResourceHandle read(ResourceHandle resource);
-    ResourceHandle read(const std::string& name);  // unknown name -> GraphError
     // Declares this pass the writer of an import (or returns its own transient unchanged).
     [[nodiscard]] ResourceHandle write(ResourceHandle resource);
     // Declares this pass the writer of one layer (array layer or cube face) of an import;
@@ -81,6 +83,7 @@ struct PassReport {
     int order = -1;          // position in execution order, -1 when culled
     double wallMs = 0;       // only measured with ExecuteOptions::timing
     std::uint64_t draws = 0, triangles = 0;
+    std::vector<ResourceHandle> reads;  // what the pass declared it reads
 };
 
 // Handed to a pass's execute callback.
@@ -122,8 +125,8 @@ public:
     ResourceHandle importTexture(const std::string& name, const TextureDesc& desc,
                                  std::uint32_t physical);
     // setup runs now (declaring resources); execute runs in execute(), if not culled.
-    void addPass(std::string name, std::function<void(PassBuilder&)> setup,
-                 std::function<void(PassContext&)> execute);
+    PassId addPass(std::string name, std::function<void(PassBuilder&)> setup,
+                   std::function<void(PassContext&)> execute);
     void markOutput(ResourceHandle resource);  // presented or exported: keeps its writer alive
     void compile();                            // throws GraphError
     void execute(ResourceAllocator& allocator, const ExecuteOptions& options = {});  // compiles if needed
@@ -134,7 +137,6 @@ public:
     std::string graphviz() const;
 
     // Introspection (valid after compile()).
-    ResourceHandle find(const std::string& name) const;  // invalid handle when unknown
     // An import's physical handle and description (for reading a map back after the frame,
     // e.g. a debug view); 0 for transients, whose textures go back to the allocator.
     std::uint32_t importedPhysical(ResourceHandle resource) const;
@@ -169,6 +171,10 @@ private:
         int slot = -1;                    // aliasing plan, from compile()
     };
 
+    static std::uint64_t nextSerial();
+    // Whether `handle` names a resource of this graph.
+    bool owns(ResourceHandle handle) const;
+    ResourceHandle handleOf(int index) const { return {index, serial_}; }
     int addResource(Resource resource, int pass);
     const Resource& resourceAt(ResourceHandle handle, int pass) const;
     const Resource& declaredBy(ResourceHandle handle, int pass) const;  // PassContext's check
@@ -177,6 +183,7 @@ private:
     std::vector<bool> cull();
     void planLifetimes();
 
+    std::uint64_t serial_ = nextSerial();  // in every handle this graph returns
     std::vector<Pass> passes_;
     std::vector<Resource> resources_;
     std::unordered_map<std::string, int> resourceByName_;

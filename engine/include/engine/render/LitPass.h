@@ -3,21 +3,20 @@
 // lit.frag, the plugin's visibility hook inserted. It also draws the shadow-mask views
 // (one light's shade as gray) with the same program, so masks show exactly what shading
 // used.
+// The pieces it is made of: its programs (LitPrograms.h), its lights' block (LitLights.h),
+// the shade cache (ShadeCache.h) and the split by light footprints (FootprintSplit.h).
 #include "engine/config/EngineConfig.h"
-#include "engine/gl/Buffer.h"
 #include "engine/gl/Program.h"
 #include "engine/render/Frame.h"
+#include "engine/render/LitLights.h"
+#include "engine/render/LitPrograms.h"
 #include "engine/render/MaterialShading.h"
 #include "engine/render/ShadeCache.h"
 #include "engine/scene/ScreenFootprint.h"
 
 #include <array>
-#include <compare>
 #include <cstdint>
-#include <map>
-#include <memory>
 #include <string>
-#include <utility>
 #include <vector>
 
 namespace engine {
@@ -46,17 +45,10 @@ public:
     void addLightViewTo(Frame& frame, int slot, LightView view, ResourceHandle target);
 
     // How many lit programs have been compiled so far (Renderer::warmUp waits for it to stop growing).
-    std::size_t programCount() const { return programs_.size(); }
+    std::size_t programCount() const { return programs_.count(); }
 
 private:
-    enum class Output { Color, ShadowMask, Comparison };  // lit.frag's views
-    void addPass(Frame& frame, const std::string& name, ResourceHandle target, Output output,
-                 int maskSlot);
-    // One program per hook source, lights (count and types), output view, shade-cache
-    // plan (fetched / computed lights) and material variant (MaterialShading.h feature
-    // bits), compiled on first use.
-    const gl::Program& programFor(const LightVisibilityHook* hook, const std::string& lightDefinesGlsl,
-                                  Output output, const std::string& loadShadesGlsl, unsigned variant);
+    void addPass(Frame& frame, const std::string& name, ResourceHandle target, LitOutput output, int maskSlot);
     // A pass's programs by material variant; null where no primitive of the scene needs it.
     using Variants = std::array<const gl::Program*, kMaterialFeatureCombinations>;
     // A rectangle of the target drawn with programs of its own: the shaded image's lights
@@ -66,30 +58,14 @@ private:
         Variants programs{};
         bool evaluatesHook = false;  // its programs hold the visibility hook's code
     };
-    // The shaded image's regions and the shade plan of each: one region, the whole target,
-    // unless some evaluated light's footprint leaves enough of the target out.
-    std::vector<std::pair<PixelRect, ShadeCache::Plan>> footprintRegions(const Frame& frame);
-    void uploadLights(const Scene& scene, const FrameCamera& camera);
     void drawScene(const Frame& frame, const std::vector<Region>& regions, PassContext& context);
     // One mesh instance's primitives with `programs`; `current` is the program in use.
     void drawInstance(const Frame& frame, int index, const glm::dmat4& view, const Variants& programs,
                       const gl::Program*& current, PassContext& context);
 
-    // What a lit program is compiled from, without its text: the hook by owner and version
-    // (Frame.h), the light and shade-cache defines (a few lines), output and variant.
-    struct ProgramKey {
-        std::string hookIdentity;  // its owner; empty: no hook (or none of its code needed)
-        std::uint64_t hookVersion = 0;
-        std::string lightDefines, loadShades;
-        Output output = Output::Color;
-        unsigned variant = 0;
-        auto operator<=>(const ProgramKey&) const = default;
-    };
-
     RendererConfig config_;
-    std::map<ProgramKey, std::unique_ptr<gl::Program>> programs_;
-    gl::Buffer lightBuffer_;
-    int lightCount_ = 0;
+    LitPrograms programs_;
+    LitLights lights_;
     int culledInstances_ = 0;
     ShadeCache shadeCache_;
     ShadeCache::Plan shadePlan_;  // of this frame's shaded image

@@ -38,6 +38,20 @@ struct DepthReadback {
     std::vector<float> depth;               // layer after layer, each top row first
 };
 
+// Where the shaded image took each light's shade from (ShadeCache.h), by light slot.
+struct ShadeCacheReport {
+    int layers = 0;                 // of the cache's array (0: nothing cacheable)
+    std::vector<int> fetched;       // reused from the cache
+    std::vector<int> computed;      // recomputed and cached
+    std::vector<int> moving;        // recomputed, not stored: changed two frames running
+    std::vector<int> uncached;      // looked up, no cache
+    std::vector<int> constant;      // one shade everywhere (no map): no lookup
+    // Whether some light's shade was recomputed this frame (computed or moving).
+    bool recomputed() const { return !computed.empty() || !moving.empty(); }
+    // {"layers", "fetched", "computed", "moving", "uncached", "constant"}, for --stats.
+    nlohmann::json toJson() const;
+};
+
 struct FrameResult {
     std::vector<PassReport> passes;
     // Wall time of the whole frame: graph build to glFinish when timing, else to the last
@@ -47,10 +61,7 @@ struct FrameResult {
     std::string graphviz;
     bool shadowTermProvided = false;  // a plugin installed the lit pass's visibility hook
     int litInstancesCulled = 0;       // mesh instances outside the camera frustum (not drawn)
-    // The shaded image's shade cache (ShadeCache.h): {"layers", and light slots
-    // "fetched" (reused), "computed" (recomputed and cached), "moving" (recomputed, not
-    // stored: changed two frames running), "uncached", "constant"}.
-    nlohmann::json shadeCache = nlohmann::json::object();
+    ShadeCacheReport shadeCache;  // the shaded image's
     // The lights (slots) whose shadow the shaded image looked up only inside their screen
     // footprint, and the regions that split the lit pass into (1: not split).
     std::vector<int> footprintLimitedLights;

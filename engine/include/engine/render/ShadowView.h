@@ -3,7 +3,10 @@
 // between the plugin and the tools that check or show shadows (the ray-traced evaluation,
 // engine-render's map readback and timings, engine-view's light camera and map views, the
 // stress tool). Tools read these; the plugin's --stats JSON is a report for people and
-// scripts, and the names of its graph passes and resources are its own business.
+// scripts, and the names of its graph passes and resources are for Graphviz and messages.
+#include "engine/graph/PassId.h"
+#include "engine/graph/ResourceHandle.h"
+
 #include <glm/glm.hpp>
 #include <nlohmann/json.hpp>
 
@@ -25,7 +28,8 @@ struct ShadowView {
     // instances may share one, or have none.
     int slot = -1;
     std::string name;
-    std::string variant;  // "standard", "woo", "backface" or "none"
+    std::string variant;  // for people: "standard", "woo", "backface" or "none"
+    bool castsShadows = false;  // the light is shadowed at all (its variant is not "none")
     // The effective per-light settings, keyed as in glTF extras.shadow.
     nlohmann::json settings = nlohmann::json::object();
     // The map this frame; without one, skipReason says why (variant none, nothing in view...).
@@ -39,10 +43,11 @@ struct ShadowView {
     std::vector<double> cascadeSplits;
     double nearPlane = 0.0, farPlane = 0.0;  // farPlane may be +infinity
     bool renderedThisFrame = false;     // false: the map was still right (served from the cache)
-    // The graph resource holding the map (FrameRequest::shadowMapSlots reads it back), and
-    // the graph passes that render it (their sum is the light's shadow time).
-    std::string mapResource;
-    std::vector<std::string> passes;
+    // The map in this frame's graph (FrameRequest::shadowMapSlots reads it back), and the
+    // passes of this frame's graph that render it (none when cached; their sum is the
+    // light's shadow time: FrameResult::shadowPassMs).
+    ResourceHandle map;
+    std::vector<PassId> passes;
 };
 
 // The kind of `view`'s map as the tools report it: "none", "cube", "cascades" or "2d".

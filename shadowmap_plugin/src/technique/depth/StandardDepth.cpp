@@ -6,7 +6,7 @@ void addSingleDepthPass(const LayerPasses& passes) {
     const engine::ResourceHandle map = passes.map;
     const int layer = passes.layer.layer;
     const DepthPassStyle style = passes.style;
-    passes.graph.addPass(
+    passes.added.push_back(passes.graph.addPass(
         passes.light.depthPass(layer),
         [map, layer, style](engine::PassBuilder& builder) {
             (void)builder.write(map, layer);
@@ -17,13 +17,9 @@ void addSingleDepthPass(const LayerPasses& passes) {
          drawCasters = passes.layer.drawsCasters](engine::PassContext& context) {
             if (drawCasters) draw(context, viewProjection, style);
             done();
-        });
+        }));
 }
 
 void StandardDepth::addLayerPasses(const LayerPasses& passes) const { addSingleDepthPass(passes); }
-
-void StandardDepth::passNames(const LightState& light, const MapLayer& layer, std::vector<std::string>& names) const {
-    names.push_back(light.depthPass(layer.layer));
-}
 
 } // namespace shadowmap

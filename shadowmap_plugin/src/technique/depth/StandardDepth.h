@@ -8,7 +8,6 @@ class StandardDepth : public DepthTechnique {
 public:
     Variant variant() const override { return Variant::Standard; }
     void addLayerPasses(const LayerPasses& passes) const override;
-    void passNames(const LightState& light, const MapLayer& layer, std::vector<std::string>& names) const override;
 };
 
 // The one pass that clears the layer and, when it has casters to draw, draws them: what

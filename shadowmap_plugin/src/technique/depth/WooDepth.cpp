@@ -40,7 +40,7 @@ void WooDepth::addLayerPasses(const LayerPasses& passes) const {
     auto firstLayer = std::make_shared<engine::ResourceHandle>();
     const engine::TextureDesc firstLayerDesc{light.settings.resolution, light.settings.resolution,
                                              graphFormat(light.settings.depthFormat)};
-    passes.graph.addPass(
+    passes.added.push_back(passes.graph.addPass(
         light.firstLayerPass(layer),
         [name = light.firstLayerResource(layer), style, firstLayer, firstLayerDesc](engine::PassBuilder& builder) {
             *firstLayer = builder.create(name, firstLayerDesc);
@@ -49,8 +49,8 @@ void WooDepth::addLayerPasses(const LayerPasses& passes) const {
         },
         [draw = passes.draw, viewProjection, style](engine::PassContext& context) {
             draw(context, viewProjection, style);
-        });
-    passes.graph.addPass(
+        }));
+    passes.added.push_back(passes.graph.addPass(
         light.depthPass(layer),
         [map, layer, firstLayer, style](engine::PassBuilder& builder) {
             builder.read(*firstLayer);
@@ -62,12 +62,7 @@ void WooDepth::addLayerPasses(const LayerPasses& passes) const {
          style](engine::PassContext& context) {
             draw(context, viewProjection, peelStyle(style, settings, context.texture(*firstLayer)));
             done();
-        });
-}
-
-void WooDepth::passNames(const LightState& light, const MapLayer& layer, std::vector<std::string>& names) const {
-    if (layer.drawsCasters) names.push_back(light.firstLayerPass(layer.layer));
-    names.push_back(light.depthPass(layer.layer));
+        }));
 }
 
 } // namespace shadowmap

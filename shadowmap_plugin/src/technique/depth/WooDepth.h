@@ -11,7 +11,6 @@ class WooDepth final : public DepthTechnique {
 public:
     Variant variant() const override { return Variant::Woo; }
     void addLayerPasses(const LayerPasses& passes) const override;
-    void passNames(const LightState& light, const MapLayer& layer, std::vector<std::string>& names) const override;
 };
 
 } // namespace shadowmap
