@@ -33,12 +33,12 @@ void execute(engine::RenderGraph& graph, engine::GlPassTargets& targets) {
 // A graph whose six passes each clear one face of `cube` to (face + 1) / 8, the odd faces
 // in passes that declare no depth writes.
 void addFaceClears(engine::RenderGraph& graph, const engine::gl::Texture& cube) {
-    const engine::ResourceHandle map = graph.importTexture("cube", kCubeDesc, cube.id());
+    engine::ResourceHandle map = graph.importTexture("cube", kCubeDesc, cube.id());
     for (int face = 0; face < 6; ++face)
         graph.addPass(
             "face" + std::to_string(face),
-            [map, face](engine::PassBuilder& builder) {
-                (void)builder.write(map, face);
+            [&map, face](engine::PassBuilder& builder) {  // setup runs inside addPass
+                map = builder.write(map, face);
                 builder.sideEffect();
                 builder.setTargets(engine::PassTargets::depthOnly(map, face, (face + 1) / 8.0f));
                 engine::PassState state;

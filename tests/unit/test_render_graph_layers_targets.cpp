@@ -33,12 +33,13 @@ struct LayersTest : ::testing::Test {
     ResourceHandle cube = graph.importTexture("cube", kCube, 70);
     ResourceHandle color = graph.importTexture("color", kColor, 80);
 
-    // A pass drawing `layer` of the cube into itself, logging its run.
+    // A pass drawing `layer` of the cube into itself, logging its run; `cube` moves on to
+    // the version it writes.
     void addFacePass(int layer) {
         graph.addPass(
             face(layer),
             [this, layer](PassBuilder& builder) {
-                (void)builder.write(cube, layer);
+                cube = builder.write(cube, layer);
                 builder.setTargets(PassTargets::depthOnly(cube, layer, 1.0f));
             },
             [this, layer](PassContext&) { log.push_back("run " + face(layer)); });
@@ -56,14 +57,25 @@ struct LayersTest : ::testing::Test {
 
 } // namespace
 
-TEST_F(LayersTest, EveryFaceWriterRunsBeforeTheReaderWhateverTheDeclarationOrder) {
+TEST_F(LayersTest, AReaderOfTheLastFaceVersionKeepsEveryFace) {
+    // Each face write keeps the other faces of the version before: the last one holds all six.
     graph.markOutput(color);
-    addReader();  // declared first: must still wait for all six writers
     for (int f = 0; f < 6; ++f) addFacePass(f);
+    addReader();
     graph.execute(allocator);
+    EXPECT_EQ(cube.version, 6);
     ASSERT_EQ(log.size(), 7u);
     EXPECT_EQ(log.back(), "run lit");
-    for (int f = 0; f < 6; ++f) EXPECT_EQ(log[f], "run " + face(f));  // ties keep declaration order
+    for (int f = 0; f < 6; ++f) EXPECT_EQ(log[f], "run " + face(f));
+}
+
+TEST_F(LayersTest, AReaderDeclaredBeforeTheFacesSeesTheImportAndKeepsNoFace) {
+    graph.markOutput(color);
+    addReader();
+    for (int f = 0; f < 6; ++f) addFacePass(f);
+    graph.execute(allocator);
+    EXPECT_EQ(log, std::vector<std::string>{"run lit"});
+    for (int f = 0; f < 6; ++f) EXPECT_TRUE(graph.reports().at(f + 1).culled) << face(f);
 }
 
 TEST_F(LayersTest, FaceWritersNobodyReadsAreAllCulledWithTheReason) {
@@ -79,22 +91,22 @@ TEST_F(LayersTest, FaceWritersNobodyReadsAreAllCulledWithTheReason) {
     }
 }
 
-TEST_F(LayersTest, ALayerWrittenTwiceIsRejectedNamingLayerAndBothPasses) {
+TEST_F(LayersTest, AFaceWrittenFromAStaleVersionIsRejectedNamingBothPasses) {
+    const ResourceHandle before = cube;
     addFacePass(3);
-    expectGraphError([&] { graph.addPass("again", [&](PassBuilder& b) { (void)b.write(cube, 3); }, {}); },
-                     {"'again'", "layer 3 of 'cube'", "'face3'"});
+    expectGraphError([&] { graph.addPass("again", [&](PassBuilder& b) { (void)b.write(before, 3); }, {}); },
+                     {"'again'", "'cube' version 0", "'face3' already wrote version 1"});
 }
 
-TEST_F(LayersTest, AWholeWriteAndALayerWriteOfOneImportConflictInEitherOrder) {
-    graph.addPass("whole", [&](PassBuilder& b) { (void)b.write(cube); }, {});
-    expectGraphError([&] { graph.addPass("one_face", [&](PassBuilder& b) { (void)b.write(cube, 0); }, {}); },
-                     {"'one_face'", "layer 0 of 'cube'", "'whole'"});
-
-    RenderGraph other;
-    const ResourceHandle map = other.importTexture("cube", kCube, 70);
-    other.addPass("one_face", [&](PassBuilder& b) { (void)b.write(map, 2); }, {});
-    expectGraphError([&] { other.addPass("whole", [&](PassBuilder& b) { (void)b.write(map); }, {}); },
-                     {"'whole'", "'cube'", "'one_face'"});
+TEST_F(LayersTest, AWholeWriteDropsTheFacesBeforeItAFaceWriteKeepsTheWholeBeforeIt) {
+    graph.markOutput(color);
+    addFacePass(0);
+    graph.addPass("whole", [&](PassBuilder& b) { cube = b.write(cube); }, [&](PassContext&) { log.push_back("run whole"); });
+    addFacePass(2);
+    addReader();
+    graph.execute(allocator);
+    EXPECT_EQ(log, (std::vector<std::string>{"run whole", "run face2", "run lit"}));
+    EXPECT_EQ(graph.reports().front().cullReason, "no surviving pass reads 'cube'");
 }
 
 TEST_F(LayersTest, ALayerOutsideTheTextureIsRejected) {
@@ -191,7 +203,6 @@ TEST_F(LayersTest, TheViewportIsTheFirstTargetsSizeNotTheFirstWrittenTexture) {
 // face by face, their lifetimes are disjoint, so the plan gives all six one physical texture.
 TEST_F(LayersTest, PerFaceTransientsDeclaredFaceByFaceShareOneTexture) {
     graph.markOutput(color);
-    addReader();
     for (int f = 0; f < 6; ++f) {
         ResourceHandle first;
         graph.addPass("first" + std::to_string(f), [&](PassBuilder& b) { first = b.create("first_layer" + std::to_string(f), kFace); },
@@ -200,10 +211,11 @@ TEST_F(LayersTest, PerFaceTransientsDeclaredFaceByFaceShareOneTexture) {
             "peel" + std::to_string(f),
             [&, f](PassBuilder& b) {
                 b.read(first);
-                (void)b.write(cube, f);
+                cube = b.write(cube, f);
             },
             {});
     }
+    addReader();
     graph.compile();
     EXPECT_EQ(graph.physicalSlotCount(), 1);
     EXPECT_EQ(graph.executionOrder().size(), 13u);

@@ -28,12 +28,12 @@ std::string describe(const PassState& state) {
 TEST(RenderGraphPassState, EachPassRunsAfterItsOwnStateWithTheViewportOfItsTarget) {
     RenderGraph graph;
     std::vector<std::string> log;
-    const ResourceHandle map = graph.importTexture("map", {512, 512, TextureFormat::Depth24}, 7);
+    ResourceHandle map = graph.importTexture("map", {512, 512, TextureFormat::Depth24}, 7);
     const ResourceHandle color = graph.importTexture("color", {64, 32, TextureFormat::RGBA8}, 8);
     graph.addPass(
         "depth",
         [&](PassBuilder& builder) {
-            (void)builder.write(map);
+            map = builder.write(map);
             PassState state;
             state.depthTest = PassState::DepthTest::Greater;
             state.cull = PassState::Cull::Front;

@@ -21,8 +21,8 @@ void buildFrame(engine::RenderGraph& graph, int passes) {
     const int post = std::max(1, passes - lights - debug - 1);
     std::vector<engine::ResourceHandle> maps;
     for (int i = 0; i < lights; ++i) {
-        const auto map = graph.importTexture("shadow_map_" + std::to_string(i), kMap, 1000 + i);
-        graph.addPass("shadow_" + std::to_string(i), [map](engine::PassBuilder& b) { (void)b.write(map); },
+        auto map = graph.importTexture("shadow_map_" + std::to_string(i), kMap, 1000 + i);
+        graph.addPass("shadow_" + std::to_string(i), [&map](engine::PassBuilder& b) { map = b.write(map); },
                       [](engine::PassContext&) {});
         maps.push_back(map);
     }

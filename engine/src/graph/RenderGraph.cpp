@@ -24,7 +24,7 @@ int attachableLayers(const TextureDesc& desc) { return desc.cube ? 6 * desc.laye
 ResourceHandle RenderGraph::importTexture(const std::string& name, const TextureDesc& desc,
                                           std::uint32_t physical) {
     Resource resource{.name = name, .desc = desc, .imported = true, .physical = physical};
-    return handleOf(addResource(std::move(resource), -1));
+    return handleOf(addResource(std::move(resource), -1), 0);
 }
 
 std::uint64_t RenderGraph::nextSerial() {
@@ -42,13 +42,13 @@ int RenderGraph::addResource(Resource resource, int pass) {
     if (auto it = resourceByName_.find(resource.name); it != resourceByName_.end()) {
         const Resource& old = resources_[it->second];
         const std::string first =
-            old.imported ? "imported" : "created by pass " + quoted(passes_[old.writers.front().pass].name);
+            old.imported ? "imported" : "created by pass " + quoted(passes_[old.versions.front().writer].name);
         throw GraphError(who + ": resource " + quoted(resource.name) + " already " + first);
     }
     const TextureDesc& d = resource.desc;
     if (d.width <= 0 || d.height <= 0 || d.layers < 1 || (d.cube && d.width != d.height))
         throw GraphError(who + ": resource " + quoted(resource.name) + " has an invalid desc " + toString(d));
-    if (pass >= 0) resource.writers = {Writer{pass, -1}};
+    resource.versions = {Version{pass, {}}};
     resourceByName_.emplace(resource.name, static_cast<int>(resources_.size()));
     resources_.push_back(std::move(resource));
     compiled_ = false;
@@ -59,10 +59,25 @@ const RenderGraph::Resource& RenderGraph::resourceAt(ResourceHandle handle, int 
     if (handle.valid() && handle.graph != 0 && handle.graph != serial_)
         throw GraphError("pass " + quoted(passes_[pass].name) + ": resource handle " + std::to_string(handle.index) +
                          " of another graph (kept from an earlier frame?)");
-    if (!owns(handle))
+    if (!owns(handle) || handle.version < 0 ||
+        handle.version >= static_cast<int>(resources_[handle.index].versions.size()))
         throw GraphError("pass " + quoted(passes_[pass].name) + ": invalid resource handle " +
-                         std::to_string(handle.index));
+                         std::to_string(handle.index) + " version " + std::to_string(handle.version));
     return resources_[handle.index];
+}
+
+// The physical texture holds only the latest version: a pass using an older one would see
+// (or overwrite) what a later-declared write put there, which its declaration says it does
+// not depend on.
+void RenderGraph::checkLatest(ResourceHandle handle, int pass, const char* use) const {
+    const Resource& resource = resources_[handle.index];
+    const int newest = static_cast<int>(resource.versions.size()) - 1;
+    if (handle.version == newest) return;
+    const int overwriter = resource.versions[handle.version + 1].writer;
+    throw GraphError("pass " + quoted(passes_[pass].name) + " " + use + " " + quoted(resource.name) + " version " +
+                     std::to_string(handle.version) + ", but pass " + quoted(passes_[overwriter].name) +
+                     " already wrote version " + std::to_string(handle.version + 1) +
+                     ": use the handle that write returned");
 }
 
 PassId RenderGraph::addPass(std::string name, std::function<void(PassBuilder&)> setup,
@@ -82,7 +97,7 @@ PassId RenderGraph::addPass(std::string name, std::function<void(PassBuilder&)> 
             resourceByName_.erase(resources_[i].name);
         resources_.resize(resourceCount);
         for (Resource& resource : resources_)
-            std::erase_if(resource.writers, [index](const Writer& writer) { return writer.pass == index; });
+            std::erase_if(resource.versions, [index](const Version& version) { return version.writer == index; });
         passes_.pop_back();
         throw;
     }
@@ -113,18 +128,22 @@ ResourceHandle PassBuilder::create(const std::string& name, const TextureDesc& d
     RenderGraph::Resource resource{.name = name, .desc = desc};
     const int index = graph_.addResource(std::move(resource), pass_);
     graph_.passes_[pass_].writes.push_back(index);
-    return graph_.handleOf(index);
+    return graph_.handleOf(index, 0);
 }
 
 ResourceHandle PassBuilder::read(ResourceHandle handle) {
     const auto& resource = graph_.resourceAt(handle, pass_);
     auto& pass = graph_.passes_[pass_];
-    // One writer per resource means there is no "before" version to read: it would be a
-    // self-cycle, so say so plainly instead.
+    // A texture sampled while it is drawn into is a feedback loop in GL, whichever
+    // version the handles name.
     if (contains(pass.writes, handle.index))
         throw GraphError("pass " + quoted(pass.name) + " reads " + quoted(resource.name) +
                          ", which it writes itself");
-    if (!contains(pass.reads, handle.index)) pass.reads.push_back(handle.index);
+    graph_.checkLatest(handle, pass_, "reads");
+    if (!contains(pass.reads, handle.index)) {
+        pass.reads.push_back(handle.index);
+        pass.readVersions.push_back(handle.version);
+    }
     return handle;
 }
 
@@ -137,19 +156,25 @@ ResourceHandle PassBuilder::write(ResourceHandle handle, int layer) {
     if (layer >= attachableLayers(resource.desc))
         throw GraphError("pass " + quoted(pass.name) + " writes " + what + ", which has " +
                          std::to_string(attachableLayers(resource.desc)) + " layers (" + toString(resource.desc) + ")");
-    if (!resource.imported && !resource.writers.empty() && resource.writers.front().pass == pass_) return handle;
-    for (const RenderGraph::Writer& writer : resource.writers) {
-        if (writer.pass == pass_ && writer.layer == layer) return handle;
-        if (writer.layer < 0 || layer < 0 || writer.layer == layer)
-            throw GraphError("pass " + quoted(pass.name) + " writes " + what + ", already written by pass " +
-                             quoted(graph_.passes_[writer.pass].name));
+    const int newest = static_cast<int>(resource.versions.size()) - 1;
+    RenderGraph::Version& latest = graph_.resources_[handle.index].versions.back();
+    // This pass made the latest version already (its own transient, or another layer of
+    // the same write): still that version, from the handle before or after its first write.
+    if (latest.writer == pass_ && handle.version >= newest - 1) {
+        if (layer < 0)
+            latest.layers.clear();
+        else if (!latest.layers.empty() && !contains(latest.layers, layer))
+            latest.layers.push_back(layer);
+        return graph_.latest(handle.index);
     }
+    graph_.checkLatest(handle, pass_, "writes");
     if (contains(pass.reads, handle.index))
         throw GraphError("pass " + quoted(pass.name) + " writes " + quoted(resource.name) +
                          ", which it reads itself");
-    graph_.resources_[handle.index].writers.push_back({pass_, layer});
-    if (!contains(pass.writes, handle.index)) pass.writes.push_back(handle.index);
-    return handle;
+    graph_.resources_[handle.index].versions.push_back(
+        {pass_, layer < 0 ? std::vector<int>{} : std::vector<int>{layer}});
+    pass.writes.push_back(handle.index);
+    return graph_.latest(handle.index);
 }
 
 void PassBuilder::sideEffect() { graph_.passes_[pass_].sideEffect = true; }
@@ -168,8 +193,8 @@ void PassBuilder::setTargets(const PassTargets& targets) {
             throw GraphError("pass " + quoted(pass.name) + ": " + what + " is out of range (" +
                              toString(resource.desc) + ")");
         // A pass that writes only some layers may draw into only those.
-        const bool allowed = std::any_of(resource.writers.begin(), resource.writers.end(), [&](const auto& writer) {
-            return writer.pass == pass_ && (writer.layer < 0 || writer.layer == layer);
+        const bool allowed = std::any_of(resource.versions.begin(), resource.versions.end(), [&](const auto& version) {
+            return version.writer == pass_ && (version.layers.empty() || contains(version.layers, layer));
         });
         if (!allowed) throw GraphError("pass " + quoted(pass.name) + ": " + what + " is not a layer the pass writes");
     };

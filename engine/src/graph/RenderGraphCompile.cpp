@@ -1,8 +1,8 @@
-// compile(): order (rejecting cycles), cull, lifetimes and the aliasing plan.
+// compile(): cull, lifetimes and the aliasing plan. The order is the declaration order:
+// every read names a version an earlier pass wrote (RenderGraph.h).
 #include "engine/graph/RenderGraph.h"
 
 #include <algorithm>
-#include <set>
 
 namespace engine {
 
@@ -10,90 +10,52 @@ namespace {
 std::string quoted(const std::string& name) { return "'" + name + "'"; }
 } // namespace
 
-// ---- Order ------------------------------------------------------------------------------
-// Kahn's algorithm over every pass (culled or not: a cycle is a bug in the declarations
-// either way, and reference counting cannot cull a cycle). Always taking the ready pass
-// declared first keeps the order stable. Passes left over sit on or behind a cycle; walking
-// back through their unfinished predecessors must revisit one, which yields the cycle.
-std::vector<int> RenderGraph::topologicalOrder() const {
-    const int passCount = static_cast<int>(passes_.size());
-    struct Edge { int pass, resource; };  // the pass at the other end, through the resource
-    std::vector<std::vector<Edge>> successors(passCount), predecessors(passCount);
-    std::vector<int> inDegree(passCount, 0);
-    for (int reader = 0; reader < passCount; ++reader)
-        for (int r : passes_[reader].reads)
-            for (const Writer& writer : resources_[r].writers) {
-                successors[writer.pass].push_back({reader, r});
-                predecessors[reader].push_back({writer.pass, r});
-                ++inDegree[reader];
-            }
-
-    std::set<int> ready;
-    for (int p = 0; p < passCount; ++p)
-        if (inDegree[p] == 0) ready.insert(p);
-    std::vector<int> order;
-    while (!ready.empty()) {
-        const int p = *ready.begin();
-        ready.erase(ready.begin());
-        order.push_back(p);
-        for (const Edge& edge : successors[p])
-            if (--inDegree[edge.pass] == 0) ready.insert(edge.pass);
-    }
-    if (static_cast<int>(order.size()) == passCount) return order;
-
-    int p = static_cast<int>(std::find_if(inDegree.begin(), inDegree.end(),
-                                          [](int d) { return d > 0; }) - inDegree.begin());
-    // path[i]: pass path[i].reader reads resource path[i].resource, written by path[i].writer
-    struct Step { int reader, resource, writer; };
-    std::vector<Step> path;
-    std::vector<int> seenAt(passCount, -1);
-    while (seenAt[p] < 0) {
-        seenAt[p] = static_cast<int>(path.size());
-        const Edge& back = *std::find_if(predecessors[p].begin(), predecessors[p].end(),
-                                         [&](const Edge& e) { return inDegree[e.pass] > 0; });
-        path.push_back({p, back.resource, back.pass});
-        p = back.pass;
-    }
-    std::string message = "render graph has a cycle:";
-    for (int i = static_cast<int>(path.size()) - 1; i >= seenAt[p]; --i) {
-        const Resource& resource = resources_[path[i].resource];
-        message += " pass " + quoted(passes_[path[i].writer].name) + " writes " +
-                   quoted(resource.name) + ", read by pass " + quoted(passes_[path[i].reader].name) +
-                   (i > seenAt[p] ? ";" : "");
-    }
-    throw GraphError(message);
-}
-
 // ---- Culling ----------------------------------------------------------------------------
-// Passes and resources form one bipartite graph (pass -> resource it writes, resource -> pass
-// that reads it). A node's reference count is its out-degree, plus one for side-effect
-// passes and output resources. Nodes at zero are unused: popping one releases a reference on
-// every node feeding it, which may drop to zero in turn. Whatever stays above zero survives.
+// Passes and resource versions form one bipartite graph (pass -> version it writes, version
+// -> pass that reads it, version -> the layer write that keeps its other layers). A node's
+// reference count is its out-degree, plus one for side-effect passes and the latest version
+// of an output. Nodes at zero are unused: popping one releases a reference on every node
+// feeding it, which may drop to zero in turn. Whatever stays above zero survives.
 std::vector<bool> RenderGraph::cull() {
     const int passCount = static_cast<int>(passes_.size());
-    const int nodeCount = passCount + static_cast<int>(resources_.size());
+    std::vector<int> firstNode;  // per resource: the node of its version 0
+    int nodeCount = passCount;
+    for (const Resource& resource : resources_) {
+        firstNode.push_back(nodeCount);
+        nodeCount += static_cast<int>(resource.versions.size());
+    }
     std::vector<int> refs(nodeCount, 0);
     for (int p = 0; p < passCount; ++p) {
         refs[p] = static_cast<int>(passes_[p].writes.size()) + (passes_[p].sideEffect ? 1 : 0);
-        for (int r : passes_[p].reads) ++refs[passCount + r];
+        for (std::size_t i = 0; i < passes_[p].reads.size(); ++i)
+            ++refs[firstNode[passes_[p].reads[i]] + passes_[p].readVersions[i]];
     }
-    for (std::size_t r = 0; r < resources_.size(); ++r)
-        if (resources_[r].output) ++refs[passCount + r];
+    for (std::size_t r = 0; r < resources_.size(); ++r) {
+        const std::vector<Version>& versions = resources_[r].versions;
+        if (resources_[r].output) ++refs[firstNode[r] + static_cast<int>(versions.size()) - 1];
+        for (std::size_t v = 1; v < versions.size(); ++v)
+            if (!versions[v].layers.empty()) ++refs[firstNode[r] + static_cast<int>(v) - 1];
+    }
 
     std::vector<int> unused;
     for (int node = 0; node < nodeCount; ++node)
         if (refs[node] == 0) unused.push_back(node);
+    auto release = [&](int feeder) {
+        if (--refs[feeder] == 0) unused.push_back(feeder);
+    };
     while (!unused.empty()) {
         const int node = unused.back();
         unused.pop_back();
-        auto release = [&](int feeder) {
-            if (--refs[feeder] == 0) unused.push_back(feeder);
-        };
         if (node < passCount) {
-            for (int r : passes_[node].reads) release(passCount + r);
-        } else {
-            for (const Writer& writer : resources_[node - passCount].writers) release(writer.pass);
+            for (std::size_t i = 0; i < passes_[node].reads.size(); ++i)
+                release(firstNode[passes_[node].reads[i]] + passes_[node].readVersions[i]);
+            continue;
         }
+        const int r = static_cast<int>(std::upper_bound(firstNode.begin(), firstNode.end(), node) - firstNode.begin()) - 1;
+        const int v = node - firstNode[r];
+        const Version& version = resources_[r].versions[v];
+        if (version.writer >= 0) release(version.writer);
+        if (!version.layers.empty()) release(node - 1);
     }
     std::vector<bool> culled(passCount);
     for (int p = 0; p < passCount; ++p) culled[p] = refs[p] == 0;
@@ -134,17 +96,17 @@ void RenderGraph::planLifetimes() {
 }
 
 void RenderGraph::compile() {
-    const std::vector<int> order = topologicalOrder();
     const std::vector<bool> culled = cull();
     order_.clear();
-    for (int p : order)
+    for (int p = 0; p < static_cast<int>(passes_.size()); ++p)
         if (!culled[p]) order_.push_back(p);
     planLifetimes();
 
     reports_.assign(passes_.size(), PassReport{});
     for (std::size_t p = 0; p < passes_.size(); ++p) {
         reports_[p].name = passes_[p].name;
-        for (const int r : passes_[p].reads) reports_[p].reads.push_back(handleOf(r));
+        for (std::size_t i = 0; i < passes_[p].reads.size(); ++i)
+            reports_[p].reads.push_back(handleOf(passes_[p].reads[i], passes_[p].readVersions[i]));
     }
     for (std::size_t position = 0; position < order_.size(); ++position)
         reports_[order_[position]].order = static_cast<int>(position);
@@ -160,9 +122,14 @@ void RenderGraph::compile() {
         std::string names, culledReaders;
         for (int r : passes_[p].writes) {
             names += (names.empty() ? "" : " or ") + quoted(resources_[r].name);
+            const std::vector<Version>& versions = resources_[r].versions;
+            const int written = static_cast<int>(
+                std::find_if(versions.begin(), versions.end(), [&](const Version& v) { return v.writer == static_cast<int>(p); }) -
+                versions.begin());
             for (std::size_t q = 0; q < passes_.size(); ++q)
-                if (std::find(passes_[q].reads.begin(), passes_[q].reads.end(), r) != passes_[q].reads.end())
-                    culledReaders += (culledReaders.empty() ? "" : ", ") + quoted(passes_[q].name);
+                for (std::size_t i = 0; i < passes_[q].reads.size(); ++i)
+                    if (passes_[q].reads[i] == r && passes_[q].readVersions[i] == written)
+                        culledReaders += (culledReaders.empty() ? "" : ", ") + quoted(passes_[q].name);
         }
         report.cullReason = "no surviving pass reads " + names;
         if (!culledReaders.empty()) report.cullReason += " (culled readers: " + culledReaders + ")";

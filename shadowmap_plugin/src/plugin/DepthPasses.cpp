@@ -33,7 +33,7 @@ void addCounts(LightShadowFrame& plan, const DepthDrawCounts& counts) {
 
 } // namespace
 
-void addDepthPasses(LightShadow& light, engine::Frame& frame, engine::ResourceHandle map, DepthRenderer& renderer,
+void addDepthPasses(LightShadow& light, engine::Frame& frame, engine::ResourceHandle& map, DepthRenderer& renderer,
                     const std::vector<bool>& closedMeshes) {
     const MapProjection& projection = *mapProjection(light.frame.kind);
     const DepthTechnique& technique = *depthTechnique(light.settings.variant);

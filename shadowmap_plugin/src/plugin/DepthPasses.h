@@ -13,7 +13,8 @@ namespace shadowmap {
 
 // closedMeshes: per Scene::meshes, closed and not double-sided (backface culls only those).
 // Counts what is drawn into light.frame; each layer's key is recorded once its passes ran.
-void addDepthPasses(LightShadow& light, engine::Frame& frame, engine::ResourceHandle map, DepthRenderer& renderer,
+// `map` is the light's imported map; on return it names the version the last pass wrote.
+void addDepthPasses(LightShadow& light, engine::Frame& frame, engine::ResourceHandle& map, DepthRenderer& renderer,
                     const std::vector<bool>& closedMeshes);
 
 } // namespace shadowmap

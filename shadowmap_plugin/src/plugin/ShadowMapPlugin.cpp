@@ -87,14 +87,14 @@ void ShadowMapPlugin::addPasses(engine::Frame& frame) {
             const engine::TextureDesc desc{size, size, graphFormat(light.settings.depthFormat),
                                            shape.arrayLayers(),
                                            shape.target == MapShape::Target::Cube};
-            const engine::ResourceHandle map = frame.graph().importTexture(light.mapResource(), desc, light.map.id());
-            light.frame.map = map;
+            engine::ResourceHandle map = frame.graph().importTexture(light.mapResource(), desc, light.map.id());
             if (light.frame.cacheHit) {
                 ++cacheHits_;  // the map is an input nobody writes this frame: no depth pass
             } else {
                 ++cacheMisses_;
-                addDepthPasses(light, frame, map, *depth_, closedMeshes_);
+                addDepthPasses(light, frame, map, *depth_, closedMeshes_);  // moves map to its last version
             }
+            light.frame.map = map;  // the version the lit pass reads
             maps.push_back(map);
         }
         for (const std::string& warning : light.frame.warnings) warnOnce(light, warning);

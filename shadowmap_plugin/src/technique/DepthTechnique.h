@@ -24,7 +24,7 @@ using CasterDraw = std::function<void(engine::PassContext&, const glm::dmat4& vi
 struct LayerPasses {
     engine::RenderGraph& graph;
     const LightState& light;
-    engine::ResourceHandle map;
+    engine::ResourceHandle& map;  // the map's latest version: each write moves it on
     MapLayer layer;
     DepthPassStyle style;
     CasterDraw draw;

@@ -86,7 +86,7 @@ LayerRun run(shadowmap::Variant variant, const std::vector<MapLayer>& layers) {
     LayerRun result;
     engine::RenderGraph graph;
     const engine::TextureDesc desc{64, 64, engine::TextureFormat::Depth24, 1, layers.size() > 1};
-    const engine::ResourceHandle map = graph.importTexture(light.mapResource(), desc, 7);
+    engine::ResourceHandle map = graph.importTexture(light.mapResource(), desc, 7);
     const shadowmap::CasterDraw draw = [&result](engine::PassContext& context, const glm::dmat4&,
                                                  const shadowmap::DepthPassStyle& style) {
         result.events.push_back((style.firstLayer != 0 ? "peel " : "draw ") + context.passName());

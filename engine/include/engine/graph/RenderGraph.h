@@ -6,25 +6,29 @@
 //
 // Contract (plugins and tools rely on it):
 // - Resources are textures with names unique in the graph. A transient is made by create()
-//   in exactly one pass, its writer. An import (importTexture) is owned elsewhere (persistent
-//   shadow maps, the final target) and is written either whole by at most one pass, via
-//   write(), or layer by layer (cube faces, array layers) by several passes, each writing
-//   layers no other pass writes, via write(resource, layer).
-//   A duplicate name, a second writer of the same texels, an invalid handle or one another
-//   graph returned (kept from an earlier frame), or a pass reading what it writes is a
-//   GraphError naming the pass(es) and the resource. Resources are reached only through
-//   the handles their creators returned: names are for Graphviz and messages.
-// - Dependencies run from a resource's writers to every reader, whatever the declaration
-//   order: a pass reading an import that other passes write runs after all of them and sees
-//   this frame's contents. An import nobody writes is a valid input (its contents come from
-//   outside). Cycles are a GraphError naming the passes in them.
+//   in one pass; an import (importTexture) is owned elsewhere (persistent shadow maps, the
+//   final target). Resources are reached only through handles: names are for Graphviz and
+//   messages.
+// - Handles are versioned (as Filament's FrameGraphId): create and import give version 0;
+//   write() gives a handle to the next version, which later passes must use. A write of
+//   one layer (a cube face, an array layer) keeps the other layers of the version before,
+//   so a reader of the last face's version needs every face pass; a whole write does not.
+//   One pass writing several layers of a resource makes one version. A pass that reads or
+//   writes a version older than the latest (a handle kept from before another pass's write)
+//   is a GraphError naming both passes: the texture holds the newer contents by then.
+// - Reads see the version their handle names, so every dependency points to an earlier
+//   declaration: execution keeps declaration order, and no cycle can be declared. An import
+//   nobody writes is a valid input (its contents come from outside).
+// - A duplicate name, an invalid handle or one another graph returned (kept from an earlier
+//   frame), or a pass reading what it writes is a GraphError naming the pass(es) and the
+//   resource.
 // - A pass's fixed-function state (PassState.h) and the targets it draws into (PassTargets.h)
 //   are declared with it and applied by the executor, in that order, before it runs.
-// - Culling counts references back from the outputs (as Filament's FrameGraph): a pass
-//   survives if it has a side effect, writes a resource marked output, or writes something a
-//   surviving pass reads. Culled passes never execute, their transients are never acquired,
-//   and reports() gives the reason.
-// - Order: topological and stable (ties keep declaration order), so output is reproducible.
+// - Culling counts references back from the outputs (as Filament's FrameGraph), version by
+//   version: a pass survives if it has a side effect, writes the latest version of a
+//   resource marked output, or writes a version a surviving pass reads (or a later layer
+//   write builds on). Culled passes never execute, their transients are never acquired, and
+//   reports() gives the reason.
 // - Transients are acquired right before their first user executes and released right after
 //   their last user, so the allocator can reuse a texture within the frame. compile() also
 //   plans that reuse statically (physicalSlot / physicalSlotCount): transients of equal desc
@@ -57,11 +61,12 @@ class PassBuilder {
 public:
     // A transient texture this pass writes; the name must be new to the graph.
     [[nodiscard]] ResourceHandle create(const std::string& name, const TextureDesc& desc);
+    // `resource` must name the latest version.
     ResourceHandle read(ResourceHandle resource);
-    // Declares this pass the writer of an import (or returns its own transient unchanged).
+    // Writes the whole texture: returns the handle of the version this pass makes (the
+    // creator writing its own transient keeps version 0).
     [[nodiscard]] ResourceHandle write(ResourceHandle resource);
-    // Declares this pass the writer of one layer (array layer or cube face) of an import;
-    // other passes may write its other layers.
+    // Writes one layer (array layer or cube face); the other layers keep their contents.
     [[nodiscard]] ResourceHandle write(ResourceHandle resource, int layer);
     void sideEffect();  // never culled (e.g. a readback)
     // The state the pass's draws start from (PassState.h); PassState{} when not declared.
@@ -83,7 +88,7 @@ struct PassReport {
     int order = -1;          // position in execution order, -1 when culled
     double wallMs = 0;       // only measured with ExecuteOptions::timing
     std::uint64_t draws = 0, triangles = 0;
-    std::vector<ResourceHandle> reads;  // what the pass declared it reads
+    std::vector<ResourceHandle> reads;  // what the pass declared it reads, at the versions it read
 };
 
 // Handed to a pass's execute callback.
@@ -153,19 +158,20 @@ private:
         std::string name;
         std::function<void(PassContext&)> execute;
         std::vector<int> reads{}, writes{};  // resource indices; writes include creates
+        std::vector<int> readVersions{};     // beside reads
         bool sideEffect = false;
         PassState state{};
         PassTargets targets{};
     };
-    struct Writer {
-        int pass = -1;
-        int layer = -1;  // -1: the whole texture
+    struct Version {
+        int writer = -1;            // the pass that made it; -1: an import as it comes in
+        std::vector<int> layers{};  // the layers written; empty: the whole texture
     };
     struct Resource {
         std::string name;
         TextureDesc desc;
         bool imported = false, output = false;
-        std::vector<Writer> writers{};  // one whole writer, or one per written layer
+        std::vector<Version> versions{};  // [0]: as created or imported; one per write after
         std::uint32_t physical = 0;  // an import's handle; a transient's while acquired
         int firstUse = -1, lastUse = -1;  // positions in order_, from compile()
         int slot = -1;                    // aliasing plan, from compile()
@@ -174,11 +180,15 @@ private:
     static std::uint64_t nextSerial();
     // Whether `handle` names a resource of this graph.
     bool owns(ResourceHandle handle) const;
-    ResourceHandle handleOf(int index) const { return {index, serial_}; }
+    ResourceHandle handleOf(int index, int version) const { return {index, serial_, version}; }
+    ResourceHandle latest(int index) const {
+        return handleOf(index, static_cast<int>(resources_[index].versions.size()) - 1);
+    }
     int addResource(Resource resource, int pass);
     const Resource& resourceAt(ResourceHandle handle, int pass) const;
+    // Throws unless `handle` names the latest version; `use` is "reads" or "writes".
+    void checkLatest(ResourceHandle handle, int pass, const char* use) const;
     const Resource& declaredBy(ResourceHandle handle, int pass) const;  // PassContext's check
-    std::vector<int> topologicalOrder() const;                          // throws on cycles
     PassState resolvedState(const Pass& pass) const;                    // viewport filled in
     std::vector<bool> cull();
     void planLifetimes();

@@ -3,13 +3,13 @@
 namespace shadowmap {
 
 void addSingleDepthPass(const LayerPasses& passes) {
-    const engine::ResourceHandle map = passes.map;
+    engine::ResourceHandle& map = passes.map;
     const int layer = passes.layer.layer;
     const DepthPassStyle style = passes.style;
     passes.added.push_back(passes.graph.addPass(
         passes.light.depthPass(layer),
-        [map, layer, style](engine::PassBuilder& builder) {
-            (void)builder.write(map, layer);
+        [&map, layer, style](engine::PassBuilder& builder) {  // setup runs inside addPass
+            map = builder.write(map, layer);
             builder.setTargets(depthPassTargets(map, layer, style));
             builder.setState(depthPassState(style));
         },

@@ -33,7 +33,7 @@ void WooDepth::addLayerPasses(const LayerPasses& passes) const {
     // depth. An offset in the peel alone left the nearest surface behind z1, kept as a
     // second layer: acne on 1.2% of the showcase sun's pixels (14.7% at 512).
     const LightState& light = passes.light;
-    const engine::ResourceHandle map = passes.map;
+    engine::ResourceHandle& map = passes.map;
     const int layer = passes.layer.layer;
     const DepthPassStyle style = passes.style;
     const glm::dmat4 viewProjection = passes.layer.viewProjection;
@@ -52,9 +52,9 @@ void WooDepth::addLayerPasses(const LayerPasses& passes) const {
         }));
     passes.added.push_back(passes.graph.addPass(
         light.depthPass(layer),
-        [map, layer, firstLayer, style](engine::PassBuilder& builder) {
+        [&map, layer, firstLayer, style](engine::PassBuilder& builder) {  // setup runs inside addPass
             builder.read(*firstLayer);
-            (void)builder.write(map, layer);
+            map = builder.write(map, layer);
             builder.setTargets(depthPassTargets(map, layer, style));
             builder.setState(depthPassState(style));
         },
