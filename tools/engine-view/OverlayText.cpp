@@ -1,5 +1,7 @@
 #include "OverlayText.h"
 
+#include "shadowmap/ShadowViewSettings.h"
+
 #include <cstdio>
 
 namespace engine_view {
@@ -52,12 +54,12 @@ std::vector<OverlayLine> OverlayText::lines(const ViewerState& state, const engi
         if (!view) {
             line += "\t(no shadow plugin)";
         } else {
-            const nlohmann::json& used = view->settings;
-            const nlohmann::json offset = used.value("polygon_offset", nlohmann::json::array({0, 0}));
-            line += format("\t%s\t%d%s\t%s\t%s\toffset %g/%g\tdim %.2f", view->variant.c_str(), used.value("resolution", 0),
-                           view->cube ? " cube" : "", used.value("depth_format", "?").c_str(),
-                           used.value("filter", "?").c_str(), offset.at(0).get<double>(), offset.at(1).get<double>(),
-                           settings.at("dimming").get<double>());
+            const shadowmap::ShadowSettings used = shadowmap::usedSettings(*view);
+            const glm::vec2 offset = used.effectivePolygonOffset();
+            line += format("\t%s\t%d%s\t%s\t%s\toffset %g/%g\tdim %.2f", shadowmap::toString(used.variant),
+                           used.resolution, view->cube ? " cube" : "", shadowmap::toString(used.depthFormat),
+                           shadowmap::toString(used.filter), shadowmap::jsonNumber(offset.x),
+                           shadowmap::jsonNumber(offset.y), settings.at("dimming").get<double>());
             bool ran = false;
             const double ms = frame.shadowPassMs(*view, ran);
             if (!view->hasMap) {

@@ -6,6 +6,7 @@
 #include "engine/util/Error.h"
 
 #include "shadowmap/ShadowSettings.h"
+#include "shadowmap/ShadowViewSettings.h"
 
 #include <algorithm>
 #include <array>
@@ -95,10 +96,10 @@ nlohmann::json ViewerState::effective(int index) const {
     if (extras.is_object() && extras.contains("shadow") && extras["shadow"].is_object())
         settings.update(extras["shadow"]);
     if (!settings.contains("polygon_offset")) {
+        // No explicit offset: the one the plugin used (the variant's default).
         const engine::ShadowView* view = frameView(index);
-        settings["polygon_offset"] = view && view->settings.contains("polygon_offset")
-                                         ? view->settings["polygon_offset"]
-                                         : nlohmann::json::array({0.0, 0.0});
+        const glm::vec2 used = view ? shadowmap::usedSettings(*view).effectivePolygonOffset() : glm::vec2(0.0f);
+        settings["polygon_offset"] = {shadowmap::jsonNumber(used.x), shadowmap::jsonNumber(used.y)};
     }
     return settings;
 }

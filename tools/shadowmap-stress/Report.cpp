@@ -2,6 +2,8 @@
 
 #include "engine/util/OutputFile.h"
 
+#include "shadowmap/ShadowSettings.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -126,10 +128,15 @@ bool writePlots(const std::filesystem::path& outDir, const std::vector<Sweep>& s
     const std::filesystem::path plotDir = dir / "plots";
     std::filesystem::create_directories(plotDir);
     // Colour per variant, dash and point per format.
-    const std::map<std::string, std::string> colours{{"standard", "#1f77b4"}, {"woo", "#d62728"},
-                                                     {"backface", "#2ca02c"}, {"none", "#7f7f7f"}};
-    const std::map<std::string, std::pair<int, int>> styles{
-        {"d16", {3, 6}}, {"d24", {1, 7}}, {"d32f", {2, 5}}, {"d32f_rz", {4, 9}}};
+    using shadowmap::toString, shadowmap::Variant, shadowmap::DepthFormat;
+    const std::map<std::string, std::string> colours{{toString(Variant::Standard), "#1f77b4"},
+                                                     {toString(Variant::Woo), "#d62728"},
+                                                     {toString(Variant::Backface), "#2ca02c"},
+                                                     {toString(Variant::None), "#7f7f7f"}};
+    const std::map<std::string, std::pair<int, int>> styles{{toString(DepthFormat::D16), {3, 6}},
+                                                            {toString(DepthFormat::D24), {1, 7}},
+                                                            {toString(DepthFormat::D32F), {2, 5}},
+                                                            {reversedZFormat(), {4, 9}}};
     for (const Sweep& sweep : sweeps) {
         const std::vector<std::string> lights = lightsOf(rows, sweep.name);
         if (lights.empty()) continue;

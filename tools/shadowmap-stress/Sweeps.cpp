@@ -303,13 +303,17 @@ std::vector<std::string> defaultVariants() {
     return variants;
 }
 
+std::string reversedZFormat() {
+    // Reversed Z needs float depth (checkLimits): the one format it combines with.
+    return shadowmap::toString(shadowmap::DepthFormat::D32F) + std::string("_rz");
+}
+
 std::vector<FormatSetting> knownFormats() {
     std::vector<FormatSetting> formats;
     for (const std::string& format : shadowmap::settingKey("depth_format").choices)
         formats.push_back({format, {{"depth_format", format}}});
-    // Reversed Z needs float depth (checkLimits): the one format it combines with.
     const std::string reversible = shadowmap::toString(shadowmap::DepthFormat::D32F);
-    formats.push_back({reversible + "_rz", {{"depth_format", reversible}, {"reversed_z", true}}});
+    formats.push_back({reversedZFormat(), {{"depth_format", reversible}, {"reversed_z", true}}});
     return formats;
 }
 
@@ -373,7 +377,9 @@ std::vector<BoundResult> checkBounds(const std::vector<Row>& rows) {
                        0, {}, {}};
     double worstLeak = -1.0;
     for (const Row& row : rows) {
-        if (row.sweep != "special" || row.label != toString(Layout::LightInsideBox) || row.format == "d16") continue;
+        if (row.sweep != "special" || row.label != toString(Layout::LightInsideBox) ||
+            row.format == shadowmap::toString(shadowmap::DepthFormat::D16))
+            continue;
         ++inside.checked;
         const std::string line = describe(row) + ": leak " + number(row.leak, "%.4f") + " of " +
                                  std::to_string(row.evaluated) + " pixels";
@@ -388,7 +394,7 @@ std::vector<BoundResult> checkBounds(const std::vector<Row>& rows) {
     BoundResult nearFar{"near_far_rz",
                         "reversed-Z d32f: error(ratio) - error(1e-2) <= 0.5 points down to 1e-7 and an infinite far",
                         0, {}, {}};
-    compareWithReference(nearFar, rows, {"near_far"}, "1e-2", [](const Row& r) { return r.format == "d32f_rz"; },
+    compareWithReference(nearFar, rows, {"near_far"}, "1e-2", [](const Row& r) { return r.format == reversedZFormat(); },
                          0.5, true);
     bounds.push_back(nearFar);
 
@@ -398,7 +404,7 @@ std::vector<BoundResult> checkBounds(const std::vector<Row>& rows) {
                         0, {}, {}};
     double worstGrazing = -1.0;
     for (const Row& row : rows) {
-        if (row.sweep != "elevation" || row.variant == "woo") continue;
+        if (row.sweep != "elevation" || row.variant == shadowmap::toString(shadowmap::Variant::Woo)) continue;
         ++grazing.checked;
         const std::string line = describe(row) + ": error_noedge " + number(row.errorNoEdge);
         if (row.errorNoEdge > worstGrazing) {

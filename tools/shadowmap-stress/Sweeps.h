@@ -88,6 +88,8 @@ std::vector<std::string> defaultVariants();
 std::vector<FormatSetting> defaultFormats(bool quick);
 // Every format the tool knows (for --formats), by name.
 std::vector<FormatSetting> knownFormats();
+// The name of d32f with reversed_z: "d32f_rz".
+std::string reversedZFormat();
 
 // One rendered case and what it measured (errors in percent of the evaluation set).
 struct Row {

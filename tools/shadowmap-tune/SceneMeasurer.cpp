@@ -4,6 +4,7 @@
 #include "engine/util/Error.h"
 
 #include "shadowmap/ShadowSettings.h"
+#include "shadowmap/ShadowViewSettings.h"
 
 #include <algorithm>
 #include <map>
@@ -65,9 +66,10 @@ void SceneMeasurer::measureCurrent() {
                 // as the search's candidates leave it).
                 const bool explicitOffset = loaded_[lights_[i]].contains("polygon_offset") ||
                                             configured_.contains("polygon_offset");
+                const nlohmann::json used = shadowmap::printSettings(shadowmap::usedSettings(view.view));
                 for (const std::string& key : owned_)
-                    if (view.view.settings.contains(key) && (key != "polygon_offset" || explicitOffset))
-                        current.setting[key] = view.view.settings[key];
+                    if (used.contains(key) && (key != "polygon_offset" || explicitOffset))
+                        current.setting[key] = used[key];
                 break;
             }
         current_.push_back(current);

@@ -17,6 +17,8 @@
 #include "engine/util/OutputFile.h"
 #include "engine/util/ProcessSetup.h"
 
+#include "shadowmap/ShadowSettings.h"
+
 #include <epoxy/gl.h>
 
 #include <array>
@@ -84,9 +86,12 @@ long residentKib() {
 // by default): a warm-up of one period has made everything the cycle makes once, and a
 // leak is what still grows after it.
 nlohmann::json shadowSettings(int change) {
-    static const std::array<const char*, 4> variants{"standard", "woo", "backface", "none"};
+    using shadowmap::toString, shadowmap::Variant, shadowmap::DepthFormat;
+    static const std::array<const char*, 4> variants{toString(Variant::Standard), toString(Variant::Woo),
+                                                     toString(Variant::Backface), toString(Variant::None)};
     static const std::array<int, 3> resolutions{256, 512, 1024};
-    static const std::array<const char*, 3> formats{"d24", "d16", "d32f"};
+    static const std::array<const char*, 3> formats{toString(DepthFormat::D24), toString(DepthFormat::D16),
+                                                    toString(DepthFormat::D32F)};
     return {{"variant", variants[change % 4]},
             {"resolution", resolutions[change % 3]},
             {"depth_format", formats[(change / 4) % 3]}};

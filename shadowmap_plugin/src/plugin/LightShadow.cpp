@@ -3,6 +3,8 @@
 #include "technique/DepthFormatGl.h"
 #include "technique/Techniques.h"
 
+#include "shadowmap/ShadowViewSettings.h"
+
 #include <epoxy/gl.h>
 
 #include <cmath>
@@ -82,7 +84,8 @@ engine::ShadowView LightShadow::view() const {
     out.name = name;
     out.variant = toString(settings.variant);
     out.castsShadows = settings.variant != Variant::None;
-    out.settings = settingsJson();
+    // The settings API's printer, so the tools read them back with its parser (usedSettings).
+    out.settings = printUsedSettings(settings);
     out.hasMap = frame.kind != MapKind::None;
     out.skipReason = frame.skipReason;
     out.cube = frame.kind == MapKind::Cube;

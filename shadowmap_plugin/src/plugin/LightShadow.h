@@ -20,7 +20,8 @@ struct LightShadow : LightState {
     // (Re)creates the map when size, format or shape changed (a new texture holds nothing:
     // its rendered keys are reset), with the comparison state and filter the lookup needs.
     void ensureMap();
-    // The settings in effect, keyed as in extras.shadow.
+    // --stats' summary of the settings in effect, keyed as in extras.shadow (the tools read
+    // ShadowView::settings instead, through shadowmap/ShadowViewSettings.h).
     nlohmann::json settingsJson() const;
     nlohmann::json stats() const;
     // What the tools see of this light this frame (ShadowView.h).

@@ -30,7 +30,9 @@ struct ShadowView {
     std::string name;
     std::string variant;  // for people: "standard", "woo", "backface" or "none"
     bool castsShadows = false;  // the light is shadowed at all (its variant is not "none")
-    // The effective per-light settings, keyed as in glTF extras.shadow.
+    // The effective per-light settings, keyed as in glTF extras.shadow: the plugin's to write
+    // and to read (the shadow plugin's shadowmap/ShadowViewSettings.h: usedSettings), so
+    // tools need not know its keys and values.
     nlohmann::json settings = nlohmann::json::object();
     // The map this frame; without one, skipReason says why (variant none, nothing in view...).
     bool hasMap = false;
