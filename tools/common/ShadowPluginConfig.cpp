@@ -13,7 +13,7 @@ nlohmann::json shadowPluginSettings(const engine::EngineConfig& config) {
 void disableShadowMapCaching(engine::EngineConfig& config, const std::string& configPath) {
     for (engine::PluginConfig& plugin : config.plugins)
         if (plugin.library == kShadowPlugin) {
-            plugin.settings["cache_maps"] = false;
+            plugin.settings[shadowmap::kCacheMapsKey] = false;
             return;
         }
     engine::throwInputError(configPath, "plugins", "loads no " + std::string(kShadowPlugin) + ": nothing to measure");

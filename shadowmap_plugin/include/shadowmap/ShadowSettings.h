@@ -218,4 +218,27 @@ const std::vector<SettingKey>& settingKeys();
 // The key of that name; std::logic_error for a name that is no key (a caller's bug).
 const SettingKey& settingKey(std::string_view name);
 
+// ---- The plugin's config settings --------------------------------------------------------
+// The "settings" of the plugin's entry in the engine config: the per-light keys above (the
+// defaults every light's extras.shadow overrides) and these plugin-wide ones.
+
+// "cache_maps": true (default) keeps a light's map across frames while nothing it depends
+// on changed, and lets the lit pass reuse its shade; false re-renders every map and
+// recomputes every shade every frame (for timing the passes). --stats reports it by this key.
+inline constexpr char kCacheMapsKey[] = "cache_maps";
+
+struct PluginSettings {
+    ShadowSettings lightDefaults;
+    bool cacheMaps = true;
+
+    bool operator==(const PluginSettings&) const = default;
+};
+
+// The plugin's config settings over the built-in defaults. Every bad value, and any key not
+// in pluginSettingKeys(), throws engine::InputError "source: settings.key: reason".
+PluginSettings parsePluginSettings(const nlohmann::json& json, const std::string& source);
+
+// Every key the plugin's config settings accept: settingKeys()' names, then cache_maps.
+std::vector<std::string> pluginSettingKeys();
+
 } // namespace shadowmap

@@ -1,27 +1,16 @@
 // The plugin's one exported entry point: registers a ShadowMapPlugin whose defaults are the
-// built-in ones overridden by the "settings" of the engine config (unknown keys refused).
+// built-in ones overridden by the "settings" of the engine config (unknown keys refused;
+// the keys, per-light and plugin-wide, are the settings API's: shadowmap/ShadowSettings.h).
 #include "plugin/ShadowMapPlugin.h"
-
-#include "engine/util/JsonRead.h"
 
 #include <engine_plugin/PluginAbi.h>
 
 namespace {
 
-// Plugin-wide keys besides the per-light defaults of shadowmap/ShadowSettings.h:
-//   "cache_maps": true (default) keeps a light's map across frames while nothing it
-//   depends on changed, and lets the lit pass reuse its shade; false re-renders every map
-//   and recomputes every shade every frame (for timing the passes).
 void registerShadowMap(engine::PluginRegistry* registry, const char* settingsJson) {
-    nlohmann::json settings = nlohmann::json::parse(settingsJson);
-    bool cacheMaps = true;
-    if (settings.contains("cache_maps")) {
-        cacheMaps = engine::json::readBool(settings["cache_maps"], "", "settings.cache_maps");
-        settings.erase("cache_maps");
-    }
-    shadowmap::ShadowSettings defaults;
-    shadowmap::applySettings(defaults, settings, "", "settings");
-    registry->addRenderPlugin(std::make_unique<shadowmap::ShadowMapPlugin>(defaults, cacheMaps));
+    // No source: the plugin host prefixes the config file and the plugin's name.
+    const shadowmap::PluginSettings settings = shadowmap::parsePluginSettings(nlohmann::json::parse(settingsJson), "");
+    registry->addRenderPlugin(std::make_unique<shadowmap::ShadowMapPlugin>(settings.lightDefaults, settings.cacheMaps));
 }
 
 } // namespace

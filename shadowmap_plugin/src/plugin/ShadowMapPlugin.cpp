@@ -119,7 +119,7 @@ nlohmann::json ShadowMapPlugin::frameStats() const {
         if (light.settings.reversedZ) stats["reversed_z"] = true;
         lights.push_back(std::move(stats));
     }
-    return {{"lights", lights}, {"cache_hits", cacheHits_}, {"cache_maps", cacheMaps_},
+    return {{"lights", lights}, {"cache_hits", cacheHits_}, {kCacheMapsKey, cacheMaps_},
             {"cache_misses", cacheMisses_}};
 }
 
