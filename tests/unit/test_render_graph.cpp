@@ -293,12 +293,17 @@ TEST_F(GraphTest, DrawsAndTrianglesAreCountedPerPass) {
         context.countDraw(12);
         context.countDraw(30);
     });
-    graph.addPass("two", [](PassBuilder& b) { b.sideEffect(); }, [](PassContext& context) { context.countDraw(5); });
+    graph.addPass("two", [](PassBuilder& b) { b.sideEffect(); }, [](PassContext& context) {
+        context.countDraw(5);
+        context.countCulledDraw();
+    });
     for (int frame = 0; frame < 2; ++frame) graph.execute(allocator);  // counts are per execute
     EXPECT_EQ(reportOf(graph, "one").draws, 2u);
     EXPECT_EQ(reportOf(graph, "one").triangles, 42u);
     EXPECT_EQ(reportOf(graph, "two").draws, 1u);
     EXPECT_EQ(reportOf(graph, "two").triangles, 5u);
+    EXPECT_EQ(reportOf(graph, "two").drawsCulled, 1u);
+    EXPECT_EQ(reportOf(graph, "one").drawsCulled, 0u);
 }
 
 TEST_F(GraphTest, TimingCallsFinishAfterEachPass) {

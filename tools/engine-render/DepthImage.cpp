@@ -29,7 +29,7 @@ std::vector<std::uint8_t> depthToGray(const engine::DepthReadback& map, int& wid
     return gray;
 }
 
-const char* const kCubeFaceNames[6] = {"+X", "-X", "+Y", "-Y", "+Z", "-Z"};
+const char* const kCubeFaceNames[engine::kCubeFaces] = {"+X", "-X", "+Y", "-Y", "+Z", "-Z"};
 
 namespace {
 
@@ -52,7 +52,7 @@ void labelCubeFaces(std::vector<std::uint8_t>& gray, int width, int height, int 
     // least 1 pixel per unit), so the label reads at a 1024 face and at a 64 one alike.
     const int scale = std::max(1, std::min(faceWidth, height) / 140);
     const int margin = 2 * scale;
-    for (int face = 0; face < 6 && (face + 1) * faceWidth <= width; ++face) {
+    for (int face = 0; face < engine::kCubeFaces && (face + 1) * faceWidth <= width; ++face) {
         std::string text = kCubeFaceNames[face];  // stb_easy_font wants a mutable char*
         FontVertex quads[64 * 4];
         unsigned char black[4] = {0, 0, 0, 255};

@@ -11,7 +11,7 @@ std::vector<std::uint8_t> depthToGray(const engine::DepthReadback& map, int& wid
 
 // The names of a cube's faces in the strip's order (GL's: layer i is
 // GL_TEXTURE_CUBE_MAP_POSITIVE_X + i), as labelCubeFaces writes them.
-extern const char* const kCubeFaceNames[6];
+extern const char* const kCubeFaceNames[engine::kCubeFaces];
 
 // Writes each face's name (+X, -X, +Y, -Y, +Z, -Z) into the top-left corner of its face
 // of a depthToGray strip, black on a white box with a black rule along the face's left

@@ -41,7 +41,7 @@ bool cubeLookup(const glm::dvec3& r, glm::dvec2& st, int& face) {
 Image projectDepthMap(const Image& shaded, const truth::SurfaceBuffer& surfaces, const ProjectedMap& map) {
     Image out = shaded;
     const int size = map.faceSize;
-    const int stripWidth = map.kind == ProjectedMap::Kind::Cube ? size * 6 : size;
+    const int stripWidth = map.kind == ProjectedMap::Kind::Cube ? size * engine::kCubeFaces : size;
     for (std::size_t i = 0; i < surfaces.pixelCount(); ++i) {
         if (!surfaces.covered[i]) continue;
         std::uint8_t* pixel = &out.rgba[4 * i];

@@ -16,7 +16,7 @@ bool contains(const std::vector<int>& list, int value) {
 // Layers a single attachment may name: cube faces, array layers. A desc does not say whether
 // a one-layer texture is an array, so its layer 0 passes here (GL refuses it for a plain 2D
 // texture, and the renderer's GL error check names the pass).
-int attachableLayers(const TextureDesc& desc) { return desc.cube ? 6 * desc.layers : desc.layers; }
+int attachableLayers(const TextureDesc& desc) { return desc.cube ? kCubeFaces * desc.layers : desc.layers; }
 } // namespace
 
 // ---- declaration ----------------------------------------------------------------------
@@ -227,6 +227,8 @@ void PassContext::countDraw(std::uint64_t triangles) {
     report_.triangles += triangles;
 }
 
+void PassContext::countCulledDraw() { report_.drawsCulled += 1; }
+
 const std::string& PassContext::passName() const { return graph_.passes_[pass_].name; }
 
 PassState RenderGraph::resolvedState(const Pass& pass) const {
@@ -258,7 +260,7 @@ void RenderGraph::execute(ResourceAllocator& allocator, const ExecuteOptions& op
         resources_[r].physical = 0;
         held.erase(std::find(held.begin(), held.end(), r));
     };
-    for (PassReport& report : reports_) report.wallMs = 0, report.draws = report.triangles = 0;
+    for (PassReport& report : reports_) report.wallMs = 0, report.draws = report.triangles = report.drawsCulled = 0;
     try {
         for (std::size_t position = 0; position < order_.size(); ++position) {
             for (int r : acquireAt[position]) {

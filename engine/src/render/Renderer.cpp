@@ -147,7 +147,7 @@ FrameResult Renderer::renderFrame(const FrameRequest& request) {
         readback.width = desc.width;
         readback.height = desc.height;
         readback.cube = desc.cube;
-        readback.layers = desc.cube ? 6 : desc.layers;
+        readback.layers = desc.cube ? kCubeFaces : desc.layers;
         readback.depth = readDepthLayersTopDown(texture, desc.width, desc.height, readback.layers);
     }
     result.passes = graph.reports();
@@ -196,6 +196,16 @@ double FrameResult::shadowPassMs(const ShadowView& view, bool& ran) const {
         ran = true;
     }
     return total;
+}
+
+FrameResult::PassWork FrameResult::shadowPassWork(const ShadowView& view) const {
+    PassWork work;
+    for (const PassId id : view.passes) {
+        work.draws += passes.at(id.index).draws;
+        work.triangles += passes.at(id.index).triangles;
+        work.drawsCulled += passes.at(id.index).drawsCulled;
+    }
+    return work;
 }
 
 const ShadowView* FrameResult::shadowView(int slot) const {

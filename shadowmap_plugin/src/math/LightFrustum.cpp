@@ -418,7 +418,7 @@ PointLightViews fitPointLight(const engine::LightInstance& instance, const engin
     DepthFit fit;
     double dmin, dmax;
     std::array<bool, 6> seesReceiver{};
-    for (int face = 0; face < 6; ++face) {
+    for (int face = 0; face < engine::kCubeFaces; ++face) {
         const glm::dvec3 dir = cubeFaceDirection(face), up = cubeFaceUp(face);
         const glm::dvec3 x = glm::cross(dir, up);  // right: the face's +s direction
         out.faces[face].lightToWorld = glm::dmat4(glm::dvec4(x, 0.0), glm::dvec4(up, 0.0),
@@ -444,7 +444,7 @@ PointLightViews fitPointLight(const engine::LightInstance& instance, const engin
     const glm::dmat4 projection =
         perspective(glm::half_pi<double>(), out.nearPlane, out.farPlane, out.reversedZ);
     out.valid = true;
-    for (int face = 0; face < 6; ++face) {
+    for (int face = 0; face < engine::kCubeFaces; ++face) {
         LightView& f = out.faces[face];
         f.reversedZ = out.reversedZ;
         f.nearestReceiver = fit.anyReceiver() ? fit.receiverMin : 0.0;
@@ -462,7 +462,7 @@ PointLightViews fitPointLight(const engine::LightInstance& instance, const engin
 }
 
 bool PointLightViews::faceSeesBox(int face, const engine::Aabb& worldBox) const {
-    if (!valid || face < 0 || face >= 6) return false;
+    if (!valid || face < 0 || face >= engine::kCubeFaces) return false;
     return engine::boxIntersectsFrustum(faces[face].viewProjection(), worldBox);
 }
 

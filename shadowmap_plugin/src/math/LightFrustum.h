@@ -24,6 +24,7 @@
 //    samplerCubeShadow lookup with direction (world - lightPos) reads the texel the face
 //    wrote. One near/far shared by all faces (the shader computes the reference depth from
 //    the major axis, see cubeShadowReferenceDepth), fitted over all faces.
+#include "engine/graph/TextureDesc.h"
 #include "engine/scene/Aabb.h"
 #include "engine/scene/Scene.h"
 
@@ -91,7 +92,7 @@ glm::dvec3 cubeFaceDirection(int face);  // the face's viewing direction (major 
 glm::dvec3 cubeFaceUp(int face);         // its up vector (OpenGL cube-map table)
 
 struct PointLightViews {
-    std::array<LightView, 6> faces;          // faces[f].empty: nothing to receive in face f
+    std::array<LightView, engine::kCubeFaces> faces;          // faces[f].empty: nothing to receive in face f
     double nearPlane = 0.0, farPlane = 0.0;  // shared by all faces (far may be +infinity)
     bool reversedZ = false;                  // as LightView::reversedZ, for all faces
     bool valid = false;

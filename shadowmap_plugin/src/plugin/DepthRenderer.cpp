@@ -83,6 +83,7 @@ DepthDrawCounts DepthRenderer::draw(const engine::Frame& frame, engine::PassCont
         if (!instance.castShadows) continue;
         if (!engine::boxIntersectsFrustum(viewProjection, instance.worldBounds)) {
             ++counts.castersCulled;
+            context.countCulledDraw();
             continue;
         }
         if (style.backFacesOnly) {

@@ -4,7 +4,7 @@ namespace shadowmap {
 
 namespace {
 // Cube faces in GL order (GL_TEXTURE_CUBE_MAP_POSITIVE_X + i), as pass names show them.
-constexpr const char* kFaceNames[6] = {"+x", "-x", "+y", "-y", "+z", "-z"};
+constexpr const char* kFaceNames[engine::kCubeFaces] = {"+x", "-x", "+y", "-y", "+z", "-z"};
 // Cascades: "_c0" (nearest) .. "_c3".
 std::string layerSuffix(MapKind kind, int layer) {
     if (layer < 0) return "";

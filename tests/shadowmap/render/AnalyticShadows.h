@@ -46,14 +46,14 @@ struct MaskStats {
 
 inline std::vector<std::uint8_t> renderShadowMask(const std::vector<RenderPlugin*>& plugins,
                                            const Scene& scene, const FrameCamera& camera, int slot,
-                                           nlohmann::json* stats = nullptr) {
+                                           FrameResult* frame = nullptr) {
     Renderer renderer({}, plugins);
     renderer.setScene(scene);
     FrameRequest request;
     request.camera = camera;
     request.shadowMaskSlots = {slot};
-    const FrameResult result = renderer.renderFrame(request);
-    if (stats) *stats = result.pluginStats;
+    FrameResult result = renderer.renderFrame(request);
+    if (frame) *frame = std::move(result);
     return renderer.readShadowMask(slot);
 }
 

@@ -1,10 +1,13 @@
 // Work the plugin and the renderer must skip: cached maps, lights and faces that light no
 // visible receiver, draws outside the light's or the camera's frustum. Checked through the
-// frame graph's reports and the plugin's per-light stats, over several frames.
+// frame graph's reports and the lights' shadow views, over several frames.
 #include "../../gl/GlTestContext.h"
 #include "AnalyticShadows.h"
 
 #include "engine/scene/SceneEdit.h"
+#include "shadowmap/ShadowViewSettings.h"
+
+#include <algorithm>
 
 namespace {
 
@@ -25,9 +28,14 @@ struct Frames {
             }
         return runs;
     }
-    const nlohmann::json& lastLight(int index) const {
-        return results.back().pluginStats["shadowmap_plugin"]["lights"][index];
+    // How many maps, summed over frames, were served from the cache.
+    int cacheHits() const {
+        int hits = 0;
+        for (const auto& frame : results)
+            for (const engine::ShadowView& view : frame.shadowViews) hits += view.hasMap && !view.renderedThisFrame;
+        return hits;
     }
+    const engine::ShadowView& lastLight(int slot) const { return *results.back().shadowView(slot); }
 };
 
 class SkipWork : public engine::test::ShadowPluginTest {
@@ -70,8 +78,8 @@ TEST_F(SkipWork, StaticSceneRendersEachMapOnce) {
     EXPECT_EQ(frames.mapRenders("spot"), 1);
     EXPECT_EQ(frames.mapRenders("sun"), 1);
     EXPECT_EQ(frames.mapRenders("bulb"), 1);
-    EXPECT_EQ(frames.results.back().pluginStats["shadowmap_plugin"]["cache_hits"], 12);
-    EXPECT_EQ(frames.lastLight(0)["cache"], "hit");
+    EXPECT_EQ(frames.cacheHits(), 12);  // three lights in four frames after the first
+    EXPECT_FALSE(frames.lastLight(0).renderedThisFrame);
 }
 
 TEST_F(SkipWork, MovingALightRerendersOnlyItsMap) {
@@ -113,9 +121,9 @@ TEST_F(SkipWork, LightsThatCastNoShadowAddNoPass) {
     const Frames frames = render(scene, 1, [](int) {});
     for (const char* light : {"off", "dark", "away"})
         EXPECT_EQ(frames.mapRenders(light), 0) << light;
-    EXPECT_EQ(frames.lastLight(0)["skip_reason"], "variant none");
-    EXPECT_EQ(frames.lastLight(1)["skip_reason"], "the light emits nothing");
-    EXPECT_EQ(frames.lastLight(2)["skip_reason"], "no visible receiver in the light's frustum");
+    EXPECT_EQ(frames.lastLight(0).skipReason, "variant none");
+    EXPECT_EQ(frames.lastLight(1).skipReason, "the light emits nothing");
+    EXPECT_EQ(frames.lastLight(2).skipReason, "no visible receiver in the light's frustum");
 }
 
 TEST_F(SkipWork, PointLightSkipsFacesThatSeeNoReceiver) {
@@ -124,9 +132,12 @@ TEST_F(SkipWork, PointLightSkipsFacesThatSeeNoReceiver) {
     builder.addLight("bulb", Light::Type::Point, {0, 3, 0}, {0, 0, 0});
     engine::Scene scene = builder.build();
     const Frames frames = render(scene, 1, [](int) {});
-    const auto& light = frames.lastLight(0);
-    EXPECT_GE(light["faces_skipped"].get<int>(), 1);  // +Y looks at nothing
-    EXPECT_EQ(light["faces_rendered"].get<int>() + light["faces_skipped"].get<int>(), 6);
+    const engine::ShadowView& light = frames.lastLight(0);
+    ASSERT_EQ(light.layers.size(), 6u);
+    const auto skipped = std::count_if(light.layers.begin(), light.layers.end(),
+                                       [](const engine::ShadowMapLayer& face) { return !face.rendered; });
+    EXPECT_GE(skipped, 1);  // +Y looks at nothing
+    EXPECT_LT(skipped, 6);  // the faces looking down see the floor
 }
 
 TEST_F(SkipWork, CastersOutsideTheLightAndMeshesOutsideTheViewAreNotDrawn) {
@@ -135,8 +146,9 @@ TEST_F(SkipWork, CastersOutsideTheLightAndMeshesOutsideTheViewAreNotDrawn) {
     builder.addLight("spot", Light::Type::Spot, {0, 8, 0}, {0, 0, 0}, {}, 0.5);
     engine::Scene scene = builder.build();
     const Frames frames = render(scene, 1, [](int) {});
-    EXPECT_EQ(frames.lastLight(0)["casters_culled"], 1);  // far_box is outside the cone
-    EXPECT_EQ(frames.lastLight(0)["draws"], 2);            // floor and box
+    const engine::FrameResult::PassWork spot = frames.results.back().shadowPassWork(frames.lastLight(0));
+    EXPECT_EQ(spot.drawsCulled, 1u);  // far_box is outside the cone
+    EXPECT_EQ(spot.draws, 2u);        // floor and box
     EXPECT_EQ(frames.results.back().litInstancesCulled, 1);  // far_box is outside the view
 }
 
@@ -210,24 +222,27 @@ TEST_F(SkipWork, ReloadedSettingsRerenderOnlyTheChangedLightAndMatchAFreshScene)
     struct Edit {
         const char* what;
         nlohmann::json shadow;  // the spot's new extras.shadow
-        const char* spotCache;  // "miss": the edit changes the map; "hit": only how it is read
+        bool spotRedrawn;       // true: the edit changes the map; false: only how it is read
+        shadowmap::Filter filter;
     };
     const Edit edits[] = {
-        {"resolution", {{"resolution", 128}}, "miss"},
-        {"depth format and offset", {{"resolution", 128}, {"depth_format", "d32f"}, {"polygon_offset", {1.0, 4.0}}}, "miss"},
+        {"resolution", {{"resolution", 128}}, true, shadowmap::Filter::Pcf},
+        {"depth format and offset", {{"resolution", 128}, {"depth_format", "d32f"}, {"polygon_offset", {1.0, 4.0}}},
+         true, shadowmap::Filter::Pcf},
         {"filter and dimming", {{"resolution", 128}, {"depth_format", "d32f"}, {"polygon_offset", {1.0, 4.0}},
-                                {"filter", "nearest"}, {"dimming", 0.1}}, "hit"},
+                                {"filter", "nearest"}, {"dimming", 0.1}}, false, shadowmap::Filter::Nearest},
     };
     for (const Edit& edit : edits) {
         SCOPED_TRACE(edit.what);
         scene.lights[0].extras = {{"shadow", edit.shadow}};
         reloaded.reloadSettings();
         const engine::FrameResult frame = reloaded.renderFrame(request);
-        const nlohmann::json& lights = frame.pluginStats["shadowmap_plugin"]["lights"];
-        EXPECT_EQ(lights[0]["cache"], edit.spotCache);
-        EXPECT_EQ(lights[1]["cache"], "hit") << "the bulb's settings did not change";
-        EXPECT_EQ(lights[0]["resolution"], 128);
-        EXPECT_EQ(lights[0]["filter"], edit.shadow.value("filter", "pcf"));
+        const engine::ShadowView& spot = *frame.shadowView(0);
+        EXPECT_EQ(spot.renderedThisFrame, edit.spotRedrawn);
+        EXPECT_FALSE(frame.shadowView(1)->renderedThisFrame) << "the bulb's settings did not change";
+        const shadowmap::ShadowSettings used = shadowmap::usedSettings(spot);
+        EXPECT_EQ(used.resolution, 128);
+        EXPECT_EQ(used.filter, edit.filter);
 
         fresh.setScene(scene);
         fresh.renderFrame(request);

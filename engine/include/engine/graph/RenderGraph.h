@@ -88,6 +88,7 @@ struct PassReport {
     int order = -1;          // position in execution order, -1 when culled
     double wallMs = 0;       // only measured with ExecuteOptions::timing
     std::uint64_t draws = 0, triangles = 0;
+    std::uint64_t drawsCulled = 0;  // objects the pass left out as outside its view
     std::vector<ResourceHandle> reads;  // what the pass declared it reads, at the versions it read
 };
 
@@ -98,6 +99,7 @@ public:
     std::uint32_t texture(ResourceHandle resource) const;
     const TextureDesc& desc(ResourceHandle resource) const;
     void countDraw(std::uint64_t triangles);  // one draw call of that many triangles
+    void countCulledDraw();                   // one object left out as outside the view
     const std::string& passName() const;
 
 private:

@@ -8,13 +8,16 @@ namespace engine {
 
 enum class TextureFormat { RGBA8, SRGB8_A8, RGBA16F, RGBA32F, R8, R32F, RG32F, Depth16, Depth24, Depth32F };
 
+// A cube map's faces, in GL order: +X, -X, +Y, -Y, +Z, -Z.
+constexpr int kCubeFaces = 6;
+
 const char* toString(TextureFormat format);
 bool isDepthFormat(TextureFormat format);
 
 struct TextureDesc {
     int width = 0, height = 0;
     TextureFormat format = TextureFormat::RGBA8;
-    int layers = 1;     // array layers (for a cube: cube count, each of 6 faces)
+    int layers = 1;     // array layers (for a cube: cube count, each of kCubeFaces faces)
     bool cube = false;
     bool operator==(const TextureDesc&) const = default;
 };

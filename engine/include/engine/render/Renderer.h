@@ -33,7 +33,7 @@ struct FrameRequest {
 };
 
 struct DepthReadback {
-    int width = 0, height = 0, layers = 1;  // layers: 6 for a cube (GL face order)
+    int width = 0, height = 0, layers = 1;  // layers: kCubeFaces for a cube (GL face order)
     bool cube = false;                      // the layers are a cube map's faces
     std::vector<float> depth;               // layer after layer, each top row first
 };
@@ -73,6 +73,12 @@ struct FrameResult {
     // The wall time of the passes `view` names that ran this frame; `ran` says whether any did
     // (none: the map was cached, or the light has none).
     double shadowPassMs(const ShadowView& view, bool& ran) const;
+    // What `view`'s passes drew and left out as outside their views this frame (a culled
+    // pass draws nothing).
+    struct PassWork {
+        std::uint64_t draws = 0, triangles = 0, drawsCulled = 0;
+    };
+    PassWork shadowPassWork(const ShadowView& view) const;
 };
 
 class Renderer {

@@ -20,6 +20,7 @@ struct ShadowMapLayer {
     glm::dmat4 lightToWorld{1.0};  // L of this layer's view
     glm::dmat4 projection{1.0};    // P_light
     bool rendered = false;         // false: no receiver in view, cleared to far
+    bool redrawn = false;          // its passes ran this frame (false: kept from the cache)
 };
 
 struct ShadowView {
@@ -45,6 +46,9 @@ struct ShadowView {
     std::vector<double> cascadeSplits;
     double nearPlane = 0.0, farPlane = 0.0;  // farPlane may be +infinity
     bool renderedThisFrame = false;     // false: the map was still right (served from the cache)
+    // A count of cascades chosen automatically: true when this frame kept last frame's
+    // choice (nothing it depends on moved) instead of weighing the counts again.
+    bool cascadeCountReused = false;
     // The map in this frame's graph (FrameRequest::shadowMapSlots reads it back), and the
     // passes of this frame's graph that render it (none when cached; their sum is the
     // light's shadow time: FrameResult::shadowPassMs).

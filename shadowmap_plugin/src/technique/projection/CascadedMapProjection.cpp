@@ -125,9 +125,14 @@ void CascadedMapProjection::addStats(const LightState& light, nlohmann::json& st
 }
 
 void CascadedMapProjection::describe(const LightState& light, engine::ShadowView& out) const {
-    const CascadeViews& views = light.frame.cascades;
-    for (const LightView& cascade : views.cascades)
-        out.layers.push_back({cascade.lightToWorld, cascade.projection, !cascade.empty});
+    const LightShadowFrame& frame = light.frame;
+    const CascadeViews& views = frame.cascades;
+    for (std::size_t c = 0; c < views.cascades.size(); ++c) {
+        const LightView& cascade = views.cascades[c];
+        const bool kept = c < frame.cascadeHits.size() && frame.cascadeHits[c];
+        out.layers.push_back({cascade.lightToWorld, cascade.projection, !cascade.empty, !kept});
+    }
+    out.cascadeCountReused = frame.autoCascades && frame.cascadeNeedReused;
     out.cascadeSplits = views.splits;
     out.nearPlane = views.cascades.front().nearPlane;
     out.farPlane = views.cascades.front().farPlane;

@@ -47,7 +47,7 @@ std::vector<MapLayer> CubeMapProjection::layers(const LightState& light) const {
     // A face that sees no receiver is cleared (lookups there must read "far") but draws
     // nothing; the last face records the map's key.
     std::vector<MapLayer> faces;
-    for (int face = 0; face < 6; ++face) {
+    for (int face = 0; face < engine::kCubeFaces; ++face) {
         const LightView& view = light.frame.pointViews.faces[face];
         faces.push_back({face, view.viewProjection(), !view.empty, -1, face == 5 ? light.frame.mapKey : 0});
     }
@@ -78,7 +78,7 @@ void CubeMapProjection::addStats(const LightState& light, nlohmann::json& stats)
 
 void CubeMapProjection::describe(const LightState& light, engine::ShadowView& out) const {
     for (const LightView& face : light.frame.pointViews.faces)
-        out.layers.push_back({face.lightToWorld, face.projection, !face.empty});
+        out.layers.push_back({face.lightToWorld, face.projection, !face.empty, !light.frame.cacheHit});
     out.nearPlane = light.frame.pointViews.nearPlane;
     out.farPlane = light.frame.pointViews.farPlane;
 }

@@ -11,7 +11,7 @@ public:
     MapKind kind() const override { return MapKind::Cube; }
     const char* name() const override { return "cube"; }
     ProjectionFit fit(LightState& light, const PlanContext& context, const FrustumFitOptions& options) const override;
-    MapShape shape(const LightState&) const override { return {MapShape::Target::Cube, 6}; }
+    MapShape shape(const LightState&) const override { return {MapShape::Target::Cube, engine::kCubeFaces}; }
     void decideCache(LightState& light, const engine::Scene& scene, std::uint64_t sceneGeneration,
                      bool cacheMaps) const override;
     std::vector<MapLayer> layers(const LightState& light) const override;

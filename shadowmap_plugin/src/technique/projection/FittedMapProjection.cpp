@@ -50,7 +50,7 @@ void FittedMapProjection::addStats(const LightState& light, nlohmann::json& stat
 
 void FittedMapProjection::describe(const LightState& light, engine::ShadowView& out) const {
     const LightView& view = light.frame.view;
-    out.layers.push_back({view.lightToWorld, view.projection, true});
+    out.layers.push_back({view.lightToWorld, view.projection, true, !light.frame.cacheHit});
     out.nearPlane = view.nearPlane;
     out.farPlane = view.farPlane;
 }
