@@ -14,7 +14,7 @@
 // from PluginRegistry (engine/plugin/RenderPlugin.h, engine/render/Frame.h, the graph).
 #include <cstdint>
 
-#define ENGINE_PLUGIN_ABI_VERSION 8u
+#define ENGINE_PLUGIN_ABI_VERSION 9u
 #define ENGINE_PLUGIN_INTERFACE_ID "org.shadowengine.RenderPlugin/1.0"
 #define ENGINE_PLUGIN_ENTRY engine_plugin_entry
 #define ENGINE_PLUGIN_ENTRY_NAME "engine_plugin_entry"
