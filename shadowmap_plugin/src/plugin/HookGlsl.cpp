@@ -1,21 +1,39 @@
 #include "plugin/HookGlsl.h"
 
 #include "plugin/ShadowBlock.h"
+#include "technique/Techniques.h"
+
+#include <set>
 
 namespace shadowmap {
 
 namespace shaders {
 extern const char shadow_data_glsl[];
+extern const char map_shapes_glsl[];
 extern const char visibility_glsl[];
 extern const char texgen_glsl[];
 } // namespace shaders
 
 namespace {
 
+// visibility.glsl's functions for one lookup: $LOOKUP becomes its GLSL name.
+std::string mapShapeFunctions(const std::string& glslName) {
+    std::string code = shaders::visibility_glsl;
+    const std::string placeholder = "$LOOKUP";
+    for (std::size_t at = code.find(placeholder); at != std::string::npos; at = code.find(placeholder, at))
+        code.replace(at, placeholder.size(), glslName);
+    return code;
+}
+
 HookGlsl::Code generate(const std::vector<HookGlsl::Lookup>& lookups) {
-    std::string declarations, dispatch, debugDispatch, texgenOutputs, texgen;
+    std::string lookupFunctions, declarations, dispatch, debugDispatch, texgenOutputs, texgen;
+    std::set<std::string> written;
+    for (const HookGlsl::Lookup& lookup : lookups)
+        if (written.insert(lookup.glslName).second)
+            lookupFunctions += mapLookupGlsl(lookup.glslName) + mapShapeFunctions(lookup.glslName);
     for (const HookGlsl::Lookup& lookup : lookups) {
         const std::string slot = std::to_string(lookup.slot);
+        const std::string suffix = "_" + lookup.glslName + "(";
         if (lookup.cascades > 0) {
             // Cascades pick their layer per pixel from the eye position: nothing interpolated.
             const std::string count = std::to_string(lookup.cascades);
@@ -27,8 +45,8 @@ HookGlsl::Code generate(const std::vector<HookGlsl::Lookup>& lookups) {
             }
             declarations += "layout(binding = " + std::to_string(lookup.unit) +
                             ") uniform sampler2DArrayShadow uShadowMap" + slot + ";\n";
-            dispatch += "    if (lightSlot == " + slot + ") return shadowMapCascades(" + slot + ", eyePosition, uShadowMap" +
-                        slot + ", " + count + ");\n";
+            dispatch += "    if (lightSlot == " + slot + ") return shadowMapCascades" + suffix + slot +
+                        ", eyePosition, uShadowMap" + slot + ", " + count + ");\n";
             continue;
         }
         // The lookup's coordinates come interpolated from the vertex part (texgen.glsl).
@@ -47,11 +65,12 @@ HookGlsl::Code generate(const std::vector<HookGlsl::Lookup>& lookups) {
         }
         declarations += "layout(binding = " + std::to_string(lookup.unit) + ") uniform " +
                         (lookup.cube ? "samplerCubeShadow" : "sampler2DShadow") + " uShadowMap" + slot + ";\n";
-        dispatch += "    if (lightSlot == " + slot + ") return " + (lookup.cube ? "shadowMapCube(" : "shadowMap2D(") +
-                    slot + ", " + coordinate + ", uShadowMap" + slot + ");\n";
+        dispatch += "    if (lightSlot == " + slot + ") return " + (lookup.cube ? "shadowMapCube" : "shadowMap2D") +
+                    suffix + slot + ", " + coordinate + ", uShadowMap" + slot + ");\n";
     }
     HookGlsl::Code code;
-    code.fragment = shadowBlockGlslDefines() + shaders::shadow_data_glsl + shaders::visibility_glsl + declarations +
+    code.fragment = shadowBlockGlslDefines() + shaders::shadow_data_glsl + shaders::map_shapes_glsl + lookupFunctions +
+                    declarations +
                     "float lightVisibility(int lightSlot, vec3 eyePosition, vec3 eyeNormal) {\n" + dispatch +
                     "    return shadowData.params[lightSlot].w;\n}\n" +
                     "vec4 lightDebugColor(int lightSlot, vec3 eyePosition, vec3 eyeNormal) {\n" + debugDispatch +

@@ -21,6 +21,7 @@ public:
         bool cube = false;      // a cube map (point light), else a 2D map
         int rawUnit = -1;       // unit of its raw-depth sampler for the comparison view; -1: none
         int cascades = 0;       // > 0: a 2D array map of that many cascades (directional)
+        std::string glslName;   // its MapLookup's glslName(): which functions read the map
         auto operator<=>(const Lookup&) const = default;
     };
     struct Code {

@@ -58,7 +58,7 @@ nlohmann::json LightShadow::stats() const {
                 {"triangles", frame.triangles},
                 {"casters_culled", frame.castersCulled}});
     if (!frame.skipReason.empty()) out["skip_reason"] = frame.skipReason;
-    if (settings.variant == Variant::Backface) out["open_casters"] = frame.openCasters;
+    if (const DepthTechnique* technique = depthTechnique(settings.variant)) technique->addStats(*this, out);
     if (frame.kind != MapKind::None) out["cache"] = frame.cacheHit ? "hit" : "miss";
     if (const MapProjection* projection = mapProjection(frame.kind)) projection->addStats(*this, out);
     if (frame.autoCascades) {

@@ -36,8 +36,8 @@ engine::LightVisibilityHook ShadowHook::build(const engine::Frame& frame, const 
     // whose frustum holds nothing visible): the lit pass needs no lookup for it.
     std::map<int, float> constantShades;
 
-    // What the generated GLSL depends on: per shadowed light its slot, map kind and whether
-    // its comparison view has a texture unit.
+    // What the generated GLSL depends on: per shadowed light its slot, map kind, lookup
+    // functions and whether its comparison view has a texture unit.
     std::vector<HookGlsl::Lookup> lookups;
     for (const LightShadow& light : lights) {
         const LightShadowFrame& plan = light.frame;
@@ -56,7 +56,8 @@ engine::LightVisibilityHook ShadowHook::build(const engine::Frame& frame, const 
         // from the last unit, above every light's comparing unit.
         const int rawUnit = maxTextureUnits - 1 - light.slot;
         const bool debuggable = rawUnit >= kFirstUnit + static_cast<int>(lights.size());
-        HookGlsl::Lookup lookup{light.slot, unit, false, debuggable ? rawUnit : -1, 0};
+        const MapLookup& mapLookup = shadowmap::mapLookup(light.settings.filter);
+        HookGlsl::Lookup lookup{light.slot, unit, false, debuggable ? rawUnit : -1, 0, mapLookup.glslName()};
         if (!projection->packLookup(light, context, block, lookup)) {
             warn(light, "no shadow: its texgen planes for this camera are not finite");
             constantShades[light.slot] = params[light.slot].w;
@@ -78,7 +79,7 @@ engine::LightVisibilityHook ShadowHook::build(const engine::Frame& frame, const 
         engine::Hasher shadeKey;
         shadeKey.add(plan.mapKey);
         shadeKey.add(params[light.slot]);
-        mapLookup(light.settings.filter).addShadeKey(shadeKey);
+        mapLookup.addShadeKey(shadeKey);
         projection->addShadeKey(light, shadeKey);
         // Without map caching nothing is reused: a depth pass whose map no pass reads
         // would be culled, and timing runs (bench, cache_maps false) would time nothing.

@@ -45,6 +45,8 @@ public:
     // Its part of the depth passes' style (the offsets and depth direction are set).
     virtual void adjustStyle(LightState&, const DepthStyleContext&, DepthPassStyle&) const {}
     virtual void addLayerPasses(const LayerPasses& passes) const = 0;
+    // Its part of the light's --stats (what it decided this frame beyond the passes).
+    virtual void addStats(const LightState&, nlohmann::json&) const {}
 };
 
 } // namespace shadowmap

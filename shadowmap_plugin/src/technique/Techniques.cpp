@@ -60,4 +60,10 @@ const MapLookup& mapLookup(Filter filter) {
     return *lookup;
 }
 
+const char* mapLookupGlsl(const std::string& glslName) {
+    const MapLookup* lookup = find(kLookups, glslName, [](const MapLookup& l) { return std::string(l.glslName()); });
+    if (!lookup) throw std::logic_error("no lookup with GLSL name " + glslName);
+    return lookup->glsl();
+}
+
 } // namespace shadowmap

@@ -7,6 +7,8 @@
 #include "technique/MapLookup.h"
 #include "technique/MapProjection.h"
 
+#include <string>
+
 namespace shadowmap {
 
 // The variant's technique; nullptr for Variant::None (no map).
@@ -16,5 +18,7 @@ const MapProjection* mapProjection(MapKind kind);
 // The projection a light of this type gets with this many cascades this frame.
 const MapProjection& projectionFor(engine::Light::Type type, int cascadeCount);
 const MapLookup& mapLookup(Filter filter);
+// The GLSL of the lookups named `glslName` (MapLookup::glslName); std::logic_error if none.
+const char* mapLookupGlsl(const std::string& glslName);
 
 } // namespace shadowmap

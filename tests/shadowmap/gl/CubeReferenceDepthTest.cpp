@@ -63,7 +63,7 @@ protected:
                                 "  vec2 p = vec2((gl_VertexID << 1) & 2, gl_VertexID & 2);\n"
                                 "  gl_Position = vec4(p * 2.0 - 1.0, 0.0, 1.0);\n}\n"},
              {GL_FRAGMENT_SHADER,
-              shadowmap::test::hookPrelude() + shadowmap::shaders::visibility_glsl +
+              shadowmap::test::hookPrelude() + shadowmap::shaders::map_shapes_glsl +
                   "layout(std430, binding = 0) readonly buffer Directions { vec4 toPoint[]; };\n"
                   "out vec4 outDepth;\n"
                   "void main() {\n"

@@ -7,6 +7,7 @@
 
 #include "plugin/HookGlsl.h"
 #include "plugin/ShadowBlock.h"
+#include "technique/Techniques.h"
 
 #include "engine/gl/Program.h"
 #include "engine/render/Frame.h"
@@ -23,7 +24,9 @@ class ShadowBlockLayout : public engine::test::GlTest {
 protected:
     static engine::gl::Program compileHook() {
         HookGlsl glsl;
-        const HookGlsl::Code& code = glsl.codeFor({{0, 8, false, -1, 0}, {1, 9, true, -1, 0}, {2, 10, false, -1, 3}});
+        const std::string pcf = shadowmap::mapLookup(shadowmap::Filter::Pcf).glslName();
+        const HookGlsl::Code& code =
+            glsl.codeFor({{0, 8, false, -1, 0, pcf}, {1, 9, true, -1, 0, pcf}, {2, 10, false, -1, 3, pcf}});
         const std::string header = "#version 450 core\n#define MAX_LIGHTS " + std::to_string(engine::kMaxLights) + "\n";
         return engine::gl::Program::compile(
             "shadow block layout",

@@ -12,6 +12,7 @@
 namespace shadowmap::shaders {
 extern const char shadow_data_glsl[];
 extern const char texgen_glsl[];
+extern const char map_shapes_glsl[];
 extern const char visibility_glsl[];
 } // namespace shadowmap::shaders
 

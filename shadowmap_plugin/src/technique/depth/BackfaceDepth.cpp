@@ -25,4 +25,8 @@ void BackfaceDepth::adjustStyle(LightState& light, const DepthStyleContext& cont
                                    "); drawn two-sided with polygon offset (all in --stats open_casters)");
 }
 
+void BackfaceDepth::addStats(const LightState& light, nlohmann::json& stats) const {
+    stats["open_casters"] = light.frame.openCasters;
+}
+
 } // namespace shadowmap

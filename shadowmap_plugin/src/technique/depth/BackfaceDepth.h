@@ -11,6 +11,8 @@ class BackfaceDepth final : public StandardDepth {
 public:
     Variant variant() const override { return Variant::Backface; }
     void adjustStyle(LightState& light, const DepthStyleContext& context, DepthPassStyle& style) const override;
+    // open_casters: the casters drawn two-sided, by node name.
+    void addStats(const LightState& light, nlohmann::json& stats) const override;
 };
 
 } // namespace shadowmap

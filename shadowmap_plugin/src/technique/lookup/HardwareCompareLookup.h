@@ -10,6 +10,8 @@ public:
     HardwareCompareLookup(Filter filter, bool bilinear) : filter_(filter), bilinear_(bilinear) {}
     Filter filter() const override { return filter_; }
     bool bilinearCompare() const override { return bilinear_; }
+    const char* glslName() const override { return "hardwareCompare"; }
+    const char* glsl() const override;  // shaders/lookup/hardwareCompare.glsl
 
 private:
     Filter filter_;

@@ -1,0 +1,96 @@
+// What every lookup of the shadow plugin shares, whatever it fetches from the map: picking
+// a cascade and its coordinates, a cube face's reference depth and its bias, and the
+// comparison view (engine-render --shadow-compare). Placed after shadow_data.glsl's block and
+// before each lookup's instance of visibility.glsl.
+
+// Cascaded directional maps (a sampler2DArrayShadow, one layer per cascade): the cascade is
+// the first whose far split lies beyond the pixel's view depth (the last one for anything
+// farther), and its coordinates come from that cascade's eye planes, per pixel: four
+// cascades' interpolated coordinates would cost 16 varyings per light. The planes are
+// camera-relative (Ee = Epo * V), so the float product is as precise as texgen.glsl's.
+int cascadeIndex(int slot, vec3 eyePosition, int count) {
+    vec4 passed = vec4(greaterThan(vec4(-eyePosition.z), shadowData.cascadeFar[slot]));
+    return min(int(dot(passed, vec4(1.0))), count - 1);
+}
+
+vec3 cascadeCoordinates(int slot, vec3 eyePosition, int cascade) {
+    return (shadowData.cascadePlanes[slot * MAX_CASCADES + cascade] * vec4(eyePosition, 1.0)).xyz;
+}
+
+// The distance from the light along the major axis of toPoint = x_world - light: the cube
+// face that holds the texel is the one of the largest |component| (OpenGL 4.5 table 8.19),
+// and its perspective depth is this distance.
+float cubeMajorAxisDistance(vec3 toPoint) {
+    return max(max(abs(toPoint.x), abs(toPoint.y)), abs(toPoint.z));
+}
+
+// The window depth a cube face wrote at distance `major` along its axis, in forms that keep
+// float's relative precision: f/(f-n) * (1 - n/major), or reversed n/(f-n) * (f/major - 1)
+// (the same numbers as 0.5 * ((f+n)/(f-n) - 2fn/((f-n) major)) + 0.5, fewer roundings);
+// with an infinite far (f = 0 here): 1 - n/major, reversed n/major. Its CPU twin is
+// cubeShadowReferenceDepth (math/LightFrustum.h); CubeReferenceDepthTest compares the two.
+float cubeReferenceDepth(int slot, float major) {
+    float n = shadowData.pointLight[slot].w, f = shadowData.pointFar[slot].x;
+    bool reversed = shadowData.params[slot].x > 0.5;
+    if (f <= 0.0) return reversed ? n / major : 1.0 - n / major;
+    return reversed ? n / (f - n) * (f / major - 1.0) : f / (f - n) * (1.0 - n / major);
+}
+
+// The comparison view of Kilgard's GDC 2000 slides, for engine-render --shadow-compare: green where the
+// reference depth r and the map's depth agree (the surface is the one the light sees
+// first: lit), red where the map holds something nearer (shadowed), blue where it holds
+// something farther (r in front of the map: polygon offset or peeling at work), grey where
+// the map has no say (behind the light, outside its frustum).
+// In window depth: about the polygon offset of a moderately sloped surface at 2048 texels
+// (2 x one texel of slope + 8 units), so an offset lit surface shows green and only
+// grazing ones, where the offset grows with the slope, turn blue.
+const float kDepthAgreement = 1e-3;
+
+vec4 comparisonColor(float reference, float stored) {
+    if (abs(reference - stored) <= kDepthAgreement) return vec4(0.1, 0.8, 0.1, 1.0);
+    return reference > stored ? vec4(0.85, 0.1, 0.1, 1.0) : vec4(0.1, 0.2, 0.9, 1.0);
+}
+
+vec4 comparison2D(int slot, vec4 coord, sampler2D depth) {
+    vec3 p = coord.xyz / coord.w;
+    if (coord.w <= 0.0 || any(lessThan(p, vec3(0.0))) || any(greaterThan(p, vec3(1.0))))
+        return vec4(0.4, 0.4, 0.4, 1.0);
+    float stored = texture(depth, p.xy).r;
+    // Reversed Z: nearer is larger, so the roles swap for "reference behind stored".
+    return shadowData.params[slot].x > 0.5 ? comparisonColor(stored, p.z) : comparisonColor(p.z, stored);
+}
+
+vec4 comparisonCascades(int slot, vec3 eyePosition, sampler2DArray depth, int count) {
+    int cascade = cascadeIndex(slot, eyePosition, count);
+    vec3 p = (shadowData.cascadePlanes[slot * MAX_CASCADES + cascade] * vec4(eyePosition, 1.0)).xyz;
+    if (any(lessThan(p, vec3(0.0))) || any(greaterThan(p, vec3(1.0)))) return vec4(0.4, 0.4, 0.4, 1.0);
+    float stored = texture(depth, vec3(p.xy, float(cascade))).r;
+    return shadowData.params[slot].x > 0.5 ? comparisonColor(stored, p.z) : comparisonColor(p.z, stored);
+}
+
+// The depth a point at `major` along its cube face's axis is compared with: its window depth
+// minus the lookup's biases, so the comparison view judges exactly what the lookup judges.
+float cubeBiasedReference(int slot, float major) {
+    float depth = cubeReferenceDepth(slot, major) - shadowData.params[slot].y;
+    bool reversed = shadowData.params[slot].x > 0.5;
+    // Lowered by the depth a 45-degree surface spans across kCubeTexelBias texels here
+    // (CubeMapProjection.cpp says why): d(depth)/d(major) times a texel's width, 2 major / res
+    // (pointFar.y holds kCubeTexelBias * 2 / res), so the bias is a fixed part of a texel at
+    // every distance; the window depth grows with major as n f / ((f - n) major^2), or n / major^2
+    // with an infinite far, and falls (reversed Z) as fast.
+    float n = shadowData.pointLight[slot].w, f = shadowData.pointFar[slot].x;
+    float texelBias = (f <= 0.0 ? n / major : n * f / ((f - n) * major)) * shadowData.pointFar[slot].y;
+    return depth + (reversed ? texelBias : -texelBias);
+}
+
+vec4 comparisonCube(int slot, vec3 toPoint, samplerCube depth) {
+    float major = cubeMajorAxisDistance(toPoint);
+    float reference = cubeReferenceDepth(slot, major);
+    bool reversed = shadowData.params[slot].x > 0.5;
+    if (major < shadowData.pointLight[slot].w || (reversed ? reference < 0.0 : reference > 1.0))
+        return vec4(0.4, 0.4, 0.4, 1.0);
+    float stored = texture(depth, toPoint).r;
+    float biased = cubeBiasedReference(slot, major);
+    return reversed ? comparisonColor(stored, biased) : comparisonColor(biased, stored);
+}
+
