@@ -94,9 +94,19 @@ void validateMeshReferences(const LoadContext& context, const tinygltf::Model& m
 }
 
 void validateMaterialReferences(const LoadContext& context, const tinygltf::Model& model) {
-    for (std::size_t i = 0; i < model.materials.size(); ++i)
-        requireIndex(context, indexed("materials", i), "baseColorTexture: texture",
-                     model.materials[i].pbrMetallicRoughness.baseColorTexture.index, model.textures.size(), true);
+    // Every texture a material reads (GltfMaterials.cpp converts each of these).
+    for (std::size_t i = 0; i < model.materials.size(); ++i) {
+        const tinygltf::Material& material = model.materials[i];
+        const std::pair<const char*, int> references[] = {
+            {"baseColorTexture: texture", material.pbrMetallicRoughness.baseColorTexture.index},
+            {"metallicRoughnessTexture: texture", material.pbrMetallicRoughness.metallicRoughnessTexture.index},
+            {"normalTexture: texture", material.normalTexture.index},
+            {"occlusionTexture: texture", material.occlusionTexture.index},
+            {"emissiveTexture: texture", material.emissiveTexture.index},
+        };
+        for (const auto& [what, index] : references)
+            requireIndex(context, indexed("materials", i), what, index, model.textures.size(), true);
+    }
     for (std::size_t i = 0; i < model.textures.size(); ++i) {
         requireIndex(context, indexed("textures", i), "source: image", model.textures[i].source,
                      model.images.size(), true);
