@@ -97,7 +97,10 @@ nlohmann::json statsJson(const RenderOptions& options, const std::vector<double>
     stats["height"] = options.height;
     stats["frames"] = options.frames;
     stats["frame_ms"] = frameMs;
-    stats["frame_ms_median"] = tools::median(frameMs);
+    const tools::TimeSummary frameTimes = tools::summarizeTimes(frameMs);
+    stats["frame_ms_median"] = frameTimes.median;
+    stats["frame_ms_p99"] = frameTimes.p99;
+    stats["frame_ms_max"] = frameTimes.max;
     nlohmann::json list = nlohmann::json::array();
     for (const std::string& name : order) {
         const PassSummary& pass = passes.at(name);
@@ -295,9 +298,10 @@ int run(const RenderOptions& options, std::unique_ptr<engine::GlContext>& contex
         engine::writePngAtomically(file, width, height, 1, gray);
     }
 
-    std::printf("%s: %dx%d, %d frame(s), median frame %.2f ms (%s)\n", options.scene.c_str(),
-                options.width, options.height, options.frames, tools::median(frameMs),
-                context->rendererString().c_str());
+    const tools::TimeSummary frameTimes = tools::summarizeTimes(frameMs);
+    std::printf("%s: %dx%d, %d frame(s), median frame %.2f ms, p99 %.2f ms, max %.2f ms (%s)\n",
+                options.scene.c_str(), options.width, options.height, options.frames, frameTimes.median,
+                frameTimes.p99, frameTimes.max, context->rendererString().c_str());
     std::printf("  %-28s %10s %8s %12s  %s\n", "pass", "ms", "draws", "triangles", "state");
     for (const std::string& name : order) {
         const PassSummary& pass = passes[name];

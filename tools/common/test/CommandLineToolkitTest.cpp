@@ -180,6 +180,20 @@ TEST(Median, OddEvenAndEmpty) {
     EXPECT_EQ(tools::median({}), 0.0);
 }
 
+TEST(Median, PercentileIsTheNearestRankSoItIsAValueThatHappened) {
+    std::vector<double> frames;
+    for (int i = 1; i <= 200; ++i) frames.push_back(static_cast<double>(i));
+    // 200 values: the 99th percentile is the 198th smallest, the maximum the 200th.
+    EXPECT_EQ(tools::percentile(frames, 0.99), 198.0);
+    EXPECT_EQ(tools::percentile(frames, 1.0), 200.0);
+    // Under 100 values the p99 is the maximum: one hitch in 60 frames shows.
+    const tools::TimeSummary hitch = tools::summarizeTimes({10.0, 11.0, 10.5, 400.0, 10.2});
+    EXPECT_EQ(hitch.median, 10.5);
+    EXPECT_EQ(hitch.p99, 400.0);
+    EXPECT_EQ(hitch.max, 400.0);
+    EXPECT_EQ(tools::percentile({}, 0.99), 0.0);
+}
+
 // The flag loop: values are taken whatever they look like, switches take none, and the
 // errors it owns name the flag.
 TEST(CommandLine, FlagLoopErrors) {
