@@ -45,8 +45,9 @@ TEST_F(ContextTest, CompatibilityContextHasFixedFunctionTexgen) {
     glGetIntegerv(GL_MAJOR_VERSION, &major);
     glGetIntegerv(GL_MINOR_VERSION, &minor);
     glGetIntegerv(GL_CONTEXT_PROFILE_MASK, &profile);
-    EXPECT_EQ(major, 4);
-    EXPECT_EQ(minor, 5);
+    // At least the 4.5 asked for: EGL may give a later version that is backward compatible
+    // with it (llvmpipe gives 4.5, NVIDIA's driver 4.6).
+    EXPECT_GE(major * 10 + minor, 45) << major << "." << minor;
     EXPECT_EQ(profile, GL_CONTEXT_COMPATIBILITY_PROFILE_BIT);
 
     const GLfloat plane[] = {1.0f, 2.0f, 3.0f, 4.0f};
