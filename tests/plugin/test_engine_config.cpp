@@ -31,18 +31,60 @@ TEST(EngineConfig, ParsesPluginsSettingsAndRenderer) {
     ASSERT_EQ(config.pluginDirs.size(), 1u);
     EXPECT_EQ(config.pluginDirs[0], std::filesystem::path("my/plugins"));
     EXPECT_FLOAT_EQ(config.renderer.ambient.y, 0.2f);
-    EXPECT_FALSE(config.renderer.shadeCache);
-    EXPECT_FALSE(config.renderer.lightFootprints);
+    EXPECT_EQ(config.renderer.shadeCache, std::optional<bool>(false));
+    EXPECT_EQ(config.renderer.lightFootprints, std::optional<bool>(false));
     EXPECT_TRUE(config.renderer.checkGlErrors);
-    EXPECT_FALSE(config.renderer.unrolledLightSum);
+    EXPECT_EQ(config.renderer.unrolledLightSum, std::optional<bool>(false));
     EXPECT_FLOAT_EQ(config.renderer.exposure, 2.5e-5f);
     EXPECT_EQ(config.renderer.toneMapping, engine::RendererConfig::ToneMapping::PbrNeutral);
     EXPECT_EQ(engine::parseEngineConfig("{}", "my/engine.json").renderer.exposure, 1.0f);
     EXPECT_EQ(engine::parseEngineConfig("{}", "my/engine.json").renderer.toneMapping,
               engine::RendererConfig::ToneMapping::None);
-    EXPECT_TRUE(engine::parseEngineConfig("{}", "my/engine.json").renderer.shadeCache);
-    EXPECT_TRUE(engine::parseEngineConfig("{}", "my/engine.json").renderer.lightFootprints);
-    EXPECT_TRUE(engine::parseEngineConfig("{}", "my/engine.json").renderer.unrolledLightSum);
+    // Left out, the llvmpipe switches are unset: decided for the renderer (decideSwitches).
+    const engine::RendererConfig defaults = engine::parseEngineConfig("{}", "my/engine.json").renderer;
+    EXPECT_FALSE(defaults.shadeCache.has_value());
+    EXPECT_FALSE(defaults.lightFootprints.has_value());
+    EXPECT_FALSE(defaults.unrolledLightSum.has_value());
+}
+
+TEST(EngineConfig, SwitchesAreTrueFalseOrAuto) {
+    const engine::RendererConfig renderer = engine::parseEngineConfig(
+        R"({"renderer":{"shade_cache":true,"light_footprints":"auto","unrolled_light_sum":false}})", "my/engine.json")
+        .renderer;
+    EXPECT_EQ(renderer.shadeCache, std::optional<bool>(true));
+    EXPECT_FALSE(renderer.lightFootprints.has_value());
+    EXPECT_EQ(renderer.unrolledLightSum, std::optional<bool>(false));
+    EXPECT_NE(configError(R"({"renderer":{"shade_cache":"on"}})")
+                  .find("my/engine.json: renderer.shade_cache: must be true, false or \"auto\", not \"on\""),
+              std::string::npos)
+        << configError(R"({"renderer":{"shade_cache":"on"}})");
+    EXPECT_NE(configError(R"({"renderer":{"light_footprints":1}})").find("renderer.light_footprints: must be"),
+              std::string::npos);
+}
+
+// Unset switches follow the renderer: on for Mesa's software rasterizers, off on a GPU;
+// a switch the config sets is kept on either.
+TEST(EngineConfig, UnsetSwitchesAreOnForSoftwareRasterizersOffOnGpus) {
+    EXPECT_TRUE(engine::isSoftwareRasterizer("llvmpipe (LLVM 15.0.6, 256 bits)"));
+    EXPECT_TRUE(engine::isSoftwareRasterizer("softpipe"));
+    EXPECT_FALSE(engine::isSoftwareRasterizer("NVIDIA H200/PCIe/SSE2"));
+    EXPECT_FALSE(engine::isSoftwareRasterizer("AMD Radeon RX 7900 XTX (radeonsi, navi31, LLVM 15.0.6, DRM 3.54)"));
+    EXPECT_FALSE(engine::isSoftwareRasterizer("Mesa Intel(R) UHD Graphics 620 (KBL GT2)"));
+
+    engine::RendererConfig config;
+    const engine::RendererSwitches software = engine::decideSwitches(config, "llvmpipe (LLVM 15.0.6, 256 bits)");
+    EXPECT_TRUE(software.shadeCache && software.lightFootprints && software.unrolledLightSum);
+    const engine::RendererSwitches gpu = engine::decideSwitches(config, "NVIDIA H200/PCIe/SSE2");
+    EXPECT_FALSE(gpu.shadeCache || gpu.lightFootprints || gpu.unrolledLightSum);
+
+    config.shadeCache = true;
+    config.unrolledLightSum = false;
+    const engine::RendererSwitches forcedOnGpu = engine::decideSwitches(config, "NVIDIA H200/PCIe/SSE2");
+    EXPECT_TRUE(forcedOnGpu.shadeCache);
+    EXPECT_FALSE(forcedOnGpu.lightFootprints);
+    const engine::RendererSwitches forcedOnSoftware = engine::decideSwitches(config, "llvmpipe");
+    EXPECT_FALSE(forcedOnSoftware.unrolledLightSum);
+    EXPECT_TRUE(forcedOnSoftware.lightFootprints);
 }
 
 TEST(EngineConfig, BadInputNamesFileAndKey) {

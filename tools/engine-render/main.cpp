@@ -326,6 +326,10 @@ int run(const RenderOptions& options, std::unique_ptr<engine::GlContext>& contex
                     framesLimitingLookups, options.frames);
     nlohmann::json stats = statsJson(options, frameMs, order, passes, mapTimes, last);
     stats["shade_cache"] = shadeCacheFrames;
+    const engine::RendererSwitches& switches = renderer.switches();
+    stats["renderer_switches"] = {{"shade_cache", switches.shadeCache},
+                                  {"light_footprints", switches.lightFootprints},
+                                  {"unrolled_light_sum", switches.unrolledLightSum}};
     if (options.truth) stats["lights"] = printLightErrors(renderer, scene, request.camera, mapTimes);
     if (!options.stats.empty()) engine::writeFileAtomically(options.stats, stats.dump(2));
     if (!options.graphDot.empty()) engine::writeFileAtomically(options.graphDot, last.graphviz);

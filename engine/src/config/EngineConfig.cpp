@@ -29,6 +29,17 @@ PluginConfig parsePlugin(const nlohmann::json& entry, const std::string& file,
     return plugin;
 }
 
+// true, false, or "auto" (left unset: decideSwitches decides for the renderer).
+void readSwitch(const nlohmann::json& node, const char* key, const std::string& file,
+                std::optional<bool>& value) {
+    if (!node.contains(key)) return;
+    const std::string where = std::string("renderer.") + key;
+    const nlohmann::json& entry = node[key];
+    if (entry.is_string() && entry.get<std::string>() == "auto") value.reset();
+    else if (entry.is_boolean()) value = entry.get<bool>();
+    else throwInputError(file, where, "must be true, false or \"auto\", not " + entry.dump());
+}
+
 RendererConfig parseRenderer(const nlohmann::json& node, const std::string& file) {
     json::requireKnownKeys(node,
                            {"ambient", "clear_color", "exposure", "tone_mapping", "shade_cache", "light_footprints", "unrolled_light_sum",
@@ -52,19 +63,27 @@ RendererConfig parseRenderer(const nlohmann::json& node, const std::string& file
         else if (mapping == "pbr_neutral") renderer.toneMapping = RendererConfig::ToneMapping::PbrNeutral;
         else throwInputError(file, "renderer.tone_mapping", "\"" + mapping + "\" is not \"none\" or \"pbr_neutral\"");
     }
-    if (node.contains("shade_cache"))
-        renderer.shadeCache = json::readBool(node["shade_cache"], file, "renderer.shade_cache");
-    if (node.contains("light_footprints"))
-        renderer.lightFootprints = json::readBool(node["light_footprints"], file, "renderer.light_footprints");
-    if (node.contains("unrolled_light_sum"))
-        renderer.unrolledLightSum =
-            json::readBool(node["unrolled_light_sum"], file, "renderer.unrolled_light_sum");
+    readSwitch(node, "shade_cache", file, renderer.shadeCache);
+    readSwitch(node, "light_footprints", file, renderer.lightFootprints);
+    readSwitch(node, "unrolled_light_sum", file, renderer.unrolledLightSum);
     if (node.contains("check_gl_errors"))
         renderer.checkGlErrors = json::readBool(node["check_gl_errors"], file, "renderer.check_gl_errors");
     return renderer;
 }
 
 } // namespace
+
+bool isSoftwareRasterizer(std::string_view glRenderer) {
+    for (const std::string_view name : {"llvmpipe", "softpipe", "swrast"})
+        if (glRenderer.find(name) != std::string_view::npos) return true;
+    return false;
+}
+
+RendererSwitches decideSwitches(const RendererConfig& config, std::string_view glRenderer) {
+    const bool software = isSoftwareRasterizer(glRenderer);
+    return {config.shadeCache.value_or(software), config.lightFootprints.value_or(software),
+            config.unrolledLightSum.value_or(software)};
+}
 
 EngineConfig parseEngineConfig(const std::string& jsonText, const std::filesystem::path& path) {
     const std::string file = path.string();

@@ -47,7 +47,8 @@ std::uint64_t shadeViewKey(const Frame& frame, std::uint64_t sceneGeneration) {
 
 } // namespace
 
-LitPass::LitPass(const RendererConfig& config) : config_(config), programs_(config) {}
+LitPass::LitPass(const RendererConfig& config, const RendererSwitches& switches)
+    : config_(config), switches_(switches), programs_(config) {}
 
 void LitPass::drawScene(const Frame& frame, const std::vector<Region>& regions, PassContext& context) {
     const Scene& scene = frame.scene();
@@ -123,7 +124,7 @@ void LitPass::addPass(Frame& frame, const std::string& name, ResourceHandle targ
         std::min(static_cast<int>(frame.scene().lightInstances.size()), kMaxLights);
     // Only the shaded image uses the shade cache: the per-light views always ask the hook.
     if (output == LitOutput::Color) {
-        const bool cacheable = config_.shadeCache && hook;
+        const bool cacheable = switches_.shadeCache && hook;
         shadePlan_ = cacheable ? shadeCache_.plan(shadeViewKey(frame, sceneGeneration_), *hook, lightCount,
                                                   frame.camera().width, frame.camera().height)
                                : ShadeCache::uncached(lightCount);
@@ -136,14 +137,14 @@ void LitPass::addPass(Frame& frame, const std::string& name, ResourceHandle targ
          color ? shadePlan_ : ShadeCache::uncached(lightCount)}};
     if (color) {
         footprintLimitedLights_.clear();
-        if (config_.lightFootprints) {
+        if (switches_.lightFootprints) {
             FootprintSplit split = splitByLightFootprints(frame, shadePlan_);
             plans = std::move(split.regions);
             footprintLimitedLights_ = std::move(split.limitedLights);
         }
         shadingRegionCount_ = static_cast<int>(plans.size());
     }
-    const std::string lights = lightDefines(frame.scene(), lightCount, config_.unrolledLightSum);
+    const std::string lights = lightDefines(frame.scene(), lightCount, switches_.unrolledLightSum);
     const std::vector<unsigned> variants = variantsInUse(frame.scene(), frame.gpu());
     std::vector<Region> regions;
     bool evaluatesHook = false;

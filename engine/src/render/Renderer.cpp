@@ -31,10 +31,19 @@ ShadeCacheReport shadeCacheReport(const ShadeCache::Plan& plan) {
     return report;
 }
 
+// GL_RENDERER of the current context ("" without one).
+std::string currentGlRenderer() {
+    const auto* text = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+    return text ? text : "";
+}
+
 } // namespace
 
 Renderer::Renderer(const RendererConfig& config, std::vector<RenderPlugin*> plugins)
-    : config_(config), plugins_(std::move(plugins)), litPass_(std::make_unique<LitPass>(config)) {}
+    : config_(config),
+      switches_(decideSwitches(config, currentGlRenderer())),
+      plugins_(std::move(plugins)),
+      litPass_(std::make_unique<LitPass>(config, switches_)) {}
 
 Renderer::~Renderer() = default;
 

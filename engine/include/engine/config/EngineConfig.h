@@ -4,7 +4,7 @@
 //   "plugin_dirs": ["relative/or/absolute/dir", ...],     optional; relative to the config
 //   "plugins": [ {"library": "shadowmap_plugin", "settings": {...}} ],
 //   "renderer": {"ambient": [r,g,b], "clear_color": [r,g,b],          optional
-//                "shade_cache": true, "light_footprints": true, "unrolled_light_sum": true,
+//                "shade_cache": "auto", "light_footprints": "auto", "unrolled_light_sum": "auto",
 //                "check_gl_errors": false}
 // }
 // Unknown keys are errors (a typo must not silently change nothing). Where plugins are
@@ -13,7 +13,9 @@
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
+#include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace engine {
@@ -37,18 +39,21 @@ struct RendererConfig {
         PbrNeutral,  // Khronos PBR Neutral: keeps base colors up to 0.8 as they are, then rolls off
     };
     ToneMapping toneMapping = ToneMapping::None;
+    // The three switches made for llvmpipe (docs/gpu.md). Unset ("auto" in the config file),
+    // each is decided for the GL renderer by decideSwitches: on for a software rasterizer, off
+    // on a GPU.
+    //
     // Reuse a light's per-pixel shade while camera, geometry and light are unchanged
     // (ShadeCache.h); off: every frame asks the visibility hook for every pixel.
-    bool shadeCache = true;
+    std::optional<bool> shadeCache;
     // Look a spot or ranged point light's shadow up only on the part of the screen its light
     // can reach (LitPass.cpp, ShadingRegions.h); off: on every pixel. Images are the same
     // either way (its term is zero outside), only the time differs.
-    bool lightFootprints = true;
+    std::optional<bool> lightFootprints;
     // The lit shader sums the lights term by term, each with literal slot and light type;
     // off: one loop over the lights with their types in a constant array. Unrolled is what
-    // llvmpipe runs fastest (lit.frag's header has the numbers); a GPU may prefer the loop
-    // (one shorter program per light count): measure there with this switch.
-    bool unrolledLightSum = true;
+    // llvmpipe runs fastest (lit.frag's header has the numbers).
+    std::optional<bool> unrolledLightSum;
     // glGetError after every pass, and a GlError naming the pass whose commands raised the
     // flag. GL reports errors late and anonymously, so without it a bad call shows up, if
     // ever, far from its cause. On by default in builds without NDEBUG (Debug); it costs a
@@ -59,6 +64,22 @@ struct RendererConfig {
     bool checkGlErrors = true;
 #endif
 };
+
+// The llvmpipe switches as a renderer runs them.
+struct RendererSwitches {
+    bool shadeCache = true;
+    bool lightFootprints = true;
+    bool unrolledLightSum = true;
+};
+
+// A software rasterizer, by its GL_RENDERER string: Mesa's llvmpipe, softpipe or swrast.
+bool isSoftwareRasterizer(std::string_view glRenderer);
+
+// The config's switches, each unset one decided for the renderer named by glRenderer
+// (GL_RENDERER): on for a software rasterizer, where each was measured to pay; off on a GPU,
+// where on an NVIDIA H200 (docs/gpu.md) they saved no median frame time and their program
+// variants compiled after warm-up, in frames of 50 to 660 ms.
+RendererSwitches decideSwitches(const RendererConfig& config, std::string_view glRenderer);
 
 struct EngineConfig {
     std::filesystem::path sourcePath;  // for messages

@@ -23,7 +23,7 @@ namespace engine {
 
 class LitPass {
 public:
-    explicit LitPass(const RendererConfig& config);
+    LitPass(const RendererConfig& config, const RendererSwitches& switches);
 
     // Adds the lit pass writing `colorTarget` (an imported texture) to the frame's graph.
     void addTo(Frame& frame, ResourceHandle colorTarget);
@@ -64,6 +64,7 @@ private:
                       const gl::Program*& current, PassContext& context);
 
     RendererConfig config_;
+    RendererSwitches switches_;
     LitPrograms programs_;
     LitLights lights_;
     int culledInstances_ = 0;

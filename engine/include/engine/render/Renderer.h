@@ -95,6 +95,10 @@ public:
 
     FrameResult renderFrame(const FrameRequest& request);
 
+    // The llvmpipe switches as this renderer runs them: the config's, with each one it left
+    // unset decided for the GL renderer current at construction (decideSwitches).
+    const RendererSwitches& switches() const { return switches_; }
+
     // Renders `request` untimed until a frame compiles no lit program it has not compiled
     // before (at least `minFrames`, at most `maxFrames` frames); returns the frames rendered.
     // Timed frames after it pay for no compilation: the first frame compiles (and llvmpipe
@@ -120,6 +124,7 @@ private:
     const gl::Texture& lightViewTarget(LitPass::LightView view, int slot, int width, int height);
 
     RendererConfig config_;
+    RendererSwitches switches_;
     std::vector<RenderPlugin*> plugins_;
     const Scene* scene_ = nullptr;
     std::unique_ptr<SceneGpu> gpu_;
