@@ -1,34 +1,14 @@
-// Depth pass: only depth is written (the framebuffer has no color attachment).
-// With PEEL (Woo's midpoint shadow map, pass 2) fragments at or in front of the nearest
-// layer z1 (pass 1: same triangles, same transform, `invariant gl_Position`) are discarded,
-// and the rest write the midpoint (z + z1) / 2. z1 went through the depth format (d16/d24
-// round to a fixed-point step), so "at z1" means within uPeelEpsilon: two steps of the
-// format (d32f: four float steps near 1). Without it, the first layer's own fragments
-// survived the peel where rounding put them a step behind z1, and the map held z1 + tiny:
-// acne on most lit surfaces of the showcase.
-// The depth test then keeps the nearest remaining layer z2, since the midpoint grows with
-// z. The far plane counts as a last layer (DepthRenderer draws it after the casters), so a
-// texel with one surface holds the midpoint between it and far; texels with no surface at
-// all keep the clear value (far): nothing there to shadow.
+// Depth pass: the depth program's fragment part (shaders/depth/, technique/DepthProgram.h)
+// follows this source and decides what the fragment writes beyond its depth.
 // ALPHA_TEST (an alpha-tested caster, MaterialShading.h): texels whose base color alpha
-// is below the material's shadow cutoff cast nothing, in both of Woo's passes alike.
-#ifdef PEEL
-layout(binding = FIRST_LAYER_UNIT) uniform sampler2D uFirstLayer;  // this map layer's (or cube face's)
-uniform float uPeelEpsilon;
-// Reversed Z (d32f): near is 1, far 0, so "behind z1" is smaller, and the epsilon is
-// relative (uPeelEpsilon * z1): float depth there has relative, not absolute, steps.
-uniform bool uReversedZ;
-#endif
+// is below the material's shadow cutoff cast nothing, whatever the program.
+uniform bool uReversedZ;  // the pass's depth direction: near is 1, far 0
+
+void writeDepthFragment();
 
 void main() {
 #ifdef ALPHA_TEST
     discardBelowAlphaCutoff(materialBaseColor().a);
 #endif
-#ifdef PEEL
-    float z1 = texelFetch(uFirstLayer, ivec2(gl_FragCoord.xy), 0).r;
-    bool firstLayer = uReversedZ ? gl_FragCoord.z >= z1 - uPeelEpsilon * z1
-                                 : gl_FragCoord.z <= z1 + uPeelEpsilon;
-    if (firstLayer) discard;
-    gl_FragDepth = 0.5 * (gl_FragCoord.z + z1);
-#endif
+    writeDepthFragment();
 }

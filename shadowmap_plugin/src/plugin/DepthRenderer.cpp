@@ -1,5 +1,7 @@
 #include "plugin/DepthRenderer.h"
 
+#include "technique/Techniques.h"
+
 #include "engine/scene/FrustumCull.h"
 
 #include "engine/render/MaterialShading.h"
@@ -15,18 +17,18 @@ extern const char depth_frag[];
 
 namespace {
 
-// The texture unit of Woo pass 2's first layer: beside the material's base color texture.
-constexpr unsigned kFirstLayerUnit = engine::kMaterialTextureUnit + 1;
+// The texture unit of a depth program's input (Woo pass 2's first layer): beside the
+// material's base color texture.
+constexpr unsigned kDepthInputUnit = engine::kMaterialTextureUnit + 1;
 
-// One source per stage; variants by #define (as bgfx's shadow examples do).
-engine::gl::Program compileDepthProgram(const std::string& name, const std::string& defines,
-                                        unsigned materialFeatures) {
-    const std::string header = "#version 450 core\n" + defines + "#define FIRST_LAYER_UNIT " +
-                               std::to_string(kFirstLayerUnit) + "\n" +
-                               engine::materialDefines(materialFeatures, engine::MaterialUse::ShadowCasting);
+// The shared sources with the program's own part after each (DepthProgram.h).
+engine::gl::Program compileDepthProgram(const DepthProgram& program, unsigned materialFeatures) {
+    const std::string header = "#version 450 core\n#define DEPTH_INPUT_UNIT " + std::to_string(kDepthInputUnit) +
+                               "\n" + engine::materialDefines(materialFeatures, engine::MaterialUse::ShadowCasting);
     return engine::gl::Program::compile(
-        name, {{GL_VERTEX_SHADER, header + engine::materialVertexGlsl() + shaders::depth_vert},
-               {GL_FRAGMENT_SHADER, header + engine::materialFragmentGlsl() + shaders::depth_frag}});
+        program.name,
+        {{GL_VERTEX_SHADER, header + engine::materialVertexGlsl() + shaders::depth_vert + program.vertexGlsl},
+         {GL_FRAGMENT_SHADER, header + engine::materialFragmentGlsl() + shaders::depth_frag + program.fragmentGlsl}});
 }
 
 // The offset of one caster's draws when it differs from the pass's (backface's open casters).
@@ -44,35 +46,30 @@ void setPolygonOffset(const glm::vec2& offset, const DepthPassStyle& style) {
 
 DepthRenderer::DepthRenderer() : empty_(engine::gl::VertexArray::create()) {
     // The opaque casters' programs, which every scene with shadows uses, before the first frame.
-    for (const bool peel : {false, true}) program(peel, 0);
+    for (const DepthProgram* depthProgram : depthPrograms()) program(*depthProgram, 0);
 }
 
-const engine::gl::Program& DepthRenderer::program(bool peel, unsigned materialFeatures) {
-    const auto key = std::make_pair(peel, materialFeatures);
+const engine::gl::Program& DepthRenderer::program(const DepthProgram& depthProgram, unsigned materialFeatures) {
+    const auto key = std::make_pair(&depthProgram, materialFeatures);
     if (auto found = programs_.find(key); found != programs_.end()) return found->second;
-    return programs_
-        .emplace(key, compileDepthProgram(peel ? "shadow depth peel" : "shadow depth", peel ? "#define PEEL\n" : "",
-                                          materialFeatures))
-        .first->second;
+    return programs_.emplace(key, compileDepthProgram(depthProgram, materialFeatures)).first->second;
 }
 
 DepthDrawCounts DepthRenderer::draw(const engine::Frame& frame, engine::PassContext& context,
                                     const glm::dmat4& viewProjection, const DepthPassStyle& style) {
     DepthDrawCounts counts;
-    const bool peel = style.firstLayer != 0;
-    if (peel) glBindTextureUnit(kFirstLayerUnit, style.firstLayer);
+    const DepthProgram& depthProgram = *style.program;
+    if (style.inputTexture != 0) glBindTextureUnit(kDepthInputUnit, style.inputTexture);
     const engine::gl::Program* current = nullptr;
     // Switches to the program a caster's material needs, with the pass's own uniforms.
     auto use = [&](unsigned materialFeatures) -> const engine::gl::Program& {
-        const engine::gl::Program& next = program(peel, materialFeatures);
+        const engine::gl::Program& next = program(depthProgram, materialFeatures);
         if (&next == current) return next;
         current = &next;
         next.use();
-        if (peel) {
-            next.set("uPeelEpsilon", style.peelEpsilon);
-            next.set("uReversedZ", style.reversedZ ? 1 : 0);
-            next.set("uFarLayer", 0);
-        }
+        next.set("uReversedZ", style.reversedZ ? 1 : 0);
+        next.set("uFullScreenLayer", 0);
+        for (const DepthUniform& uniform : style.uniforms) next.set(uniform.name, uniform.value);
         return next;
     };
     use(0);
@@ -109,24 +106,23 @@ DepthDrawCounts DepthRenderer::draw(const engine::Frame& frame, engine::PassCont
             counts.triangles += triangles;
         }
     }
-    if (peel) {
-        // Woo pass 2, last: the far plane as one more layer (a full-screen triangle at far
-        // depth, not clipped), so a texel whose ray meets one surface and then nothing holds
-        // the midpoint between that surface and far instead of far itself. Without it, a
-        // light inside a closed box lit what lies just outside the box's silhouettes
-        // (2x2 PCF reads the neighbouring "nothing behind" texels: 0.06% of the pixels
-        // that must be dark, tools/shadowmap-stress special/light_inside_box). Texels
-        // with no surface at all fail the peel test and stay far.
-        // Woo is never backface, so nothing is culled. The far layer is the pass's last draw,
-        // without the offset and depth-clamped.
+    if (depthProgram.drawsFullScreenLayer) {
+        // Woo pass 2, last: the far plane as one more layer (not clipped), so a texel whose
+        // ray meets one surface and then nothing holds the midpoint between that surface and
+        // far instead of far itself. Without it, a light inside a closed box lit what lies
+        // just outside the box's silhouettes (2x2 PCF reads the neighbouring "nothing
+        // behind" texels: 0.06% of the pixels that must be dark, tools/shadowmap-stress
+        // special/light_inside_box). Texels with no surface at all fail the peel test and
+        // stay far. Woo is never backface, so nothing is culled. The layer is the pass's
+        // last draw, without the offset and depth-clamped.
         glDisable(GL_POLYGON_OFFSET_FILL);
         glEnable(GL_DEPTH_CLAMP);
-        use(0).set("uFarLayer", 1);
+        use(0).set("uFullScreenLayer", 1);
         empty_.bind();
         glDrawArrays(GL_TRIANGLES, 0, 3);
         glBindVertexArray(0);
-        glBindTextureUnit(kFirstLayerUnit, 0);
     }
+    if (style.inputTexture != 0) glBindTextureUnit(kDepthInputUnit, 0);
     return counts;
 }
 

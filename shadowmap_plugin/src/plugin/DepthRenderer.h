@@ -2,7 +2,8 @@
 // Draws the shadow casters from one light view, inside a depth pass whose state and target
 // (one layer of a shadow map: spot and directional the 2D map, point one cube face; or
 // Woo's first layer) the graph applies: the drawing every variant and light type shares.
-// What differs between variants is a DepthPassStyle, not another renderer.
+// What differs between variants is a DepthPassStyle and its DepthProgram, not another
+// renderer.
 #include "technique/DepthPassStyle.h"
 
 #include "engine/gl/Program.h"
@@ -22,23 +23,24 @@ struct DepthDrawCounts {
 
 class DepthRenderer {
 public:
+    // Compiles every technique's depth programs for opaque casters.
     DepthRenderer();
 
     // Within a pass in depthPassState(style), drawing into depthPassTargets(...): draws every
     // shadow caster of the frame's scene whose bounds meet viewProjection = P_light * L^-1
-    // (and, when peeling, the far plane as the last layer). Counts draws in `context` (the
-    // graph's per-pass report).
+    // with style.program (and its full-screen layer last, if it has one). Counts draws in
+    // `context` (the graph's per-pass report).
     DepthDrawCounts draw(const engine::Frame& frame, engine::PassContext& context,
                          const glm::dmat4& viewProjection, const DepthPassStyle& style);
 
 private:
-    // The program for peeling or not and a caster's material features (MaterialShading.h:
-    // only alpha-tested casters have any), compiled on first use: a scene without such
-    // casters never builds (or pays for) one that can discard.
-    const engine::gl::Program& program(bool peel, unsigned materialFeatures);
+    // A depth program built for a caster's material features (MaterialShading.h: only
+    // alpha-tested casters have any), compiled on first use: a scene without such casters
+    // never builds (or pays for) one that can discard.
+    const engine::gl::Program& program(const DepthProgram& depthProgram, unsigned materialFeatures);
 
-    std::map<std::pair<bool, unsigned>, engine::gl::Program> programs_;
-    engine::gl::VertexArray empty_;  // for the Woo far-layer triangle (gl_VertexID only)
+    std::map<std::pair<const DepthProgram*, unsigned>, engine::gl::Program> programs_;
+    engine::gl::VertexArray empty_;  // for a full-screen layer (gl_VertexID only)
 };
 
 } // namespace shadowmap

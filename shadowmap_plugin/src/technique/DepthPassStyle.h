@@ -2,6 +2,8 @@
 // How a depth pass draws the casters of one map layer: what differs between the ways of
 // making a map (DepthTechnique.h) is a style, not another renderer (plugin/DepthRenderer.h
 // draws every style).
+#include "technique/DepthProgram.h"
+
 #include "engine/graph/RenderGraph.h"
 
 #include <glm/glm.hpp>
@@ -9,6 +11,12 @@
 #include <vector>
 
 namespace shadowmap {
+
+// One float uniform of a depth program, by its GLSL name.
+struct DepthUniform {
+    const char* name;
+    float value;
+};
 
 struct DepthPassStyle {
     // standard and woo: every face (open casters must cast too). backface: only faces
@@ -18,11 +26,12 @@ struct DepthPassStyle {
     glm::vec2 polygonOffset{0.0f};      // for every draw (standard; both woo passes), or none
     glm::vec2 openCasterOffset{0.0f};   // backface: the offset for two-sided open casters
     const std::vector<bool>* closedMeshes = nullptr;  // backface: per Scene::meshes
-    // Woo pass 2: the nearest-layer depth to peel against (0: not peeling), a 2D texture of
-    // the map's size (one per cube face).
-    unsigned firstLayer = 0;
-    float peelEpsilon = 0.0f;  // depth within which a fragment counts as the first layer
-                               // (reversedZ: relative to the first layer's depth)
+    // The program the casters are drawn with (DepthProgram.h), and what it reads: a texture
+    // bound at its DEPTH_INPUT_UNIT (0: none) and float uniforms (Woo pass 2: the first
+    // layer's depth and the peel's epsilon).
+    const DepthProgram* program = &nearestDepthProgram();
+    unsigned inputTexture = 0;
+    std::vector<DepthUniform> uniforms;
     // Reversed Z (ShadowSettings reversed_z, d32f): glClipControl(GL_LOWER_LEFT,
     // GL_ZERO_TO_ONE) for the pass, clear depth 0, GL_GREATER depth test, polygon offsets
     // negated (away from the light is toward 0).

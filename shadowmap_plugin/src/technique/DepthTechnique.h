@@ -44,6 +44,9 @@ public:
     virtual Variant variant() const = 0;
     // Its part of the depth passes' style (the offsets and depth direction are set).
     virtual void adjustStyle(LightState&, const DepthStyleContext&, DepthPassStyle&) const {}
+    // Every program its passes draw with (DepthPassStyle::program), compiled before the
+    // first frame so that no light's first use compiles one.
+    virtual std::vector<const DepthProgram*> programs() const { return {&nearestDepthProgram()}; }
     virtual void addLayerPasses(const LayerPasses& passes) const = 0;
     // Its part of the light's --stats (what it decided this frame beyond the passes).
     virtual void addStats(const LightState&, nlohmann::json&) const {}

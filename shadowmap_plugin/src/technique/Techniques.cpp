@@ -8,6 +8,7 @@
 #include "technique/projection/CubeMapProjection.h"
 #include "technique/projection/FittedMapProjection.h"
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 
@@ -41,6 +42,14 @@ const Entry* find(const Entry* const (&table)[N], Key key, KeyOf keyOf) {
 
 const DepthTechnique* depthTechnique(Variant variant) {
     return find(kDepthTechniques, variant, [](const DepthTechnique& t) { return t.variant(); });
+}
+
+std::vector<const DepthProgram*> depthPrograms() {
+    std::vector<const DepthProgram*> programs;
+    for (const DepthTechnique* technique : kDepthTechniques)
+        for (const DepthProgram* program : technique->programs())
+            if (std::find(programs.begin(), programs.end(), program) == programs.end()) programs.push_back(program);
+    return programs;
 }
 
 const MapProjection* mapProjection(MapKind kind) {

@@ -8,11 +8,14 @@
 #include "technique/MapProjection.h"
 
 #include <string>
+#include <vector>
 
 namespace shadowmap {
 
 // The variant's technique; nullptr for Variant::None (no map).
 const DepthTechnique* depthTechnique(Variant variant);
+// Every depth technique's programs (DepthTechnique::programs), each once.
+std::vector<const DepthProgram*> depthPrograms();
 // The projection of a map kind; nullptr for MapKind::None.
 const MapProjection* mapProjection(MapKind kind);
 // The projection a light of this type gets with this many cascades this frame.

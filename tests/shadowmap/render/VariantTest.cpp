@@ -129,10 +129,9 @@ TEST_F(ShadowVariants, OpenCasterUnderBackfaceIsReportedAndStillCasts) {
     builder.addLight("spot", Light::Type::Spot, apex, target, {{"variant", "backface"}}, 0.75);
     const engine::Scene scene = builder.build();
 
-    engine::FrameResult frame;
-    const auto mask = engine::test::renderShadowMask(plugins(), scene, camera(), 0, &frame);
-    // Which casters backface found open is that technique's own report (its stats).
-    EXPECT_EQ(frame.pluginStats["shadowmap_plugin"]["lights"][0]["open_casters"], nlohmann::json::array({"sheet"}));
+    const auto mask = engine::test::renderShadowMask(plugins(), scene, camera(), 0);
+    // Drawn as a closed mesh (front faces culled) the sheet, facing the light, would cast
+    // nothing: its shadow below says backface found it open (TechniquesTest checks the finding).
     const engine::Aabb sheet{{-1, 2, -1}, {1, 2, 1}};
     const glm::dvec3 axis = glm::normalize(target - apex);
     const auto result = engine::test::compareFloorMask(

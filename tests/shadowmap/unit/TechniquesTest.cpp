@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <string>
 #include <vector>
 
@@ -72,6 +74,8 @@ struct LayerRun {
     // In order: "draw PASS" per caster draw, "peel PASS" for one peeling against a first
     // layer, "done" when a layer says it is complete.
     std::vector<std::string> events;
+    std::vector<const shadowmap::DepthProgram*> programs;  // per caster draw, the program it drew with
+    std::vector<unsigned> inputTextures;                   // per caster draw, the texture its program read
     int transientsLeft = 0;
 };
 
@@ -89,7 +93,9 @@ LayerRun run(shadowmap::Variant variant, const std::vector<MapLayer>& layers) {
     engine::ResourceHandle map = graph.importTexture(light.mapResource(), desc, 7);
     const shadowmap::CasterDraw draw = [&result](engine::PassContext& context, const glm::dmat4&,
                                                  const shadowmap::DepthPassStyle& style) {
-        result.events.push_back((style.firstLayer != 0 ? "peel " : "draw ") + context.passName());
+        result.events.push_back((style.program != &shadowmap::nearestDepthProgram() ? "peel " : "draw ") + context.passName());
+        result.programs.push_back(style.program);
+        result.inputTextures.push_back(style.inputTexture);
     };
     std::vector<engine::PassId> added;
     for (const MapLayer& layer : layers)
@@ -131,6 +137,68 @@ TEST(Techniques, WooDrawsTheFirstLayerThenPeelsItAndOnlyClearsALayerWithoutCaste
     EXPECT_EQ(faces.events, (std::vector<std::string>{"draw shadow_2_lamp_+x_first_layer", "peel shadow_2_lamp_+x",
                                                       "done", "done"}));
     EXPECT_EQ(faces.transientsLeft, 0);  // the first layer went back to the allocator
+    // The peel reads the first layer (the allocator's first texture) and closes with the far
+    // plane as a full-screen layer; the first layer is drawn as by standard.
+    ASSERT_EQ(faces.programs.size(), 2u);
+    EXPECT_EQ(faces.programs[0], &shadowmap::nearestDepthProgram());
+    EXPECT_EQ(faces.inputTextures[0], 0u);
+    EXPECT_TRUE(faces.programs[1]->drawsFullScreenLayer);
+    EXPECT_EQ(faces.inputTextures[1], 100u);
+}
+
+// The plugin compiles depthPrograms() before the first frame: a program a pass draws with
+// that is missing there would compile on a light's first use, mid-frame.
+TEST(Techniques, EveryProgramAPassDrawsWithIsAmongTheProgramsCompiledBeforeTheFirstFrame) {
+    const std::vector<const shadowmap::DepthProgram*> compiled = shadowmap::depthPrograms();
+    for (const shadowmap::ShadowSettings& settings : everyChoiceOf("variant")) {
+        if (settings.variant == shadowmap::Variant::None) continue;
+        const std::vector<const shadowmap::DepthProgram*> declared =
+            shadowmap::depthTechnique(settings.variant)->programs();
+        for (const auto& layers : {kOneMap, kTwoFaces})
+            for (const shadowmap::DepthProgram* program : run(settings.variant, layers).programs) {
+                EXPECT_NE(std::find(declared.begin(), declared.end(), program), declared.end())
+                    << toString(settings.variant) << " draws with " << program->name << " without declaring it";
+                EXPECT_NE(std::find(compiled.begin(), compiled.end(), program), compiled.end()) << program->name;
+            }
+    }
+    // Each once: the standard program is every technique's.
+    for (const shadowmap::DepthProgram* program : compiled)
+        EXPECT_EQ(std::count(compiled.begin(), compiled.end(), program), 1) << program->name;
+}
+
+// Backface draws the casters that are not closed meshes two-sided; which ones it found is
+// its own report (LightShadowFrame::openCasters, printed as --stats open_casters), named
+// by node and with one warning per light however many.
+TEST(Techniques, BackfaceFindsTheOpenCastersAndNamesThemInOneWarning) {
+    engine::Scene scene;
+    const std::vector<std::string> names = {"closed box", "sheet", "", "receiver only", "cloth", "flag", "leaf"};
+    for (std::size_t i = 0; i < names.size(); ++i) {
+        engine::Node node;
+        node.name = names[i];
+        scene.nodes.push_back(node);
+        engine::MeshInstance instance;
+        instance.node = static_cast<int>(i);
+        instance.mesh = static_cast<int>(i);
+        instance.castShadows = names[i] != "receiver only";
+        scene.meshInstances.push_back(instance);
+    }
+    const std::vector<bool> closedMeshes = {true, false, false, false, false, false, false};
+    LightState light;
+    shadowmap::DepthPassStyle style;
+    shadowmap::depthTechnique(shadowmap::Variant::Backface)->adjustStyle(light, {scene, closedMeshes}, style);
+    EXPECT_TRUE(style.backFacesOnly);
+    EXPECT_EQ(style.closedMeshes, &closedMeshes);
+    // A node without a name by its index; a caster that casts no shadow is not one.
+    EXPECT_EQ(light.frame.openCasters, (std::vector<std::string>{"sheet", "node 2", "cloth", "flag", "leaf"}));
+    ASSERT_EQ(light.frame.warnings.size(), 1u);
+    EXPECT_NE(light.frame.warnings[0].find("5 caster(s) not closed"), std::string::npos) << light.frame.warnings[0];
+    EXPECT_EQ(light.frame.warnings[0].find("flag"), std::string::npos) << "names only the first three";
+
+    LightState allClosed;
+    const std::vector<bool> everyMeshClosed(names.size(), true);
+    shadowmap::depthTechnique(shadowmap::Variant::Backface)->adjustStyle(allClosed, {scene, everyMeshClosed}, style);
+    EXPECT_TRUE(allClosed.frame.openCasters.empty());
+    EXPECT_TRUE(allClosed.frame.warnings.empty());
 }
 
 } // namespace

@@ -8,20 +8,32 @@
 
 namespace shadowmap {
 
+namespace shaders {
+extern const char woo_peel_vert[];
+extern const char woo_peel_frag[];
+} // namespace shaders
+
 namespace {
+
+const DepthProgram kPeelProgram{"shadow depth peel", shaders::woo_peel_vert, shaders::woo_peel_frag,
+                                /*drawsFullScreenLayer=*/true};
 
 // The peel against the first layer: fragments within a step or two of it are that layer.
 DepthPassStyle peelStyle(const DepthPassStyle& style, const ShadowSettings& settings, unsigned firstLayer) {
     DepthPassStyle peel = style;
-    peel.firstLayer = firstLayer;
+    peel.program = &kPeelProgram;
+    peel.inputTexture = firstLayer;
     const double step = depthStep(settings.depthFormat);
-    peel.peelEpsilon = static_cast<float>(settings.depthFormat == DepthFormat::D32F ? 4.0 * step : 2.0 * step);
+    float epsilon = static_cast<float>(settings.depthFormat == DepthFormat::D32F ? 4.0 * step : 2.0 * step);
     // Reversed Z: relative, eight float steps of z1 (z1 * 2^-20).
-    if (settings.reversedZ) peel.peelEpsilon = std::ldexp(1.0f, -20);
+    if (settings.reversedZ) epsilon = std::ldexp(1.0f, -20);
+    peel.uniforms.push_back({"uPeelEpsilon", epsilon});
     return peel;
 }
 
 } // namespace
+
+std::vector<const DepthProgram*> WooDepth::programs() const { return {&nearestDepthProgram(), &kPeelProgram}; }
 
 void WooDepth::addLayerPasses(const LayerPasses& passes) const {
     if (!passes.layer.drawsCasters) {

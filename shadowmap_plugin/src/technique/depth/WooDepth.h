@@ -2,7 +2,7 @@
 // Woo's midpoint map: per layer, the nearest surface z1 first (a transient of the map's
 // size), then a pass peeling it: fragments behind z1 write the midpoint (z + z1) / 2 and
 // the depth test keeps the nearest, so the layer holds the midpoint between the two
-// nearest surfaces (shaders/depth.frag).
+// nearest surfaces (shaders/depth/woo_peel.frag).
 #include "technique/DepthTechnique.h"
 
 namespace shadowmap {
@@ -10,6 +10,7 @@ namespace shadowmap {
 class WooDepth final : public DepthTechnique {
 public:
     Variant variant() const override { return Variant::Woo; }
+    std::vector<const DepthProgram*> programs() const override;
     void addLayerPasses(const LayerPasses& passes) const override;
 };
 
