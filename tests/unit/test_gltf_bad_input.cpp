@@ -313,7 +313,9 @@ const std::vector<BadInputCase<QuadEdit>> kQuadEdits = {
     {"NodeLightReferenceNotAnInteger", set("/nodes/0/extensions", {{"KHR_lights_punctual", {{"light", "sun"}}}}),
      {"light.gltf", "nodes[0] 'Quad'", "KHR_lights_punctual.light is missing or not an integer"}},
     {"ShadowExtraThatIsNotABoolean", set("/nodes/0/extras", {{"cast_shadows", "no"}}),
-     {"extras.gltf", "nodes[0] 'Quad'", "extras.cast_shadows is not a boolean"}},
+     {"extras.gltf", "nodes[0] 'Quad'", "extras.cast_shadows is not a boolean (true, false, or Blender's 1 or 0)"}},
+    {"ShadowExtraThatIsANumberOtherThanZeroOrOne", set("/nodes/0/extras", {{"receive_shadows", 2}}),
+     {"extras.gltf", "nodes[0] 'Quad'", "extras.receive_shadows is not a boolean"}},
     {"UnknownAlphaMode", set("/materials", {{{"name", "glass"}, {"alphaMode", "TRANSLUCENT"}}}),
      {"alpha.gltf", "materials[0] 'glass'", "alphaMode 'TRANSLUCENT' is not OPAQUE, MASK or BLEND"}},
 

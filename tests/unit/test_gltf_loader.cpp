@@ -293,6 +293,23 @@ TEST(GltfLoader, ReadsCastAndReceiveShadowExtras) {
     EXPECT_FALSE(scene.meshInstances[1].receiveShadows);
 }
 
+// Blender writes a boolean custom property as the integer 0 or 1 (older files, and every
+// property made as an integer): read as false and true. (Any other number is an error:
+// test_gltf_bad_input.)
+TEST(GltfLoader, ReadsBlendersZeroAndOneAsShadowFlags) {
+    TempDir dir;
+    GltfBuilder b = quadScene();
+    b.doc["nodes"][0]["extras"] = {{"cast_shadows", 0}, {"receive_shadows", 1}};
+    b.addNode({{"name", "Floor"}, {"mesh", 0}, {"extras", {{"cast_shadows", 1}, {"receive_shadows", 0.0}}}});
+    b.setScene({0, 1});
+    const engine::Scene scene = engine::loadGltf(b.writeGltf(dir.path(), "blender"));
+    ASSERT_EQ(scene.meshInstances.size(), 2u);
+    EXPECT_FALSE(scene.meshInstances[0].castShadows);
+    EXPECT_TRUE(scene.meshInstances[0].receiveShadows);
+    EXPECT_TRUE(scene.meshInstances[1].castShadows);
+    EXPECT_FALSE(scene.meshInstances[1].receiveShadows);
+}
+
 // Node extras are shared with other exporters: keys that are not ours load silently, but
 // one that reads like ours (a typo, another spelling) is reported with the node and the key
 // we read, since ignoring it silently would keep a shadow its author opted out of.

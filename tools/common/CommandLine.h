@@ -19,8 +19,8 @@ using FlagHandler = std::function<bool(const std::string& flag, const std::strin
 // Walks argv[1..] and hands every flag to handleFlag. Returns true when -h or --help was
 // given: parsing stops there, so the caller returns at once (no required-flag checks).
 // Every flag not listed in switches takes the next argument as its value, whatever it looks
-// like. The value is fetched before the flag is looked up, so a typo as the last argument
-// reads "--typo: missing value", as the tools have always said.
+// like. A flag the tool does not know is "unknown option --typo" wherever it stands, the
+// last argument included; a known one without its value is "--flag: missing value".
 inline bool parseFlags(int argc, char** argv, std::initializer_list<std::string_view> switches,
                        const FlagHandler& handleFlag) {
     for (int i = 1; i < argc; ++i) {
@@ -28,7 +28,16 @@ inline bool parseFlags(int argc, char** argv, std::initializer_list<std::string_
         if (flag == "--help" || flag == "-h") return true;
         if (flag.rfind("--", 0) != 0) throw std::invalid_argument("unexpected argument \"" + flag + "\"");
         const bool isSwitch = std::find(switches.begin(), switches.end(), flag) != switches.end();
-        if (!isSwitch && i + 1 >= argc) throw std::invalid_argument(flag + ": missing value");
+        if (!isSwitch && i + 1 >= argc) {
+            // Known or a typo? Only the handler knows: ask it with an empty value (what it
+            // sets or throws no longer matters, parsing fails either way).
+            bool known = true;
+            try {
+                known = handleFlag(flag, std::string());
+            } catch (const std::exception&) {
+            }
+            throw std::invalid_argument(known ? flag + ": missing value" : "unknown option " + flag);
+        }
         const std::string value = isSwitch ? std::string() : argv[++i];
         if (!handleFlag(flag, value)) throw std::invalid_argument("unknown option " + flag);
     }

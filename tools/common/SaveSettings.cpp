@@ -11,7 +11,6 @@
 #include <cstring>
 #include <stdexcept>
 
-#include <unistd.h>
 
 namespace tools {
 
@@ -107,15 +106,8 @@ void checkTarget(const std::filesystem::path& scene, const SceneFile& file, cons
     if (file.glb != hasExtension(out, ".glb"))
         engine::throwInputError(out.string(), "", std::string("the scene is a ") + (file.glb ? ".glb" : ".gltf") +
                                                      ": save it as one too (the file keeps its container)");
+    engine::checkOutputPath(out);
     std::error_code error;
-    const std::filesystem::path folder = std::filesystem::absolute(out).parent_path();
-    if (std::filesystem::is_directory(out, error))
-        engine::throwInputError(out.string(), "", "is a directory, not a file to save the scene to");
-    if (!std::filesystem::is_directory(folder, error))
-        engine::throwInputError(out.string(), "", "its folder " + folder.string() + " does not exist");
-    // The file is written as a temporary beside it and renamed: the folder must be writable.
-    if (::access(folder.c_str(), W_OK) != 0)
-        engine::throwInputError(out.string(), "", "its folder " + folder.string() + " is not writable");
 
     const nlohmann::json document = nlohmann::json::parse(file.json, nullptr, false);
     if (document.is_discarded()) engine::throwInputError(scene.string(), "", "the JSON no longer parses");

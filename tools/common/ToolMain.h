@@ -1,18 +1,20 @@
 #pragma once
 // The shared main() of the engine's command-line tools (engine-render, engine-view,
 // shadowmap-bench, shadowmap-stress): parse the options (a bad flag: one line, exit 1),
-// --help, then run with a GL context and a plugin host that outlive the error report.
+// --help and --version, then run with a GL context and a plugin host that outlive the error report.
 //
 // Order matters twice: an exception thrown by plugin code must be read before the plugin is
 // unloaded (so the host lives outside the try), and destroying the plugins deletes their GL
 // objects, which needs the context current (so the context is declared first, dies last).
 #include "engine/context/GlContext.h"
 #include "engine/plugin/PluginHost.h"
+#include "engine/util/Version.h"
 
 #include <cstdio>
 #include <exception>
 #include <memory>
 #include <stdexcept>
+#include <string_view>
 
 namespace tools {
 
@@ -25,6 +27,11 @@ struct ToolSession {
 // run(const Options&, ToolSession&) -> exit code (throws on bad input).
 template <typename Parse, typename Run>
 int toolMain(const char* name, const char* usage, int argc, char** argv, Parse parse, Run run) {
+    // --version alone: the engine's version, whatever the tool's required flags.
+    if (argc == 2 && std::string_view(argv[1]) == "--version") {
+        std::printf("%s %s\n", name, engine::version());
+        return 0;
+    }
     decltype(parse(argc, argv)) options;
     try {
         options = parse(argc, argv);

@@ -5,12 +5,13 @@
 #include "OptionValues.h"
 
 #include <cctype>
+#include <filesystem>
 #include <stdexcept>
 
 const char* const kRenderUsage =
-    "usage: engine-render --config CONFIG.json --scene SCENE.gltf|.glb --out OUT.png\n"
+    "usage: engine-render [--config CONFIG.json] --scene SCENE.gltf|.glb --out OUT.png\n"
     "       engine-render --scene SCENE.gltf|.glb --list   (its cameras and lights, numbered)\n"
-    "  [--width W] [--height H] [--camera NAME|NUMBER]\n"
+    "  [--width W] [--height H] [--camera NAME|NUMBER|framing]\n"
     "  (a light or camera is named by its name, its node's name, or its number in --list)\n"
     "  [--light-set NAME.KEY=JSON]...  (a per-light setting: wins over the light's glTF extras)\n"
     "  [--light NAME=VARIANT]...        (--light-set NAME.variant=VARIANT)\n"
@@ -26,7 +27,8 @@ const char* const kRenderUsage =
     "  [--warmup N] (untimed frames first: at least N, default 1, then until a frame compiles no\n"
     "               new shader (up to 4 more), so no timed frame pays for compilation; 0: none)\n"
     "  [--set PLUGIN.KEY=JSON]...  (a plugin's config setting, e.g. shadowmap_plugin.cache_maps=false)\n"
-    "  a light's setting: defaults < config and --set < the light's glTF extras < --light-set\n";
+    "  a light's setting: defaults < config and --set < the light's glTF extras < --light-set\n"
+    "  without --config: the installed or build tree's engine.json; --version: the version\n";
 
 namespace {
 
@@ -89,7 +91,23 @@ RenderOptions parseRenderOptions(int argc, char** argv) {
     if (!sawScene) throw std::invalid_argument("--scene is required");
     if (!sawOut && !options.list) throw std::invalid_argument("--out is required");
     if (options.fps && options.animate.empty()) throw std::invalid_argument("--fps needs --animate");
+    // Two outputs in one file: the later would silently replace the earlier.
+    const std::vector<std::string> files = outputFiles(options);
+    for (std::size_t i = 0; i < files.size(); ++i)
+        for (std::size_t j = i + 1; j < files.size(); ++j)
+            if (std::filesystem::path(files[i]).lexically_normal() == std::filesystem::path(files[j]).lexically_normal())
+                throw std::invalid_argument(files[j] + ": named for two outputs; give each its own file");
     // --list reads only the scene: it needs no config, found or not.
     if (options.config.empty() && !options.list) options.config = tools::defaultConfigPath();
     return options;
+}
+
+std::vector<std::string> outputFiles(const RenderOptions& options) {
+    std::vector<std::string> files;
+    if (!options.out.empty()) files.push_back(options.out);
+    for (const auto* perLight : {&options.shadowMasks, &options.shadowMaps, &options.comparisons})
+        for (const auto& [light, file] : *perLight) files.push_back(file);
+    for (const std::string* file : {&options.stats, &options.graphDot})
+        if (!file->empty()) files.push_back(*file);
+    return files;
 }

@@ -44,3 +44,6 @@ extern const char* const kRenderUsage;
 
 // Throws std::invalid_argument with one line naming the flag and the reason.
 RenderOptions parseRenderOptions(int argc, char** argv);
+
+// Every file the run will write (--out, the masks, maps and comparisons, --stats, --graph-dot).
+std::vector<std::string> outputFiles(const RenderOptions& options);

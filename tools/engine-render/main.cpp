@@ -165,10 +165,12 @@ void printCamerasAndLights(const engine::Scene& scene, const std::string& sceneF
     for (std::size_t i = 0; i < scene.cameraInstances.size(); ++i)
         std::printf("  %4zu  %-28s %s\n", i + 1, engine::cameraInstanceName(scene, static_cast<int>(i)).c_str(),
                     engine::toString(scene.cameras[scene.cameraInstances[i].camera].type));
+    if (scene.cameraInstances.empty()) std::printf("        (none)\n");
     std::printf("  lights (--light NAME=VARIANT and the other per-light options: name or number)\n");
     for (std::size_t i = 0; i < scene.lightInstances.size(); ++i)
         std::printf("  %4zu  %-28s %s\n", i + 1, engine::lightInstanceName(scene, static_cast<int>(i)).c_str(),
                     engine::toString(scene.lights[scene.lightInstances[i].light].type));
+    if (scene.lightInstances.empty()) std::printf("        (none: --key-light adds one)\n");
 }
 
 // `context` and `host` live in main(), outside the try block that reports errors: an
@@ -177,6 +179,10 @@ void printCamerasAndLights(const engine::Scene& scene, const std::string& sceneF
 int run(const RenderOptions& options, std::unique_ptr<engine::GlContext>& context,
         engine::PluginHost& host) {
     engine::tuneAllocatorForRendering();
+    // Every output is checked before the scene loads: a run never ends, after its rendering,
+    // in a file it cannot write.
+    if (!options.list)
+        for (const std::string& file : outputFiles(options)) engine::checkOutputPath(file);
     std::vector<std::string> warnings;
     engine::Scene scene = engine::loadGltf(options.scene, &warnings);
     for (const std::string& warning : warnings) std::cerr << "warning: " << warning << "\n";

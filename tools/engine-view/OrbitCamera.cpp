@@ -52,7 +52,7 @@ bool OrbitCamera::selectByName(const std::string& name) {
 }
 
 std::string OrbitCamera::describe() const {
-    std::string name = "framing";
+    std::string name = engine::kFramingCameraName;
     if (instance_ >= 0) {
         const engine::CameraInstance& placed = scene_.cameraInstances[instance_];
         name = scene_.cameras[placed.camera].name;

@@ -1,5 +1,6 @@
 #include "Script.h"
 
+#include "engine/render/CameraSetup.h"
 #include "engine/util/Error.h"
 #include "engine/util/InputFile.h"
 
@@ -139,7 +140,7 @@ void Script::step(Controls& controls, ViewerState& state, OrbitCamera& camera, L
     } else if (command.verb == "camera") {
         int index = 0;
         bool found = false;
-        if (w[0] == "framing") found = camera.select(-1);
+        if (w[0] == engine::kFramingCameraName) found = camera.select(-1);
         else if (parseCount(w[0], 1 << 20, index)) found = camera.select(index - 1);
         else found = camera.selectByName(w[0]);
         if (!found) fail(command, "no camera \"" + w[0] + "\" in the scene");

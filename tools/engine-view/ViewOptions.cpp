@@ -8,7 +8,7 @@
 namespace engine_view {
 
 const char* const kViewUsage =
-    "usage: engine-view --config CONFIG.json --scene SCENE.gltf|.glb\n"
+    "usage: engine-view [--config CONFIG.json] --scene SCENE.gltf|.glb\n"
     "  [--camera NAME|NUMBER] [--width W --height H]   (initial window size, default 1280x720)\n"
     "  [--script FILE]          (one command per frame: key, select, set, view, camera, orbit,\n"
     "                            pan, zoom, frames, screenshot, save, overlay, resize, quit;\n"

@@ -90,6 +90,8 @@ int run(const TuneOptions& options, std::unique_ptr<engine::GlContext>& context,
         engine::throwInputError(options.scene, "", "the scene has no lights: nothing to tune (add one with --key-light)");
     const bool sharded = options.shard.count > 1;
     if (!sharded) tools::checkSaveTarget(options.scene, options.out);
+    else engine::checkOutputPath(options.out);
+    if (!options.report.empty()) engine::checkOutputPath(options.report);
     const std::vector<engine::FrameCamera> views =
         tuneViews(scene, options.views, options.width, options.height, options.scene);
     std::vector<nlohmann::json> loaded;

@@ -113,6 +113,7 @@ struct Sample {
 
 int run(const Options& options, tools::ToolSession& session) {
     engine::tuneAllocatorForRendering();
+    engine::checkOutputPath(options.out);  // before the soak's minutes, not after
     engine::Scene scene = engine::loadGltf(options.scene);
     if (scene.lightInstances.empty())
         throw engine::InputError(options.scene + ": no lights: nothing to orbit or to change settings of");

@@ -58,8 +58,8 @@ std::size_t editDistance(const std::string& a, const std::string& b) {
     return row[b.size()];
 }
 
-// Node extras "cast_shadows" / "receive_shadows": booleans (any other value is an error),
-// default true. Node extras are shared with every exporter (Blender's custom properties,
+// Node extras "cast_shadows" / "receive_shadows": booleans, or the integers 0 and 1 as
+// Blender writes a boolean custom property; any other value is an error. Default true. Node extras are shared with every exporter (Blender's custom properties,
 // three.js userData), so other keys are not ours to refuse; but a key that reads like one
 // of ours (a typo such as "cast_shadow", or "castShadows") is almost surely meant as ours,
 // and ignoring it would silently shadow what the author opted out: a warning names the
@@ -70,8 +70,14 @@ void readShadowFlags(const LoadContext& context, const tinygltf::Node& source, c
     const auto flag = [&](const char* key, bool& target) {
         if (!source.extras.Has(key)) return;
         const tinygltf::Value& value = source.extras.Get(key);
-        if (!value.IsBool()) context.fail(object, std::string("extras.") + key + " is not a boolean");
-        target = value.Get<bool>();
+        if (value.IsBool()) {
+            target = value.Get<bool>();
+            return;
+        }
+        const double number = value.IsNumber() ? value.GetNumberAsDouble() : -1.0;
+        if (number != 0.0 && number != 1.0)
+            context.fail(object, std::string("extras.") + key + " is not a boolean (true, false, or Blender's 1 or 0)");
+        target = number == 1.0;
     };
     flag(kOurs[0], node.castShadows);
     flag(kOurs[1], node.receiveShadows);

@@ -55,6 +55,7 @@ FrameCamera cameraFromScene(const Scene& scene, int instance, int width, int hei
 int chooseCameraInstance(const Scene& scene, const std::string& name, const std::string& sceneFile) {
     if (name.empty()) return scene.cameraInstances.empty() ? -1 : 0;
     const int instance = findCameraInstanceByNameOrNumber(scene, name);
+    if (instance < 0 && name == kFramingCameraName) return -1;
     if (instance < 0)
         throwInputError(sceneFile, "camera \"" + name + "\"", "no such camera (" + describeCameraInstances(scene) + ")");
     return instance;

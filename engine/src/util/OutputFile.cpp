@@ -5,20 +5,41 @@
 #include <stb/stb_image.h>
 #include <stb/stb_image_write.h>
 
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <cstdlib>
 #include <fstream>
 #include <memory>
+#include <sys/stat.h>
 #include <unistd.h>
 
 namespace engine {
 
+void checkOutputPath(const std::filesystem::path& path) {
+    std::error_code error;
+    if (path.empty()) throwInputError("(empty path)", "", "an output needs a file name");
+    if (std::filesystem::is_directory(path, error))
+        throwInputError(path.string(), "", "is a folder, not a file to write");
+    const std::filesystem::path folder = std::filesystem::absolute(path, error).parent_path();
+    if (!std::filesystem::is_directory(folder, error))
+        throwInputError(path.string(), "", "its folder " + folder.string() + " does not exist");
+    if (::access(folder.c_str(), W_OK | X_OK) != 0)
+        throwInputError(path.string(), "", "its folder " + folder.string() + " is not writable: " + std::strerror(errno));
+    struct stat status {};
+    if (::stat(path.c_str(), &status) != 0) return;  // no file there yet
+    if ((status.st_mode & (S_IWUSR | S_IWGRP | S_IWOTH)) == 0 || ::access(path.c_str(), W_OK) != 0)
+        throwInputError(path.string(), "", "the file exists and is read-only: not replaced (make it writable or "
+                                           "write elsewhere)");
+}
+
 void writeFileAtomically(const std::filesystem::path& path, std::string_view bytes) {
+    checkOutputPath(path);
     std::filesystem::path temporary = path;
     temporary += ".tmp" + std::to_string(::getpid());
     {
         std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-        if (!out) throwInputError(path.string(), "", "cannot create the output file");
+        if (!out) throwInputError(path.string(), "", std::string("cannot create the output file: ") + std::strerror(errno));
         out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
         out.flush();
         if (!out) {

@@ -1,6 +1,7 @@
 // engine-render with the shadow plugin, end to end: per-light choices from glTF, config and
 // command line; bad settings end in exit code 1 and one line naming the light and the key.
 #include "engine/util/OutputFile.h"
+#include "engine/util/Version.h"
 
 #include "../../support/AssimpTestModels.h"
 
@@ -11,10 +12,17 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <regex>
 #include <vector>
 
 namespace {
+
+// A PNG's pixels (RGBA), to compare two renders made in this run.
+std::vector<std::uint8_t> readImage(const std::filesystem::path& file) {
+    int width = 0, height = 0;
+    return engine::readPng(file, 4, width, height);
+}
 
 namespace fs = std::filesystem;
 
@@ -219,6 +227,52 @@ TEST_F(EngineRenderShadows, ListPrintsCamerasAndLightsWithNumbersAndTypes) {
     EXPECT_FALSE(fs::exists(dir_ / "out.png"));
 }
 
+// A scene without cameras or lights says so in each section instead of leaving it empty.
+TEST_F(EngineRenderShadows, ListSaysNoneForASectionWithoutEntries) {
+    scene_.erase("cameras");
+    scene_["extensions"].erase("KHR_lights_punctual");
+    scene_.erase("extensionsUsed");
+    for (auto& node : scene_["nodes"]) {
+        node.erase("camera");
+        if (node.contains("extensions")) node["extensions"].erase("KHR_lights_punctual");
+    }
+    std::ofstream(dir_ / "scene.gltf") << scene_.dump();
+    const CommandResult result = runEngineRender("--scene " + (dir_ / "scene.gltf").string() + " --list");
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    EXPECT_TRUE(std::regex_search(result.output, std::regex("cameras[^\n]*\n +\\(none\\)"))) << result.output;
+    EXPECT_TRUE(std::regex_search(result.output, std::regex("lights[^\n]*\n +\\(none: --key-light adds one\\)")))
+        << result.output;
+}
+
+// --camera framing: the framing camera even in a scene that has its own (as engine-view's 0
+// key), the same picture as the scene without its camera gives by default.
+TEST_F(EngineRenderShadows, CameraFramingIsTheFramingCameraEvenWhenTheSceneHasOne) {
+    const auto image = [&](const std::string& name) {
+        return readImage(dir_ / name);
+    };
+    ASSERT_EQ(render("--camera framing").exitCode, 0);
+    fs::rename(dir_ / "out.png", dir_ / "framing.png");
+    ASSERT_EQ(render().exitCode, 0);
+    fs::rename(dir_ / "out.png", dir_ / "own.png");
+    scene_.erase("cameras");
+    for (auto& node : scene_["nodes"]) node.erase("camera");
+    ASSERT_EQ(render().exitCode, 0);
+    EXPECT_EQ(image("framing.png"), image("out.png"));
+    EXPECT_NE(image("framing.png"), image("own.png"));
+}
+
+// --version alone prints the engine's version; a typo as the last argument is an unknown
+// option, as it is anywhere else on the line.
+TEST_F(EngineRenderShadows, VersionAndATrailingTypoAreAnsweredAsAUserExpects) {
+    const CommandResult version = runEngineRender("--version");
+    EXPECT_EQ(version.exitCode, 0) << version.output;
+    EXPECT_EQ(version.output, "engine-render " + std::string(engine::version()) + "\n");
+    EXPECT_TRUE(std::regex_match(std::string(engine::version()), std::regex("[0-9]+\\.[0-9]+\\.[0-9]+")));
+    const CommandResult typo = render("--trth");
+    EXPECT_EQ(typo.exitCode, 1) << typo.output;
+    EXPECT_NE(typo.output.find("unknown option --trth"), std::string::npos) << typo.output;
+}
+
 // glTF cameras and lights are often unnamed, their nodes too: the command line names them
 // by their number in --list, and the plugin reports them under "light N".
 TEST_F(EngineRenderShadows, UnnamedCameraAndLightAreChosenByNumber) {
@@ -256,6 +310,24 @@ TEST_F(EngineRenderShadows, AnImageNamedOtherThanPngIsRefused) {
     EXPECT_FALSE(fs::exists(dir_ / "out.jpg"));
     EXPECT_FALSE(fs::exists(dir_ / "out.png"));
     EXPECT_EQ(runEngineRender(common + "--out " + (dir_ / "upper.PNG").string()).exitCode, 0);
+}
+
+// Outputs are checked before the scene loads (OutputFile.h): a folder that does not exist, a
+// file the user made read-only and one file named for two outputs each end the run at once,
+// naming the file, and leave nothing written.
+TEST_F(EngineRenderShadows, AnOutputThatCannotBeWrittenIsRefusedBeforeRendering) {
+    expectError(render("--shadow-mask sun=" + (dir_ / "missing" / "sun.png").string()),
+                {"sun.png: its folder", "missing does not exist"});
+    expectError(render("--graph-dot " + (dir_ / "no" / "graph.dot").string()), {"graph.dot: its folder"});
+    expectError(render("--shadow-map sun=" + (dir_ / "out.png").string()),
+                {"out.png: named for two outputs"});
+
+    const fs::path stats = dir_ / "stats.json";
+    std::ofstream(stats) << "kept";
+    fs::permissions(stats, fs::perms::owner_read | fs::perms::group_read | fs::perms::others_read);
+    expectError(render(), {"stats.json", "read-only: not replaced"});
+    std::ifstream in(stats);
+    EXPECT_EQ(std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()), "kept");
 }
 
 TEST_F(EngineRenderShadows, StatsReportEachLightsDimming) {

@@ -209,6 +209,14 @@ TEST(CommandLine, FlagLoopErrors) {
               "unknown option --typo");
     EXPECT_EQ(seen, (std::vector<std::string>{"--width=64", "--truth=", "--typo=1"}));
     EXPECT_EQ(errorOf([&] { tools::parseFlags(2, argv.data(), {"--truth"}, handler); }), "--width: missing value");
+    // A typo as the last argument is as unknown as one mid-line (it once read "--typo:
+    // missing value"), and a known flag whose value check throws on "" still lacks its value.
+    EXPECT_EQ(errorOf([&] { tools::parseFlags(5, argv.data(), {"--truth"}, handler); }), "unknown option --typo");
+    const auto throwingOnEmpty = [](const std::string& flag, const std::string& value) {
+        if (value.empty()) throw std::invalid_argument(flag + ": not a number");
+        return true;
+    };
+    EXPECT_EQ(errorOf([&] { tools::parseFlags(2, argv.data(), {}, throwingOnEmpty); }), "--width: missing value");
 }
 
 } // namespace

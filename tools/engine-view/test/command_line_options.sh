@@ -21,7 +21,7 @@ expect_start_error() {  # PATH EXPECTED_PART
 }
 expect_start_error missing/saved.gltf "missing/saved.gltf: its folder $work/missing does not exist"
 mkdir -p adir.gltf
-expect_start_error adir.gltf "adir.gltf: is a directory"
+expect_start_error adir.gltf "adir.gltf: is a folder, not a file to write"
 expect_start_error saved.glb "saved.glb: the scene is a .gltf: save it as one too"
 
 # --light-set and --light: the same frame as engine-render's, and saved by S.
