@@ -135,16 +135,29 @@ TEST_F(DefaultEngineConfig, CheckoutContentIsFoundFromTheCurrentFolder) {
     EXPECT_EQ(engine::findDefaultEngineConfig(), fs::path("content/engine.json"));
 }
 
+// A tool of the build tree started from any folder (here dir_, which has no content/) finds
+// the source tree's config, before any install's.
+TEST_F(DefaultEngineConfig, TheBuildTreeFindsTheSourceConfigFromAnyFolder) {
+    const auto sourceContent = engine::buildTreeDataDir();
+    ASSERT_TRUE(sourceContent) << "these tests run libengine from its build tree";
+    const std::vector<fs::path> candidates = engine::defaultEngineConfigCandidates();
+    ASSERT_EQ(candidates.size(), 3u);
+    EXPECT_EQ(candidates[0], fs::path("content/engine.json"));
+    EXPECT_EQ(candidates[1], *sourceContent / "engine.json");
+    EXPECT_EQ(candidates[2], engine::installedDataDir() / "engine.json");
+    EXPECT_EQ(engine::findDefaultEngineConfig(), *sourceContent / "engine.json");
+}
+
 TEST_F(DefaultEngineConfig, NoneFoundListsEveryPathTried) {
-    // The build tree's libengine has no share/shadow-engine beside it, and dir_ no content/.
+    const std::vector<fs::path> candidates = {dir_ / "content" / "engine.json", dir_ / "share" / "engine.json"};
     std::string message;
     try {
-        engine::findDefaultEngineConfig();
+        engine::firstExistingEngineConfig(candidates);
     } catch (const engine::InputError& error) {
         message = error.what();
     }
-    EXPECT_NE(message.find("content/engine.json"), std::string::npos) << message;
-    EXPECT_NE(message.find((engine::installedDataDir() / "engine.json").string()), std::string::npos) << message;
+    for (const fs::path& candidate : candidates)
+        EXPECT_NE(message.find(candidate.string()), std::string::npos) << message;
 }
 
 } // namespace

@@ -23,6 +23,13 @@ using gltf_test::TempDir;
 namespace fs = std::filesystem;
 
 constexpr int kWidth = 160, kHeight = 120;
+// The key light where the bounds below were measured: above the camera's side of the model
+// (the first default placement, (0.6, 1.6, 0.9) from the centre). The default placement
+// since, 70 degrees to the side, shows the strip's shadow where it touches the ground, and
+// there Woo's midpoint lies within the polygon offset of the ground: woo leaks 13 pixels of
+// 1283 (1.0 %) at t = 0 (standard and backface stay at 0), Woo's known contact limit
+// (docs/variants.md), not a pose error, which is what this test looks for.
+const std::string kKeyLightAngles = "--key-light-angles -6.12,55.94";
 
 struct DeformedFile {
     const char* name;
@@ -50,7 +57,8 @@ protected:
         const fs::path maskFile = dir_ / (name + "_mask.png");
         const nlohmann::json stats =
             renderWithStats(engine::test::kAssimpGltf2Models / GetParam().path, dir_ / name, kWidth, kHeight,
-                            "--key-light spot --ground --shadow-mask key_light='" + maskFile.string() + "' " + flags);
+                            "--key-light spot " + kKeyLightAngles + " --ground --shadow-mask key_light='" +
+                                maskFile.string() + "' " + flags);
         mask = readMask(maskFile);
         return stats;
     }

@@ -7,12 +7,21 @@
 
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
+#include <vector>
 
 namespace tools {
 
 bool parseSceneLightingFlag(SceneLighting& lighting, const std::string& flag, const std::string& value) {
     if (flag == "--key-light") lighting.keyLight = parseLightType(flag, value);
-    else if (flag == kGroundFlag) lighting.ground = true;
+    else if (flag == "--key-light-angles") {
+        const std::vector<double> angles = parseNumberList(flag, value, -180.0, 180.0);
+        if (angles.size() != 2 || angles[1] <= 0.0 || angles[1] > 90.0)
+            throw std::invalid_argument(flag + " " + value +
+                                        ": give AZIMUTH,ELEVATION in degrees, azimuth in [-180, 180] from the "
+                                        "framing view toward its right, elevation in (0, 90]");
+        lighting.keyLightAngles = {angles[0], angles[1]};
+    } else if (flag == kGroundFlag) lighting.ground = true;
     else return false;
     return true;
 }
@@ -49,7 +58,7 @@ StagedScene stageScene(engine::Scene& scene, const std::string& sceneFile, const
     StagedScene staged;
     if (lighting.keyLight) {
         // Described before the ground exists: the light aims at the model's centre.
-        const int node = engine::addKeyLight(scene, *lighting.keyLight);
+        const int node = engine::addKeyLight(scene, *lighting.keyLight, "key_light", lighting.keyLightAngles);
         staged.notes.push_back(describeKeyLight(scene, node));
     }
     if (lighting.ground) {

@@ -5,6 +5,7 @@
 // (engine::addGround), the tool prints where the key light went, and a scene left without
 // any light gets a warning that says why it renders ambient only.
 #include "engine/scene/Scene.h"
+#include "engine/scene/SceneEdit.h"
 
 #include <optional>
 #include <string>
@@ -14,13 +15,15 @@ namespace tools {
 
 struct SceneLighting {
     std::optional<engine::Light::Type> keyLight;  // --key-light spot|point|directional
+    engine::KeyLightAngles keyLightAngles;        // --key-light-angles AZIMUTH,ELEVATION
     bool ground = false;                          // --ground
 };
 
 // The flag that takes no value (for parseFlags' switch list).
 inline constexpr const char* kGroundFlag = "--ground";
 
-// Takes --key-light VALUE and --ground into `lighting`; false for any other flag.
+// Takes --key-light VALUE, --key-light-angles AZIMUTH,ELEVATION (degrees, SceneEdit.h's
+// KeyLightAngles) and --ground into `lighting`; false for any other flag.
 bool parseSceneLightingFlag(SceneLighting& lighting, const std::string& flag, const std::string& value);
 
 // What stageScene did, for the tool to print.

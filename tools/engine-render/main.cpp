@@ -156,6 +156,11 @@ nlohmann::json printLightErrors(engine::Renderer& renderer, const engine::Scene&
                           {"error", 100 * e.error}, {"error_noedge", 100 * e.errorNoEdge},
                           {"evaluated_pixels", e.evaluated}});
     }
+    // A light that emits nothing casts no shadow to score: said, not scored.
+    for (std::size_t slot = 0; slot < scene.lightInstances.size(); ++slot)
+        if (!scene.lights[scene.lightInstances[slot].light].emitsLight())
+            std::printf("  %-20s not scored: the light emits nothing (intensity or colour 0)\n",
+                        engine::lightInstanceName(scene, static_cast<int>(slot)).c_str());
     return lights;
 }
 

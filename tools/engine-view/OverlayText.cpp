@@ -78,9 +78,10 @@ std::vector<OverlayLine> OverlayText::lines(const ViewerState& state, const engi
     if (!animation.empty()) out.push_back({animation, kNote});
     for (const std::string& note : notes) out.push_back({note, kNote});
     if (!status.empty()) out.push_back({status, statusIsError ? kError : kNote});
-    out.push_back({"Tab light  V variant  R size  F format  P filter  [ ] offset units  , . dimming", kHelp});
-    out.push_back({"D view  1-9 glTF camera  0 framing  drag: orbit (left), pan (right)  wheel zoom  O text  S save  Esc quit",
-                   kHelp});
+    // Three short lines rather than two long ones: each fits a 1280-pixel window.
+    out.push_back({"Tab light  V variant  R size  F format  P filter  C cascades  T stable", kHelp});
+    out.push_back({"[ ] offset units  , . dimming  D view  1-9 glTF camera  0 framing", kHelp});
+    out.push_back({"drag: orbit (left), pan (right)  wheel zoom  O text  S save  Esc quit", kHelp});
     return out;
 }
 

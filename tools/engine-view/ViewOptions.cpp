@@ -21,9 +21,12 @@ const char* const kViewUsage =
     "  [--light NAME=VARIANT]...        (--light-set NAME.variant=VARIANT)\n"
     "  [--key-light spot|point|directional] [--ground]  (add a light placed from the bounds,\n"
     "                            printed; a ground under the model to receive its shadow)\n"
+    "  [--key-light-angles AZIMUTH,ELEVATION]  (degrees from the framing view: azimuth toward\n"
+    "                            its right, elevation above the horizon; default: to the side)\n"
     "  [--time T]               (the scene posed at T seconds; default: at rest)\n"
     "  [--animate NAME|all]     (play that animation, or all, from T; Space plays all)\n"
-    "keys: Tab light, V variant, R resolution, F depth format, P filter, [ ] offset units,\n"
+    "keys: Tab light, V variant, R resolution, F depth format, P filter, C cascades,\n"
+    "      T stable cascades, [ ] offset units,\n"
     "      , . dimming, 1-9 glTF cameras, 0 framing camera, D debug view, O overlay,\n"
     "      S save settings, Space play/pause, Left/Right step 0.1 s, Esc quit;\n"
     "      mouse: left orbit, right/middle pan, wheel zoom\n";

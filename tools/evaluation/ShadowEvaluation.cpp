@@ -13,6 +13,10 @@ namespace evaluation {
 ShadowEvaluator::ShadowEvaluator(engine::Renderer& renderer, const engine::Scene& scene)
     : renderer_(renderer), scene_(scene), visibility_(scene) {}
 
+bool ShadowEvaluator::scored(const engine::ShadowView& view) const {
+    return view.castsShadows && scene_.lights[scene_.lightInstances[view.slot].light].emitsLight();
+}
+
 ViewResult ShadowEvaluator::evaluate(const engine::FrameCamera& camera, int frames) {
     ViewResult result;
     engine::FrameRequest request;
@@ -37,13 +41,13 @@ ViewResult ShadowEvaluator::evaluate(const engine::FrameCamera& camera, int fram
     request.timing = false;
     const std::vector<engine::ShadowView> views = renderer_.renderFrame(request).shadowViews;
     for (const engine::ShadowView& view : views)
-        if (view.castsShadows) request.shadowMaskSlots.push_back(view.slot);
+        if (scored(view)) request.shadowMaskSlots.push_back(view.slot);
     if (request.shadowMaskSlots.empty()) return result;
     renderer_.renderFrame(request);
 
     const truth::SurfaceBuffer surfaces = capture_.capture(scene_, renderer_.gpu(), camera);
     for (const engine::ShadowView& view : views) {
-        if (!view.castsShadows) continue;
+        if (!scored(view)) continue;
         LightResult out;
         out.light = view.name;
         out.slot = view.slot;
@@ -77,7 +81,7 @@ std::vector<LightShimmer> ShadowEvaluator::shimmer(const std::vector<engine::Fra
     engine::FrameRequest request;
     request.camera = path.front();
     for (const engine::ShadowView& view : renderer_.renderFrame(request).shadowViews)
-        if (view.castsShadows) {
+        if (scored(view)) {
             request.shadowMaskSlots.push_back(view.slot);
             lights.push_back({view.name, view.slot, {}});
         }

@@ -66,6 +66,11 @@ public:
     // over consecutive frames.
     std::vector<LightShimmer> shimmer(const std::vector<engine::FrameCamera>& path);
 
+    // Whether a light is scored at all: shadowed (its variant is not none) and emitting light
+    // (a light of intensity 0 shadows nothing: its mask says lit everywhere, and scoring it
+    // reported leaks no one can see).
+    bool scored(const engine::ShadowView& view) const;
+
 private:
     engine::Renderer& renderer_;
     const engine::Scene& scene_;

@@ -35,13 +35,10 @@ std::vector<std::string> knownVariants() {
 std::vector<std::string> knownFormats() { return shadowmap::settingKey("depth_format").choices; }
 std::vector<std::string> knownFilters() { return shadowmap::settingKey("filter").choices; }
 
-// The source tree's content/ while it exists (a build), else the install's
-// share/shadow-engine, which holds the same engine.json and scenes/.
-std::string contentDir() {
-    std::error_code error;
-    if (std::filesystem::is_directory(BENCH_CONTENT_DIR, error)) return BENCH_CONTENT_DIR;
-    return engine::installedDataDir().string();
-}
+// The source tree's content/ for a tool of the build tree, else the install's
+// share/shadow-engine, which holds the same engine.json and scenes/ (InstallLayout.h: an
+// installed bench never reads a source tree that happens to sit where its builder had one).
+std::string contentDir() { return engine::buildTreeDataDir().value_or(engine::installedDataDir()).string(); }
 
 std::string joined(const std::vector<std::string>& items) {
     std::string text;

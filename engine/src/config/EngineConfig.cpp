@@ -121,12 +121,17 @@ EngineConfig loadEngineConfig(const std::filesystem::path& path) {
 }
 
 std::vector<std::filesystem::path> defaultEngineConfigCandidates() {
-    return {std::filesystem::path("content") / "engine.json", installedDataDir() / "engine.json"};
+    std::vector<std::filesystem::path> candidates{std::filesystem::path("content") / "engine.json"};
+    if (const auto sourceContent = buildTreeDataDir()) candidates.push_back(*sourceContent / "engine.json");
+    candidates.push_back(installedDataDir() / "engine.json");
+    return candidates;
 }
 
-std::filesystem::path findDefaultEngineConfig() {
+std::filesystem::path findDefaultEngineConfig() { return firstExistingEngineConfig(defaultEngineConfigCandidates()); }
+
+std::filesystem::path firstExistingEngineConfig(const std::vector<std::filesystem::path>& candidates) {
     std::string tried;
-    for (const auto& candidate : defaultEngineConfigCandidates()) {
+    for (const auto& candidate : candidates) {
         std::error_code error;
         if (std::filesystem::is_regular_file(candidate, error)) return candidate;
         tried += (tried.empty() ? "" : ", ") + candidate.string();

@@ -1,5 +1,7 @@
 #include "engine/render/CameraSetup.h"
 
+#include "engine/scene/Framing.h"
+
 #include "engine/scene/SceneNames.h"
 #include "engine/util/Error.h"
 
@@ -78,7 +80,7 @@ FrameCamera framingCamera(const Scene& scene, int width, int height) {
     const double radius = std::max(glm::length(bounds.extent()) * 0.5, 1e-6);
     const glm::dvec3 target = bounds.center();
     const double distance = radius / std::sin(yfov * 0.5) * 1.05;
-    const glm::dvec3 eye = target + glm::normalize(glm::dvec3(1.0, 0.8, 1.2)) * distance;
+    const glm::dvec3 eye = target + framingViewDirection() * distance;
     frame.eyeToWorld = glm::inverse(glm::lookAt(eye, target, glm::dvec3(0.0, 1.0, 0.0)));
     const double aspect = static_cast<double>(width) / static_cast<double>(height);
     frame.projection = glm::perspective(yfov, aspect, std::max(distance - radius, radius * 1e-3),

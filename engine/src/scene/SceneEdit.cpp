@@ -1,5 +1,7 @@
 #include "engine/scene/SceneEdit.h"
 
+#include "engine/scene/Framing.h"
+
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
@@ -23,12 +25,21 @@ void orbitNode(Scene& scene, int node, const glm::dvec3& center, double angle) {
     scene.updateWorldTransforms();
 }
 
-int addKeyLight(Scene& scene, Light::Type type, const std::string& name) {
+glm::dvec3 keyLightDirection(const KeyLightAngles& angles) {
+    const glm::dvec3 view = framingViewDirection();
+    const glm::dvec3 toward = glm::normalize(glm::dvec3(view.x, 0.0, view.z));  // the camera's side
+    const glm::dvec3 right(toward.z, 0.0, -toward.x);  // the camera's right, looking at the centre
+    const double azimuth = glm::radians(angles.azimuthDegrees), elevation = glm::radians(angles.elevationDegrees);
+    const glm::dvec3 horizontal = std::cos(azimuth) * toward + std::sin(azimuth) * right;
+    return std::cos(elevation) * horizontal + std::sin(elevation) * glm::dvec3(0.0, 1.0, 0.0);
+}
+
+int addKeyLight(Scene& scene, Light::Type type, const std::string& name, KeyLightAngles angles) {
     const Aabb bounds = scene.worldBounds.empty() ? Aabb{glm::dvec3(-1.0), glm::dvec3(1.0)}
                                                   : scene.worldBounds;
     const glm::dvec3 center = bounds.center();
     const double radius = std::max(glm::length(bounds.extent()) * 0.5, 1e-6);
-    const glm::dvec3 position = center + glm::normalize(glm::dvec3(0.6, 1.6, 0.9)) * (2.0 * radius);
+    const glm::dvec3 position = center + keyLightDirection(angles) * (2.0 * radius);
     const double distance = glm::length(position - center);
 
     Light light;

@@ -30,11 +30,23 @@ std::filesystem::path installedDataDir() {
     return (engineLibraryDir() / ENGINE_LIB_TO_DATA_DIR).lexically_normal();
 }
 
-std::optional<std::filesystem::path> buildTreePluginDir() {
+namespace {
+
+bool runningFromBuildTree() {
     std::error_code error;
-    if (!std::filesystem::equivalent(engineLibraryDir(), ENGINE_BUILD_LIBRARY_DIR, error) || error)
-        return std::nullopt;
+    return std::filesystem::equivalent(engineLibraryDir(), ENGINE_BUILD_LIBRARY_DIR, error) && !error;
+}
+
+} // namespace
+
+std::optional<std::filesystem::path> buildTreePluginDir() {
+    if (!runningFromBuildTree()) return std::nullopt;
     return std::filesystem::path(ENGINE_BUILD_PLUGIN_DIR);
+}
+
+std::optional<std::filesystem::path> buildTreeDataDir() {
+    if (!runningFromBuildTree()) return std::nullopt;
+    return std::filesystem::path(ENGINE_BUILD_DATA_DIR);
 }
 
 } // namespace engine

@@ -85,7 +85,7 @@ bool planLight(LightState& light, const PlanContext& context, int textureUnit, i
         plan.skipReason = "variant none";
         return false;
     }
-    if (source.intensity <= 0.0f || source.color == glm::vec3(0.0f)) {
+    if (!source.emitsLight()) {
         plan.skipReason = "the light emits nothing";
         return false;
     }

@@ -2,6 +2,7 @@
 // GL, a one-box scene built in memory.
 #include "SceneLighting.h"
 
+#include "engine/scene/Framing.h"
 #include "engine/scene/Scene.h"
 
 #include <gtest/gtest.h>
@@ -92,6 +93,36 @@ TEST(SceneLighting, FlagsAreTakenOthersLeft) {
     EXPECT_EQ(lighting.keyLight, engine::Light::Type::Directional);
     EXPECT_TRUE(lighting.ground);
     EXPECT_THROW(tools::parseSceneLightingFlag(lighting, "--key-light", "sun"), std::invalid_argument);
+}
+
+// The key light's angles are from the framing view (engine/scene/Framing.h): azimuth 0 is
+// the camera's own side, 90 its right, elevation 90 straight up; --key-light-angles sets them.
+TEST(SceneLighting, KeyLightAnglesAreTakenFromTheFramingView) {
+    const glm::dvec3 view = engine::framingViewDirection();
+    const glm::dvec3 side = glm::normalize(glm::dvec3(view.x, 0.0, view.z));
+    const glm::dvec3 right = glm::normalize(glm::cross(-view, glm::dvec3(0.0, 1.0, 0.0)));
+    constexpr double kRounding = 1e-12;  // a few double roundings of sin/cos on unit vectors
+    const auto near = [](const glm::dvec3& a, const glm::dvec3& b) { return glm::length(a - b) < kRounding; };
+    EXPECT_TRUE(near(engine::keyLightDirection({0.0, 0.0}), side));
+    EXPECT_TRUE(near(engine::keyLightDirection({90.0, 0.0}), right));
+    EXPECT_TRUE(near(engine::keyLightDirection({-90.0, 0.0}), -right));
+    EXPECT_TRUE(near(engine::keyLightDirection({30.0, 90.0}), glm::dvec3(0.0, 1.0, 0.0)));
+    const glm::dvec3 defaults = engine::keyLightDirection({});
+    EXPECT_NEAR(glm::degrees(std::asin(defaults.y)), engine::KeyLightAngles{}.elevationDegrees, 1e-9);
+
+    tools::SceneLighting lighting;
+    EXPECT_TRUE(tools::parseSceneLightingFlag(lighting, "--key-light-angles", "-30,60"));
+    EXPECT_EQ(lighting.keyLightAngles.azimuthDegrees, -30.0);
+    EXPECT_EQ(lighting.keyLightAngles.elevationDegrees, 60.0);
+    for (const char* bad : {"30", "30,0", "30,91", "200,45", "30,45,1", "east,45"})
+        EXPECT_THROW(tools::parseSceneLightingFlag(lighting, "--key-light-angles", bad), std::invalid_argument) << bad;
+
+    lighting.keyLight = engine::Light::Type::Directional;
+    engine::Scene scene = boxScene();
+    tools::stageScene(scene, "box.gltf", lighting);
+    ASSERT_EQ(scene.lightInstances.size(), 1u);
+    // A directional light shines from its direction toward the centre.
+    EXPECT_TRUE(glm::length(-scene.lightInstances[0].direction() - engine::keyLightDirection({-30.0, 60.0})) < 1e-9);
 }
 
 } // namespace

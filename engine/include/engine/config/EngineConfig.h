@@ -94,9 +94,13 @@ EngineConfig parseEngineConfig(const std::string& jsonText, const std::filesyste
 
 // The config a program uses when the user names none, first that exists:
 //   1. content/engine.json under the current folder (a source checkout);
-//   2. <datadir>/shadow-engine/engine.json of the install the running libengine belongs to.
-// Throws InputError listing every path tried when neither exists.
+//   2. the source tree's content/engine.json, while libengine runs from its build tree
+//      (InstallLayout.h: a tool of the build tree, started from any folder);
+//   3. <datadir>/shadow-engine/engine.json of the install the running libengine belongs to.
+// Throws InputError listing every path tried when none exists.
 std::vector<std::filesystem::path> defaultEngineConfigCandidates();
 std::filesystem::path findDefaultEngineConfig();
+// The first of `candidates` that is a file, else the InputError above.
+std::filesystem::path firstExistingEngineConfig(const std::vector<std::filesystem::path>& candidates);
 
 } // namespace engine

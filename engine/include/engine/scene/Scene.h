@@ -172,6 +172,10 @@ struct Light {
     bool castShadows = true;
     // The light object's "extras" (e.g. {"shadow":{...}}), kept for plugins to interpret.
     nlohmann::json extras = nlohmann::json::object();
+
+    // Whether it lights anything: a light with intensity 0 or a black colour has no shadow
+    // to make or to get wrong.
+    bool emitsLight() const { return intensity > 0.0f && color != glm::vec3(0.0f); }
 };
 
 // glTF skin: the nodes whose world transforms pose a skinned mesh, with each joint's inverse

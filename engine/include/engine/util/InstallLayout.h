@@ -23,4 +23,8 @@ std::filesystem::path installedDataDir();
 // its builder had at that path.
 std::optional<std::filesystem::path> buildTreePluginDir();
 
+// The source tree's content/ folder (default configs, showcase scenes), under the same
+// condition: what installedDataDir() is to an install.
+std::optional<std::filesystem::path> buildTreeDataDir();
+
 } // namespace engine
