@@ -76,8 +76,12 @@ DepthDrawCounts DepthRenderer::draw(const engine::Frame& frame, engine::PassCont
 
     const engine::Scene& scene = frame.scene();
     const engine::SceneGpu& gpu = frame.gpu();
+    // Casters, and for a style that asks, receivers that cast nothing (DepthPassStyle.h).
+    const auto drawn = [&style](bool casts, bool receives) {
+        return casts || (style.drawsNonCastingReceivers && receives);
+    };
     for (const engine::MeshInstance& instance : scene.meshInstances) {
-        if (!instance.castShadows) continue;
+        if (!drawn(instance.castShadows, instance.receiveShadows)) continue;
         if (!engine::boxIntersectsFrustum(viewProjection, instance.worldBounds)) {
             ++counts.castersCulled;
             context.countCulledDraw();
@@ -94,7 +98,10 @@ DepthDrawCounts DepthRenderer::draw(const engine::Frame& frame, engine::PassCont
         // P_light * L^-1 * M in double: only the light-relative product is rounded.
         const glm::mat4 lightModelViewProjection(viewProjection * gpu.modelMatrix(instance));
         for (const auto& primitive : gpu.primitives(instance)) {
-            if (!primitive.castShadows) continue;  // KHR_lights_shadows on the primitive
+            // KHR_lights_shadows on the primitive: a caster only if instance and primitive cast.
+            if (!drawn(instance.castShadows && primitive.castShadows,
+                       instance.receiveShadows && primitive.receiveShadows))
+                continue;
             const unsigned features =
                 engine::materialFeatures(scene, gpu, primitive, engine::MaterialUse::ShadowCasting);
             const engine::gl::Program& drawing = use(features);

@@ -30,6 +30,9 @@ struct DepthPassStyle {
     // bound at its DEPTH_INPUT_UNIT (0: none) and float uniforms (Woo pass 2: the first
     // layer's depth and the peel's epsilon).
     const DepthProgram* program = &nearestDepthProgram();
+    // Also draw the receivers that cast no shadow (a --ground, a glTF cast_shadows: false):
+    // Woo's peel, whose second layer must see them (DepthTechnique::drawsNonCastingReceivers).
+    bool drawsNonCastingReceivers = false;
     unsigned inputTexture = 0;
     std::vector<DepthUniform> uniforms;
     // Reversed Z (ShadowSettings reversed_z, d32f): glClipControl(GL_LOWER_LEFT,

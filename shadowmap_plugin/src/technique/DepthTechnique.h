@@ -48,6 +48,9 @@ public:
     // first frame so that no light's first use compiles one.
     virtual std::vector<const DepthProgram*> programs() const { return {&nearestDepthProgram()}; }
     virtual void addLayerPasses(const LayerPasses& passes) const = 0;
+    // Whether some pass draws the receivers that cast no shadow, so that they are part of
+    // what the map holds (its cache key).
+    virtual bool drawsNonCastingReceivers() const { return false; }
     // Its part of the light's --stats (what it decided this frame beyond the passes).
     virtual void addStats(const LightState&, nlohmann::json&) const {}
 };

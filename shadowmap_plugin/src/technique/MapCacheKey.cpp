@@ -1,5 +1,7 @@
 #include "technique/MapCacheKey.h"
 
+#include "technique/Techniques.h"
+
 #include "engine/scene/FrustumCull.h"
 #include "engine/util/Hasher.h"
 
@@ -20,12 +22,16 @@ void addSettings(engine::Hasher& hasher, const LightState& light, std::uint64_t 
     hasher.add(static_cast<int>(light.frame.kind));
 }
 
-// The casters drawn with any of `views`: which mesh, where.
-void addCasters(engine::Hasher& hasher, const engine::Scene& scene, const std::vector<glm::dmat4>& views) {
+// What the light's passes draw with any of `views` (the casters, and the receivers that cast
+// nothing where the depth technique draws those too): which mesh, where.
+void addCasters(engine::Hasher& hasher, const LightState& light, const engine::Scene& scene,
+                const std::vector<glm::dmat4>& views) {
+    const DepthTechnique* technique = depthTechnique(light.settings.variant);
+    const bool withReceivers = technique && technique->drawsNonCastingReceivers();
     for (const glm::dmat4& view : views) hasher.add(view);
     for (std::size_t i = 0; i < scene.meshInstances.size(); ++i) {
         const engine::MeshInstance& instance = scene.meshInstances[i];
-        if (!instance.castShadows) continue;
+        if (!instance.castShadows && !(withReceivers && instance.receiveShadows)) continue;
         bool inside = false;
         for (const glm::dmat4& view : views)
             inside = inside || engine::boxIntersectsFrustum(view, instance.worldBounds);
@@ -59,7 +65,7 @@ std::uint64_t mapCacheKey(const LightState& light, const engine::Scene& scene,
             if (!face.empty) views.push_back(face.viewProjection());
         }
     }
-    addCasters(hasher, scene, views);
+    addCasters(hasher, light, scene, views);
     return hasher.value();
 }
 
@@ -71,7 +77,7 @@ std::uint64_t cascadeCacheKey(const LightState& light, int cascade, const engine
     hasher.add(light.frame.cascades.cascades.size());
     const LightView& view = light.frame.cascades.cascades[cascade];
     hasher.add(view.empty);
-    if (!view.empty) addCasters(hasher, scene, {view.viewProjection()});
+    if (!view.empty) addCasters(hasher, light, scene, {view.viewProjection()});
     return hasher.value();
 }
 

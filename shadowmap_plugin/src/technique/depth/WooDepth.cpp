@@ -23,6 +23,10 @@ DepthPassStyle peelStyle(const DepthPassStyle& style, const ShadowSettings& sett
     DepthPassStyle peel = style;
     peel.program = &kPeelProgram;
     peel.inputTexture = firstLayer;
+    // The second layer may be a receiver that casts nothing; the first layer never is (drawn
+    // only here, such a receiver cannot hide what lies behind it), and where no caster is in
+    // front the peel discards it (z1 is the far depth), so the texel stays far.
+    peel.drawsNonCastingReceivers = true;
     const double step = depthStep(settings.depthFormat);
     float epsilon = static_cast<float>(settings.depthFormat == DepthFormat::D32F ? 4.0 * step : 2.0 * step);
     // Reversed Z: relative, eight float steps of z1 (z1 * 2^-20).

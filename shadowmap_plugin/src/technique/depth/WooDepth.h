@@ -12,6 +12,9 @@ public:
     Variant variant() const override { return Variant::Woo; }
     std::vector<const DepthProgram*> programs() const override;
     void addLayerPasses(const LayerPasses& passes) const override;
+    // The peel draws them: the surface behind a caster may be a receiver that casts nothing
+    // (a ground), and a midpoint taken with the far plane instead lies beyond it, lit.
+    bool drawsNonCastingReceivers() const override { return true; }
 };
 
 } // namespace shadowmap
