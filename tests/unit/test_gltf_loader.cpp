@@ -13,6 +13,8 @@
 #include <algorithm>
 #include <iostream>
 #include <numbers>
+#include <utility>
+#include <vector>
 
 namespace {
 
@@ -279,35 +281,33 @@ TEST(GltfLoader, ReadsPerspectiveAndOrthographicCameras) {
     EXPECT_EQ(scene.cameraInstances[0].world[3][2], 10.0);
 }
 
-TEST(GltfLoader, ReadsCastAndReceiveShadowExtras) {
+// The quad node with `quadExtras` and a second node "Floor" with `floorExtras`, loaded: each
+// mesh instance's (cast, receive) flags.
+std::vector<std::pair<bool, bool>> shadowFlagsOf(const json& quadExtras, const json& floorExtras) {
     TempDir dir;
     GltfBuilder b = quadScene();
-    b.doc["nodes"][0]["extras"] = {{"cast_shadows", false}, {"label", "anything else is fine"}};
-    b.addNode({{"name", "Floor"}, {"mesh", 0}, {"extras", {{"receive_shadows", false}}}});
+    b.doc["nodes"][0]["extras"] = quadExtras;
+    b.addNode({{"name", "Floor"}, {"mesh", 0}, {"extras", floorExtras}});
     b.setScene({0, 1});
     const engine::Scene scene = engine::loadGltf(b.writeGltf(dir.path(), "extras"));
-    ASSERT_EQ(scene.meshInstances.size(), 2u);
-    EXPECT_FALSE(scene.meshInstances[0].castShadows);
-    EXPECT_TRUE(scene.meshInstances[0].receiveShadows);
-    EXPECT_TRUE(scene.meshInstances[1].castShadows);
-    EXPECT_FALSE(scene.meshInstances[1].receiveShadows);
+    std::vector<std::pair<bool, bool>> flags;
+    for (const engine::MeshInstance& instance : scene.meshInstances)
+        flags.emplace_back(instance.castShadows, instance.receiveShadows);
+    return flags;
+}
+
+TEST(GltfLoader, ReadsCastAndReceiveShadowExtras) {
+    EXPECT_EQ(shadowFlagsOf({{"cast_shadows", false}, {"label", "anything else is fine"}},
+                            {{"receive_shadows", false}}),
+              (std::vector<std::pair<bool, bool>>{{false, true}, {true, false}}));
 }
 
 // Blender writes a boolean custom property as the integer 0 or 1 (older files, and every
 // property made as an integer): read as false and true. (Any other number is an error:
 // test_gltf_bad_input.)
 TEST(GltfLoader, ReadsBlendersZeroAndOneAsShadowFlags) {
-    TempDir dir;
-    GltfBuilder b = quadScene();
-    b.doc["nodes"][0]["extras"] = {{"cast_shadows", 0}, {"receive_shadows", 1}};
-    b.addNode({{"name", "Floor"}, {"mesh", 0}, {"extras", {{"cast_shadows", 1}, {"receive_shadows", 0.0}}}});
-    b.setScene({0, 1});
-    const engine::Scene scene = engine::loadGltf(b.writeGltf(dir.path(), "blender"));
-    ASSERT_EQ(scene.meshInstances.size(), 2u);
-    EXPECT_FALSE(scene.meshInstances[0].castShadows);
-    EXPECT_TRUE(scene.meshInstances[0].receiveShadows);
-    EXPECT_TRUE(scene.meshInstances[1].castShadows);
-    EXPECT_FALSE(scene.meshInstances[1].receiveShadows);
+    EXPECT_EQ(shadowFlagsOf({{"cast_shadows", 0}, {"receive_shadows", 1}}, {{"cast_shadows", 1}, {"receive_shadows", 0.0}}),
+              (std::vector<std::pair<bool, bool>>{{false, true}, {true, false}}));
 }
 
 // Node extras are shared with other exporters: keys that are not ours load silently, but

@@ -22,11 +22,11 @@ protected:
     static void SetUpTestSuite() { loadPlugin({{"resolution", 256}}); }
 };
 
-} // namespace
-
-TEST_F(AssimpModels, EveryLoadableModelRendersWithShadows) {
-    ASSERT_TRUE(engine::test::assimpTestModelsInstalled());
-    int loaded = 0, rendered = 0, refused = 0;
+// Calls visit(file, scene) for every glTF file of assimp-testmodels the loader accepts;
+// returns how many it refused (each with an InputError, tested in tests/unit).
+template <typename Visit>
+int forEachLoadableModel(Visit visit) {
+    int refused = 0;
     for (const auto& entry : std::filesystem::recursive_directory_iterator(engine::test::kAssimpGltf2Models)) {
         const std::string extension = entry.path().extension().string();
         if (!entry.is_regular_file() || (extension != ".gltf" && extension != ".glb")) continue;
@@ -37,11 +37,22 @@ TEST_F(AssimpModels, EveryLoadableModelRendersWithShadows) {
             ++refused;
             continue;
         }
+        visit(entry.path(), scene);
+    }
+    return refused;
+}
+
+} // namespace
+
+TEST_F(AssimpModels, EveryLoadableModelRendersWithShadows) {
+    ASSERT_TRUE(engine::test::assimpTestModelsInstalled());
+    int loaded = 0, rendered = 0;
+    const int refused = forEachLoadableModel([&](const std::filesystem::path& file, engine::Scene& scene) {
         ++loaded;
         engine::addKeyLight(scene, engine::Light::Type::Spot, "key_spot");
         engine::addKeyLight(scene, engine::Light::Type::Point, "key_point");
         engine::addKeyLight(scene, engine::Light::Type::Directional, "key_sun");
-        SCOPED_TRACE(entry.path().string());
+        SCOPED_TRACE(file.string());
         engine::Renderer renderer({}, plugins());
         renderer.setScene(scene);
         engine::FrameRequest request;
@@ -51,7 +62,7 @@ TEST_F(AssimpModels, EveryLoadableModelRendersWithShadows) {
         const auto pixels = renderer.readColor();
         ASSERT_EQ(pixels.size(), 48u * 32u * 4u);
         ++rendered;
-    }
+    });
     std::printf("assimp glTF2 models: %d loaded and rendered, %d refused\n", rendered, refused);
     EXPECT_GE(loaded, 25);
     EXPECT_EQ(rendered, loaded);
@@ -69,19 +80,11 @@ TEST_F(AssimpModels, TheKeyLightsShadowFallsOnGroundTheFramingCameraSees) {
     constexpr int kWidth = 64, kHeight = 48;
     int checked = 0;
     std::vector<std::string> hidden;
-    for (const auto& entry : std::filesystem::recursive_directory_iterator(engine::test::kAssimpGltf2Models)) {
-        const std::string extension = entry.path().extension().string();
-        if (!entry.is_regular_file() || (extension != ".gltf" && extension != ".glb")) continue;
-        engine::Scene loaded;
-        try {
-            loaded = engine::loadGltf(entry.path());
-        } catch (const engine::InputError&) {
-            continue;
-        }
+    forEachLoadableModel([&](const std::filesystem::path& file, const engine::Scene& loaded) {
         const engine::Aabb model = loaded.worldBounds;
-        if (model.empty()) continue;
+        if (model.empty()) return;
         const glm::dvec3 extent = model.extent();
-        if (extent.y < 0.05 * std::max(extent.x, extent.z) || entry.path().filename() == "Cameras.gltf") continue;
+        if (extent.y < 0.05 * std::max(extent.x, extent.z) || file.filename() == "Cameras.gltf") return;
         for (const auto type : {engine::Light::Type::Spot, engine::Light::Type::Point, engine::Light::Type::Directional}) {
             engine::Scene scene = loaded;
             engine::addKeyLight(scene, type);
@@ -106,10 +109,10 @@ TEST_F(AssimpModels, TheKeyLightsShadowFallsOnGroundTheFramingCameraSees) {
             ++checked;
             // At least 1 % of the ground in view: a shadow a user sees, not a stray pixel.
             if (shadowed * 100 < seen || shadowed < 4)
-                hidden.push_back(entry.path().filename().string() + " " + engine::toString(type) + ": " +
+                hidden.push_back(file.filename().string() + " " + engine::toString(type) + ": " +
                                  std::to_string(shadowed) + " of " + std::to_string(seen) + " ground pixels");
         }
-    }
+    });
     std::printf("key light shadows checked: %d (model, light type) pairs, %zu hidden\n", checked, hidden.size());
     EXPECT_GE(checked, 3 * 20);
     std::string list;
