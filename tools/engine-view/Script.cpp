@@ -3,6 +3,9 @@
 #include "engine/render/CameraSetup.h"
 #include "engine/util/Error.h"
 #include "engine/util/InputFile.h"
+#include "engine/util/OutputFile.h"
+
+#include "SaveSettings.h"
 
 #include <cerrno>
 #include <cstdlib>
@@ -53,6 +56,21 @@ Script Script::load(const std::filesystem::path& path) {
 
 void Script::fail(const Command& command, const std::string& reason) const {
     throw engine::InputError(fileName_ + ":" + std::to_string(command.line) + ": " + command.verb + ": " + reason);
+}
+
+void Script::checkOutputs(const std::filesystem::path& scene, const std::string& defaultSave) const {
+    for (const Command& command : commands_) {
+        try {
+            if (command.verb == "screenshot") engine::checkOutputPath(command.words[0]);
+            if (command.verb != "save") continue;
+            const std::string path = command.words.empty() ? defaultSave : command.words[0];
+            if (path.empty()) fail(command, "nowhere to save: give a path or start with --save-settings FILE.gltf");
+            tools::checkSaveTarget(scene, path);
+        } catch (const engine::InputError& error) {
+            if (std::string(error.what()).rfind(fileName_ + ":", 0) == 0) throw;
+            fail(command, error.what());
+        }
+    }
 }
 
 Script Script::parse(const std::string& text, const std::string& fileName) {

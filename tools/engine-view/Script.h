@@ -48,6 +48,11 @@ public:
     // plugin refuses when it is applied).
     std::string where() const;
     std::size_t size() const { return commands_.size(); }
+    // Before the window opens: every `screenshot PATH` can be written and every `save [PATH]`
+    // can save `scene` there (PATH, else `defaultSave`, engine-view's --save-settings), so a
+    // script never fails at its last line after running everything before it. Throws
+    // InputError naming the line.
+    void checkOutputs(const std::filesystem::path& scene, const std::string& defaultSave) const;
 
 private:
     struct Command {

@@ -103,6 +103,7 @@ int run(const ViewOptions& options, std::unique_ptr<engine::GlContext>& context,
     for (const std::string& warning : warnings) std::cerr << "warning: " << warning << "\n";
     // Before a window opens: a save that cannot succeed is found now, not after the tuning.
     if (!options.saveSettings.empty()) tools::checkSaveTarget(options.scene, options.saveSettings);
+    if (script) script->checkOutputs(options.scene, options.saveSettings);
     const int fileLights = static_cast<int>(scene.lights.size());
     const tools::StagedScene staged = tools::stageScene(scene, options.scene, options.lighting);
     for (const std::string& note : staged.notes) std::printf("engine-view: %s\n", note.c_str());

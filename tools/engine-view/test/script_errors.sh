@@ -31,6 +31,13 @@ expect_error $'time soon' 'bad.txt:1: time: T must be a number of seconds in [0,
 expect_error $'set sun variant foo\nframes 1' 'engine-view: bad.txt:1: ' 'sun' '"foo"'
 expect_error $'set sun colour 3' 'engine-view: bad.txt:1: ' 'sun' 'colour'
 
+# Outputs are checked before the window opens: a save into a missing folder (or with
+# nowhere to save) fails naming its line, and the screenshot before it is never taken.
+expect_error $'screenshot early.png\nframes 1\nsave missing/saved.gltf' 'bad.txt:3: save: ' 'missing/saved.gltf: its folder' 'does not exist'
+[[ ! -e early.png ]] || { echo "FAIL: the script ran before its save was found impossible" >&2; exit 1; }
+expect_error $'save' 'bad.txt:1: save: nowhere to save'
+expect_error $'screenshot missing/shot.png' 'bad.txt:1: screenshot: ' 'missing/shot.png: its folder'
+
 # A script without `quit` ends the viewer once its last command has run (exit 0, its
 # screenshot taken): headless under Xvfb nobody could close it. Before, it waited forever:
 # the timeout turns a hang into a failure.
