@@ -34,6 +34,7 @@ struct RenderOptions {
     std::string animate;
     std::optional<double> fps;
     bool truth = false;       // --truth: per-light error against ray-traced shadows
+    std::optional<double> exposureEv100;  // --exposure EV100: the config's exposure replaced
     bool list = false;        // --list: print the scene's cameras and lights, render nothing
     std::string stats;      // JSON
     std::string graphDot;   // graphviz of the last frame's compiled graph

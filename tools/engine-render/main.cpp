@@ -164,6 +164,17 @@ nlohmann::json printLightErrors(engine::Renderer& renderer, const engine::Scene&
     return lights;
 }
 
+// More than this share of saturated pixels is "most of the image".
+constexpr double kMostlySaturated = 0.5;
+
+// The share of RGBA8 pixels with a colour channel at 255.
+double saturatedFraction(const std::vector<std::uint8_t>& rgba) {
+    std::size_t saturated = 0;
+    for (std::size_t i = 0; i + 3 < rgba.size(); i += 4)
+        saturated += rgba[i] == 255 || rgba[i + 1] == 255 || rgba[i + 2] == 255;
+    return rgba.empty() ? 0.0 : static_cast<double>(saturated) / static_cast<double>(rgba.size() / 4);
+}
+
 // --list: the scene's cameras and lights with the numbers and names the options accept.
 void printCamerasAndLights(const engine::Scene& scene, const std::string& sceneFile) {
     std::printf("%s\n  cameras (--camera NAME or number; none: a framing camera)\n", sceneFile.c_str());
@@ -201,6 +212,7 @@ int run(const RenderOptions& options, std::unique_ptr<engine::GlContext>& contex
 
     engine::EngineConfig config = engine::loadEngineConfig(options.config);
     tools::applySettingOverrides(config, options.pluginSettings);
+    if (options.exposureEv100) config.renderer.exposure = engine::exposureFromEv100(*options.exposureEv100);
     context = engine::createEglContext();
     context->makeCurrent();
 
@@ -290,7 +302,15 @@ int run(const RenderOptions& options, std::unique_ptr<engine::GlContext>& contex
         throw engine::InputError(std::string(options.shadowMasks.empty() ? "--shadow-compare" : "--shadow-mask") +
                                  ": no loaded plugin provides a shadow term (config " + options.config + ")");
 
-    engine::writePngAtomically(options.out, options.width, options.height, 4, renderer.readColor());
+    const std::vector<std::uint8_t> image = renderer.readColor();
+    // Most of the picture white: lights in physical units (Blender 4 writes candela and lux)
+    // rendered at display exposure. Said, with the way out.
+    if (const double saturated = saturatedFraction(image); saturated > kMostlySaturated)
+        std::fprintf(stderr,
+                     "warning: %.0f%% of the image is saturated: the lights may be in physical units (candela, "
+                     "lux); try --exposure EV100 (a sunlit scene 15, an office 8)\n",
+                     100.0 * saturated);
+    engine::writePngAtomically(options.out, options.width, options.height, 4, image);
     for (std::size_t i = 0; i < options.shadowMasks.size(); ++i)
         engine::writePngAtomically(options.shadowMasks[i].second, options.width, options.height, 1,
                                    renderer.readShadowMask(request.shadowMaskSlots[i]));

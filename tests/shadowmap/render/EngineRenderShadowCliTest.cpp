@@ -274,6 +274,27 @@ TEST_F(EngineRenderShadows, RunsWithoutConfigFromAFolderOutsideTheCheckout) {
     EXPECT_TRUE(fs::exists(dir_ / "out.png"));
 }
 
+// Lights in physical units (here every light 10^4 times brighter, as candela would be) blow
+// the picture to white at display exposure: a warning says so and names --exposure, which
+// brings it back (EV100 13: no warning). The showcase as it is gets none.
+TEST_F(EngineRenderShadows, AMostlySaturatedImageIsWarnedAboutAndExposureFixesIt) {
+    const std::string warning = "of the image is saturated: the lights may be in physical units";
+    const CommandResult plain = render();
+    ASSERT_EQ(plain.exitCode, 0) << plain.output;
+    EXPECT_EQ(plain.output.find(warning), std::string::npos) << plain.output;
+    for (auto& light : scene_["extensions"]["KHR_lights_punctual"]["lights"])
+        light["intensity"] = light.value("intensity", 1.0) * 1e4;
+    const CommandResult bright = render();
+    ASSERT_EQ(bright.exitCode, 0) << bright.output;
+    EXPECT_NE(bright.output.find(warning), std::string::npos) << bright.output;
+    EXPECT_NE(bright.output.find("--exposure EV100"), std::string::npos) << bright.output;
+    const CommandResult exposed = render("--exposure 13");
+    ASSERT_EQ(exposed.exitCode, 0) << exposed.output;
+    EXPECT_EQ(exposed.output.find(warning), std::string::npos) << exposed.output;
+    fs::remove(dir_ / "out.png");
+    expectError(render("--exposure 99"), {"--exposure"});
+}
+
 // --version alone prints the engine's version; a typo as the last argument is an unknown
 // option, as it is anywhere else on the line.
 TEST_F(EngineRenderShadows, VersionAndATrailingTypoAreAnsweredAsAUserExpects) {

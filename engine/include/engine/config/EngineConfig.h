@@ -12,6 +12,7 @@
 #include <glm/glm.hpp>
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -24,6 +25,10 @@ struct PluginConfig {
     std::string library;  // a bare name: "shadowmap_plugin" -> shadowmap_plugin.so
     nlohmann::json settings = nlohmann::json::object();
 };
+
+// The exposure for a camera at EV100 (the photographic convention of RendererConfig::exposure
+// below): 1 / (1.2 * 2^ev100).
+inline float exposureFromEv100(double ev100) { return static_cast<float>(1.0 / (1.2 * std::exp2(ev100))); }
 
 struct RendererConfig {
     glm::vec3 ambient{0.04f};      // linear ambient light, multiplied by albedo
