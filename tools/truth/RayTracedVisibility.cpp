@@ -12,6 +12,9 @@
 #include <cfloat>
 #include <cmath>
 #include <limits>
+#include <numbers>
+#include <numeric>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <thread>
@@ -187,37 +190,109 @@ double RayTracedVisibility::rayOffset(const glm::dvec3& p, const glm::dvec3& cam
 
 namespace {
 
-// Where the shadow ray of one surface point goes: toward a directional light's fixed
-// direction, or to a positional light, stopping just short of it.
+// A unit vector's two perpendicular unit vectors, continuous except where n.z changes sign
+// (Duff et al. 2017, "Building an Orthonormal Basis, Revisited"): no branch on a threshold
+// that would let the basis jump between neighbouring pixels.
+void orthonormalBasis(const glm::dvec3& n, glm::dvec3& e1, glm::dvec3& e2) {
+    const double sign = std::copysign(1.0, n.z);
+    const double a = -1.0 / (sign + n.z);
+    const double b = n.x * n.y * a;
+    e1 = glm::dvec3(1.0 + sign * n.x * n.x * a, sign * b, -sign * n.x);
+    e2 = glm::dvec3(b, sign + n.y * n.y * a, -n.y);
+}
+
+// Where the shadow rays of one surface point go: to a point on a positional light (its
+// centre, or a point of its disk of `size` = radius facing the ray start, stopping just short
+// of it), or along a directional light's direction (its axis, or a direction of its cone of
+// `size` = full apex angle). The point on the extent is given on the unit disk, (0,0) = the
+// centre: a disk point scales to the light's disk; a cone direction at disk radius rho and
+// angle phi leans by alpha, 1 - cos(alpha) = rho^2 (1 - cos(half angle)), towards phi, which
+// maps a uniform disk to directions uniform in solid angle over the cone's cap.
 class ShadowRayAim {
 public:
-    ShadowRayAim(const engine::Scene& scene, const engine::LightInstance& placed)
+    ShadowRayAim(const engine::Scene& scene, const engine::LightInstance& placed, double size = 0.0)
         : directional_(scene.lights.at(placed.light).type == engine::Light::Type::Directional),
-          lightPosition_(placed.position()), towardLight_(-placed.direction()) {}
+          lightPosition_(placed.position()), towardLight_(-placed.direction()) {
+        if (!directional_) {
+            radius_ = size;
+            return;
+        }
+        // 1 - cos(half) as 2 sin^2(half / 2): no cancellation for the sun's 0.0047 rad.
+        const double sinQuarter = std::sin(0.25 * size);
+        oneMinusCosHalf_ = 2.0 * sinQuarter * sinQuarter;
+        orthonormalBasis(towardLight_, coneE1_, coneE2_);
+    }
 
     // False when the start sits on the light itself: no ray, the light counts as visible.
-    bool aim(const glm::dvec3& start, glm::dvec3& direction, double& tfar) const {
-        direction = towardLight_;
+    bool aim(const glm::dvec3& start, const glm::dvec2& onLight, glm::dvec3& direction,
+             double& tfar) const {
         tfar = std::numeric_limits<double>::infinity();
-        if (directional_) return true;
-        const double distance = glm::length(lightPosition_ - start);
+        if (directional_) {
+            direction = coneDirection(onLight);
+            return true;
+        }
+        glm::dvec3 target = lightPosition_;
+        if (radius_ > 0.0) {
+            const double centreDistance = glm::length(lightPosition_ - start);
+            if (!(centreDistance > 0.0)) return false;
+            glm::dvec3 e1, e2;
+            orthonormalBasis((lightPosition_ - start) / centreDistance, e1, e2);
+            target += radius_ * (onLight.x * e1 + onLight.y * e2);
+        }
+        const double distance = glm::length(target - start);
         if (!(distance > 0.0)) return false;
-        direction = (lightPosition_ - start) / distance;
+        direction = (target - start) / distance;
         // Geometry exactly at the light (a lamp housing) must not count as blocking it.
         tfar = distance * (1.0 - 1e-6);
         return true;
     }
 
 private:
+    glm::dvec3 coneDirection(const glm::dvec2& onLight) const {
+        const double rho2 = glm::dot(onLight, onLight);
+        if (!(oneMinusCosHalf_ > 0.0) || rho2 == 0.0) return towardLight_;
+        const double oneMinusCos = rho2 * oneMinusCosHalf_;
+        const double sinAlpha = std::sqrt(oneMinusCos * (2.0 - oneMinusCos));
+        const glm::dvec2 phi = onLight / std::sqrt(rho2);  // (cos phi, sin phi)
+        return (1.0 - oneMinusCos) * towardLight_ + sinAlpha * (phi.x * coneE1_ + phi.y * coneE2_);
+    }
+
     bool directional_;
     glm::dvec3 lightPosition_, towardLight_;
+    double radius_ = 0.0;           // positional lights
+    double oneMinusCosHalf_ = 0.0;  // directional lights: the cone's half angle, and
+    glm::dvec3 coneE1_{0.0}, coneE2_{0.0};  // its basis around towardLight_
 };
 
-// One shadow ray's start, or the verdict when no ray is needed.
+// One shadow ray's start, or the verdict when no ray is needed, and the point of the light's
+// extent it aims at (unit disk; the centre for a point light).
 struct RayStart {
     enum class Kind { None, Visible, Trace } kind = Kind::None;
     glm::dvec3 start{0.0};
+    glm::dvec2 onLight{0.0};
 };
+
+// Where a surface point's shadow rays start: pushed off along its normal by rayOffset.
+glm::dvec3 offSurface(const RayTracedVisibility& tracer, const glm::dvec3& p, const glm::dvec3& n,
+                      const glm::dvec3& cameraPosition) {
+    return p + n * tracer.rayOffset(p, cameraPosition);
+}
+
+// A lane that traces nothing. rtcOccluded16 on a CPU without 16-wide kernels (AVX2) goes
+// through Embree's ray stream filter, which ignores the valid mask and takes every lane with
+// tnear <= tfar as active: an idle lane left uninitialised is traced (and fails the
+// asserts of Debian's Embree), so it gets a finite ray with tnear > tfar.
+void idleLane(RTCRay16& rays, int lane) {
+    rays.org_x[lane] = rays.org_y[lane] = rays.org_z[lane] = 0.0f;
+    rays.dir_x[lane] = rays.dir_y[lane] = 0.0f;
+    rays.dir_z[lane] = 1.0f;
+    rays.tnear[lane] = 1.0f;
+    rays.tfar[lane] = 0.0f;
+    rays.time[lane] = 0.0f;
+    rays.mask[lane] = 0u;
+    rays.id[lane] = static_cast<unsigned>(lane);
+    rays.flags[lane] = 0;
+}
 
 // Traces `packetCount` packets of 16 shadow rays on all hardware threads. `startOf(packet,
 // lane)` gives each ray's start; `record(packet, lane, visible)` receives every lane that
@@ -236,11 +311,13 @@ void traceShadowPackets(RTCScene scene, const glm::dvec3& embreeOrigin, const Sh
             bool any = false;
             for (int lane = 0; lane < 16; ++lane) {
                 valid[lane] = 0;
+                idleLane(rays, lane);
                 const RayStart ray = startOf(packet, lane);
                 if (ray.kind == RayStart::Kind::None) continue;
                 glm::dvec3 direction;
                 double tfar = 0.0;
-                if (ray.kind == RayStart::Kind::Visible || !aim.aim(ray.start, direction, tfar)) {
+                if (ray.kind == RayStart::Kind::Visible ||
+                    !aim.aim(ray.start, ray.onLight, direction, tfar)) {
                     record(packet, lane, true);
                     continue;
                 }
@@ -253,10 +330,7 @@ void traceShadowPackets(RTCScene scene, const glm::dvec3& embreeOrigin, const Sh
                 rays.dir_z[lane] = static_cast<float>(direction.z);
                 rays.tnear[lane] = 0.0f;
                 rays.tfar[lane] = static_cast<float>(tfar);
-                rays.time[lane] = 0.0f;
                 rays.mask[lane] = ~0u;
-                rays.id[lane] = static_cast<unsigned>(lane);
-                rays.flags[lane] = 0;
                 valid[lane] = -1;
                 any = true;
             }
@@ -272,6 +346,55 @@ void traceShadowPackets(RTCScene scene, const glm::dvec3& embreeOrigin, const Sh
     for (unsigned t = 1; t < threadCount; ++t) threads.emplace_back(tracePackets);
     tracePackets();
     for (std::thread& thread : threads) thread.join();
+}
+
+// The square's point (a, b) in [0,1)^2 on the unit disk by Shirley and Chiu's concentric map
+// ("A Low Distortion Map Between Disk and Square", 1997): area-preserving, so equal cells
+// of the square are equal-area strata of the disk, and compact ones.
+glm::dvec2 concentricDisk(double a, double b) {
+    constexpr double kQuarterPi = 0.25 * std::numbers::pi;
+    const double x = 2.0 * a - 1.0, y = 2.0 * b - 1.0;
+    if (x == 0.0 && y == 0.0) return glm::dvec2(0.0);
+    const bool nearXAxis = std::abs(x) > std::abs(y);
+    const double r = nearXAxis ? x : y;
+    const double phi = nearXAxis ? kQuarterPi * (y / x) : 2.0 * kQuarterPi - kQuarterPi * (x / y);
+    return r * glm::dvec2(std::cos(phi), std::sin(phi));
+}
+
+// A pixel's offset of the sample pattern, in [0,1)^2: splitmix64's finaliser of its index,
+// the high and low 32 bits. Deterministic, and unrelated between neighbours.
+glm::dvec2 patternRotation(std::size_t pixel) {
+    std::uint64_t z = static_cast<std::uint64_t>(pixel) + 0x9e3779b97f4a7c15ull;
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+    z ^= z >> 31;
+    constexpr double kTwoToMinus32 = 1.0 / 4294967296.0;
+    return {static_cast<double>(z >> 32) * kTwoToMinus32,
+            static_cast<double>(z & 0xffffffffull) * kTwoToMinus32};
+}
+
+// The unit-disk point of cell (cellX, cellY) of the kLightSamplesPerAxis^2 strata: the cell's
+// centre shifted by `rotation` and wrapped into the unit square (Cranley-Patterson), which
+// keeps one sample per cell.
+glm::dvec2 lightSample(int cellX, int cellY, const glm::dvec2& rotation) {
+    auto wrapped = [](double v) { return v - std::floor(v); };
+    constexpr double kCell = 1.0 / kLightSamplesPerAxis;
+    return concentricDisk(wrapped((cellX + 0.5) * kCell + rotation.x),
+                          wrapped((cellY + 0.5) * kCell + rotation.y));
+}
+
+// The size of `extent` that applies to the light's type: its radius, or its angular diameter.
+double appliedSize(const engine::Light& light, int lightInstance, const LightExtent& extent) {
+    const bool directional = light.type == engine::Light::Type::Directional;
+    const double size = directional ? extent.angularDiameter : extent.radius;
+    if (!std::isfinite(size) || size < 0.0) {
+        std::ostringstream message;
+        message << "ray-traced truth: light instance " << lightInstance << " ('" << light.name
+                << "'): " << (directional ? "angular diameter " : "radius ") << size
+                << " is not a size (finite, >= 0)";
+        throw std::invalid_argument(message.str());
+    }
+    return size;
 }
 
 // The world point where the camera ray through window position (x, y) (pixels, top row
@@ -313,9 +436,9 @@ std::vector<std::uint8_t> RayTracedVisibility::visibility(const engine::Scene& s
         [&](std::size_t tile, int lane) {
             const std::ptrdiff_t i = pixelOf(tile, lane);
             if (i < 0 || !surfaces.covered[i]) return RayStart{};
-            const glm::dvec3& p = surfaces.worldPosition[i];
-            return RayStart{RayStart::Kind::Trace,
-                            p + surfaces.worldNormal[i] * rayOffset(p, surfaces.cameraPosition)};
+            return RayStart{RayStart::Kind::Trace, offSurface(*this, surfaces.worldPosition[i],
+                                                              surfaces.worldNormal[i],
+                                                              surfaces.cameraPosition)};
         },
         [&](std::size_t tile, int lane, bool lit) { visible[pixelOf(tile, lane)] = lit ? 1 : 0; });
     return visible;
@@ -341,7 +464,7 @@ std::vector<float> RayTracedVisibility::litFraction(const engine::Scene& scene, 
             const double y = static_cast<double>(i / surfaces.width) + (lane / kTile + 0.5) / kTile;
             const glm::dvec3& n = surfaces.worldNormal[i];
             const glm::dvec3 p = footprintPoint(camera, clipToEye, x, y, surfaces.worldPosition[i], n);
-            return RayStart{RayStart::Kind::Trace, p + n * rayOffset(p, surfaces.cameraPosition)};
+            return RayStart{RayStart::Kind::Trace, offSurface(*this, p, n, surfaces.cameraPosition)};
         },
         [&](std::size_t i, int, bool lit) {
             if (lit) ++litSamples[i];  // a pixel is one packet, traced by one thread
@@ -349,6 +472,47 @@ std::vector<float> RayTracedVisibility::litFraction(const engine::Scene& scene, 
     std::vector<float> fraction(surfaces.pixelCount(), 0.0f);
     for (std::size_t i = 0; i < fraction.size(); ++i)
         fraction[i] = static_cast<float>(litSamples[i]) / (kTile * kTile);
+    return fraction;
+}
+
+std::vector<float> RayTracedVisibility::visibleFraction(const engine::Scene& scene, int lightInstance,
+                                                        const SurfaceBuffer& surfaces,
+                                                        const LightExtent& extent) const {
+    const engine::LightInstance& placed = lightAt(scene, lightInstance);
+    const double size = appliedSize(scene.lights.at(placed.light), lightInstance, extent);
+    if (size == 0.0) {
+        const std::vector<std::uint8_t> visible = visibility(scene, lightInstance, surfaces);
+        return std::vector<float>(visible.begin(), visible.end());  // 0 -> 0.0f, 1 -> 1.0f
+    }
+    const ShadowRayAim aim(scene, placed, size);
+    // One packet = a kTile x kTile block of one pixel's cells: neighbouring cells aim at
+    // neighbouring parts of the light, so a packet's rays stay coherent.
+    static_assert(kLightSamplesPerAxis % kTile == 0, "a pixel's samples fill whole packets");
+    constexpr int kBlocksPerAxis = kLightSamplesPerAxis / kTile;
+    constexpr int kPacketsPerPixel = kBlocksPerAxis * kBlocksPerAxis;
+    std::vector<std::uint8_t> litSamples(surfaces.pixelCount() * kPacketsPerPixel, 0);
+    traceShadowPackets(
+        embree_->scene, origin_, aim, litSamples.size(),
+        [&](std::size_t packet, int lane) {
+            const std::size_t i = packet / kPacketsPerPixel;
+            if (!surfaces.covered[i]) return RayStart{};
+            const int block = static_cast<int>(packet % kPacketsPerPixel);
+            const int cellX = block % kBlocksPerAxis * kTile + lane % kTile;
+            const int cellY = block / kBlocksPerAxis * kTile + lane / kTile;
+            return RayStart{RayStart::Kind::Trace,
+                            offSurface(*this, surfaces.worldPosition[i], surfaces.worldNormal[i],
+                                       surfaces.cameraPosition),
+                            lightSample(cellX, cellY, patternRotation(i))};
+        },
+        [&](std::size_t packet, int, bool lit) {
+            if (lit) ++litSamples[packet];  // a packet is traced by one thread
+        });
+    std::vector<float> fraction(surfaces.pixelCount(), 0.0f);
+    for (std::size_t i = 0; i < fraction.size(); ++i) {
+        const auto pixelPackets = litSamples.begin() + static_cast<std::ptrdiff_t>(i * kPacketsPerPixel);
+        const int lit = std::accumulate(pixelPackets, pixelPackets + kPacketsPerPixel, 0);
+        fraction[i] = static_cast<float>(lit) / (kLightSamplesPerAxis * kLightSamplesPerAxis);
+    }
     return fraction;
 }
 

@@ -25,6 +25,24 @@ namespace engine { struct Scene; }
 
 namespace truth {
 
+// A light's size as the truth samples it (shadowmap settings light_radius / angular_diameter):
+// spot and point lights a disk of `radius` (world units) centred on the light and facing the
+// shaded point; directional lights a cone of full apex angle `angularDiameter` (radians)
+// around the light's direction. Both zero: a point light (today's truth).
+struct LightExtent {
+    double radius = 0.0;
+    double angularDiameter = 0.0;
+    bool isPoint() const { return !(radius > 0.0) && !(angularDiameter > 0.0); }
+};
+
+// Shadow rays per axis of the stratified pattern over a sized light: 8x8 = 64 per covered
+// pixel, in 4 packets of 16, 64 times the binary truth's rays (a 64x48 image of a penumbra
+// traces in about 10 ms on two cores). Against the analytic penumbra of a straight edge
+// (SoftTruthTest) a pixel is off by 0.033 on average and 0.11 at most, without bias (the mean
+// of 48 pixels at one spot is within 0.016): the noise floor under a soft filter's penumbra
+// error, which halves only with 4x the rays.
+constexpr int kLightSamplesPerAxis = 8;
+
 class RayTracedVisibility {
 public:
     // Builds the acceleration structure of all casters of `scene` (world transforms must be
@@ -52,6 +70,21 @@ public:
     // std::invalid_argument for a bad light index or a camera that does not match the pixels.
     std::vector<float> litFraction(const engine::Scene& scene, int lightInstance,
                                    const SurfaceBuffer& surfaces) const;
+
+    // Per pixel of `surfaces`: the fraction in [0,1] of the light's extent visible from the
+    // pixel's surface point (0 where not covered): the visible share of the disk's area or of
+    // the cone's solid angle, unweighted by cosine or distance falloff across the source,
+    // which is what a PCSS filter estimates. kLightSamplesPerAxis^2 shadow rays per covered
+    // pixel, from the ray start of `visibility` to cell centres of a stratified pattern that
+    // each pixel shifts by a hash of its index (Cranley-Patterson rotation, so neighbouring
+    // pixels do not band alike), mapped to the light's unit disk by Shirley's concentric map:
+    // to disk points (spot, point: the disk faces the ray start) or to directions uniform in
+    // solid angle (directional). Only the size of the light's type applies (radius for spot
+    // and point lights, angularDiameter for directional ones); 0 gives exactly `visibility`
+    // as 0 or 1. Throws std::invalid_argument for a bad light index or a negative or
+    // non-finite size that applies.
+    std::vector<float> visibleFraction(const engine::Scene& scene, int lightInstance,
+                                       const SurfaceBuffer& surfaces, const LightExtent& extent) const;
 
     // How far a ray origin is pushed off the surface along its normal, at world point p for a
     // capture made from cameraPosition (see the .cpp for why each term is there).

@@ -1,6 +1,7 @@
 #include "truth/ShadowMetrics.h"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 namespace truth {
@@ -32,6 +33,9 @@ std::vector<std::uint8_t> truthEdges(int width, int height, std::span<const std:
 
 namespace {
 
+// A shade or truth value as the metrics take it: clamped to [0,1], in double.
+double unit(float value) { return std::clamp(static_cast<double>(value), 0.0, 1.0); }
+
 // The metrics with a truth in [0,1] per pixel (the lit fraction): acne is where the shade is
 // darker than the truth, leak where it is brighter. For a binary truth these are exactly the
 // definitions of docs/metrics.md.
@@ -43,8 +47,8 @@ ShadowErrors errorsAgainst(std::size_t count, std::span<const float> litFraction
     ShadowErrors errors;
     for (std::size_t i = 0; i < count; ++i) {
         if (!evaluation[i]) continue;
-        const double s = std::clamp(static_cast<double>(shade[i]), 0.0, 1.0);
-        const double t = std::clamp(static_cast<double>(litFraction[i]), 0.0, 1.0);
+        const double s = unit(shade[i]);
+        const double t = unit(litFraction[i]);
         const double a = std::max(t - s, 0.0);
         const double l = std::max(s - t, 0.0);
         acne += a;
@@ -66,6 +70,22 @@ ShadowErrors errorsAgainst(std::size_t count, std::span<const float> litFraction
         errors.errorNoEdge = errors.acneNoEdge + errors.leakNoEdge;
     }
     return errors;
+}
+
+// The penumbra figures of softShadowErrors into `errors`.
+void addPenumbraErrors(ShadowErrors& errors, std::size_t count, std::span<const float> visibleFraction,
+                       std::span<const float> shade, std::span<const std::uint8_t> evaluation) {
+    auto partial = [](double v) { return v > 0.0 && v < 1.0; };
+    double sum = 0.0;
+    for (std::size_t i = 0; i < count; ++i) {
+        if (!evaluation[i]) continue;
+        const double s = unit(shade[i]);
+        const double t = unit(visibleFraction[i]);
+        if (!partial(t) && !partial(s)) continue;
+        sum += std::abs(t - s);
+        ++errors.evaluatedPenumbra;
+    }
+    if (errors.evaluatedPenumbra > 0) errors.penumbraError = sum / errors.evaluatedPenumbra;
 }
 
 } // namespace
@@ -92,6 +112,22 @@ ShadowErrors areaShadowErrors(int width, int height, std::span<const float> litF
         throw std::invalid_argument("areaShadowErrors: image sizes differ from width*height");
     return errorsAgainst(count, litFraction, shade, evaluation,
                          truthEdges(width, height, truth, covered));
+}
+
+ShadowErrors softShadowErrors(int width, int height, std::span<const float> visibleFraction,
+                              std::span<const float> shade, std::span<const std::uint8_t> evaluation,
+                              std::span<const std::uint8_t> covered) {
+    const std::size_t count = static_cast<std::size_t>(width) * height;
+    if (visibleFraction.size() != count || shade.size() != count || evaluation.size() != count)
+        throw std::invalid_argument("softShadowErrors: image sizes differ from width*height");
+    // The edges of the shadow as a hard filter would draw it: lit where most of the light is.
+    std::vector<std::uint8_t> binarised(count);
+    std::transform(visibleFraction.begin(), visibleFraction.end(), binarised.begin(),
+                   [](float t) { return t >= 0.5f ? 1 : 0; });
+    ShadowErrors errors = errorsAgainst(count, visibleFraction, shade, evaluation,
+                                        truthEdges(width, height, binarised, covered));
+    addPenumbraErrors(errors, count, visibleFraction, shade, evaluation);
+    return errors;
 }
 
 std::vector<float> shadeFromMask8(std::span<const std::uint8_t> mask) {

@@ -19,6 +19,10 @@ struct ShadowErrors {
     double acneNoEdge = 0.0, leakNoEdge = 0.0, errorNoEdge = 0.0;
     std::size_t evaluated = 0;        // |E|
     std::size_t evaluatedNoEdge = 0;  // |E minus edge pixels|
+    // Against a fractional truth (softShadowErrors): the mean |t - s| over the penumbra, the
+    // pixels of E where truth or shade lies strictly between 0 and 1; 0 / 0 otherwise.
+    double penumbraError = 0.0;
+    std::size_t evaluatedPenumbra = 0;
 };
 
 // All images are width*height, rows in the same order (top first as captured):
@@ -40,6 +44,16 @@ ShadowErrors shadowErrors(int width, int height, std::span<const std::uint8_t> t
 ShadowErrors areaShadowErrors(int width, int height, std::span<const float> litFraction,
                               std::span<const std::uint8_t> truth, std::span<const float> shade,
                               std::span<const std::uint8_t> evaluation,
+                              std::span<const std::uint8_t> covered);
+
+// The metrics against the truth of a light with a size (RayTracedVisibility::visibleFraction:
+// the visible fraction t of the light from each pixel's surface point), the truth a soft
+// filter (PCSS) approximates: acne and leak as in areaShadowErrors (error = mean |t - s| over
+// E), "NoEdge" leaving out the pixels next to an edge of the binarised truth (t >= 0.5 lit),
+// and the penumbra figures: E where t or s is strictly between 0 and 1 (after clamping s;
+// an 8-bit mask's shade comes in steps of 1/255), where a soft shadow's quality shows.
+ShadowErrors softShadowErrors(int width, int height, std::span<const float> visibleFraction,
+                              std::span<const float> shade, std::span<const std::uint8_t> evaluation,
                               std::span<const std::uint8_t> covered);
 
 // An 8-bit shadow mask (engine-render --shadow-mask: 255 = lit, 0 = shadowed) as shade.

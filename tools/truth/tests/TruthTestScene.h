@@ -9,6 +9,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <cmath>
+#include <string>
 
 namespace truth::test {
 
@@ -50,17 +51,22 @@ inline engine::Mesh makeBox(const glm::vec3& center, float halfSize) {
     return mesh;
 }
 
-inline engine::Mesh makePlane(float halfSize) {
-    engine::Primitive plane;
-    plane.positions = {{-halfSize, 0, -halfSize}, {-halfSize, 0, halfSize},
-                       {halfSize, 0, halfSize}, {halfSize, 0, -halfSize}};
-    plane.normals.assign(4, glm::vec3(0, 1, 0));
-    plane.indices = {0, 1, 2, 0, 2, 3};  // counter-clockwise seen from +y
+// The rectangle x in [x0, x1], z in [z0, z1] of the horizontal plane at height y, facing +y.
+inline engine::Mesh makeHorizontalRectangle(const std::string& name, float x0, float x1, float z0,
+                                            float z1, float y = 0.0f) {
+    engine::Primitive rectangle;
+    rectangle.positions = {{x0, y, z0}, {x0, y, z1}, {x1, y, z1}, {x1, y, z0}};
+    rectangle.normals.assign(4, glm::vec3(0, 1, 0));
+    rectangle.indices = {0, 1, 2, 0, 2, 3};  // counter-clockwise seen from +y
     engine::Mesh mesh;
-    mesh.name = "plane";
-    mesh.primitives.push_back(finishPrimitive(std::move(plane)));
+    mesh.name = name;
+    mesh.primitives.push_back(finishPrimitive(std::move(rectangle)));
     mesh.bounds = mesh.primitives[0].bounds;
     return mesh;
+}
+
+inline engine::Mesh makePlane(float halfSize) {
+    return makeHorizontalRectangle("plane", -halfSize, halfSize, -halfSize, halfSize);
 }
 
 // L (light -> world) for a light at `position` shining along `direction` (lights shine
