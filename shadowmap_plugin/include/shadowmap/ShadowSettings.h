@@ -19,6 +19,10 @@
 //   resolution      1 .. GL_MAX_TEXTURE_SIZE (texels/side)     2048
 //   depth_format    "d16" | "d24" | "d32f"                     "d24"
 //   filter          "nearest" (1 tap) | "pcf" (2x2 bilinear)   "pcf"
+//                   | "pcss" (percentage-closer soft shadows from the light's size: a blocker
+//                   search, then a filter as wide as the penumbra; needs a light size)
+//   filter_taps     4 .. 64: pcss's filter taps (each a 2x2      16
+//                   bilinear comparison); its blocker search takes half as many
 //   polygon_offset  [factor, units] of the depth pass           standard: [1.0, 8.0]
 //                                                              nearest, [2.0, 8.0] pcf;
 //                                                              woo, backface: none
@@ -84,6 +88,14 @@
 //   stable          true: each cascade a texel-snapped square    true
 //                   around its slice's bounding sphere, so a moving camera moves shadows
 //                   in whole texels (costs up to 2x the texel size of a fitted cascade)
+// A light's size (soft shadows; the truth samples the whole light):
+//   light_radius    >= 0, world units: a spot or point light is   0 (a point)
+//                   a disk of this radius facing the shaded point
+//   angular_diameter >= 0, radians: a directional light is a      0 (a direction)
+//                   cone of this apex angle (the sun: about 0.0093)
+// Set per light, a size on the other type of light is an error naming light and key; set in
+// the plugin's defaults, each applies to the lights of its type. A hard filter (nearest,
+// pcf) keeps a sized light's hard shadow: the evaluation scores it against the soft truth.
 // Biases are in depth-format units and texels, never world units: polygon_offset units are
 // steps of the format (d16, d24: 1/(2^bits - 1); d32f: 2^(e-23) of the depth e); factor
 // multiplies the depth slope per texel. d32f without reversed_z: the comparison's reference
@@ -93,6 +105,8 @@
 // their bias.
 #include <glm/glm.hpp>
 #include "shadowmap/ShadowLimits.h"
+
+#include "engine/scene/Scene.h"
 
 #include <nlohmann/json.hpp>
 
@@ -105,7 +119,7 @@ namespace shadowmap {
 
 enum class Variant { Standard, Woo, Backface, None };
 enum class DepthFormat { D16, D24, D32F };
-enum class Filter { Nearest, Pcf };
+enum class Filter { Nearest, Pcf, Pcss };
 
 // The names the JSON uses ("standard", "d24", "pcf").
 const char* toString(Variant);
@@ -131,6 +145,7 @@ struct ShadowSettings {
     DepthFormat depthFormat = DepthFormat::D24;
     Filter filter = Filter::Pcf;
     std::optional<glm::vec2> polygonOffset;  // unset: the variant's default
+    int filterTaps = 16;
 
     // The offset a two-sided depth draw needs: the explicit one, else the standard
     // variant's default for this filter and depth direction.
@@ -151,6 +166,15 @@ struct ShadowSettings {
     double cascadeLambda = 0.75;
     double cascadeBlend = 0.0;
     bool stable = true;
+    // The light's size (see the table above): what the area truth samples and what a
+    // soft filter spreads the shadow by. Each applies to its light types only.
+    double lightRadius = 0.0;      // spot and point lights, world units
+    double angularDiameter = 0.0;  // directional lights, radians
+
+    // The size that applies to a light of `type`: its radius, or its angular diameter.
+    double lightSize(engine::Light::Type type) const {
+        return type == engine::Light::Type::Directional ? angularDiameter : lightRadius;
+    }
 
     bool operator==(const ShadowSettings&) const = default;
 };
@@ -168,10 +192,23 @@ ShadowSettings parseSettings(const nlohmann::json& json, const std::string& sour
 
 Variant parseVariant(const std::string& text, const std::string& source, const std::string& object);
 
+// The taps filter_taps accepts.
+inline constexpr int kMinFilterTaps = 4, kMaxFilterTaps = 64;
+
 // Checks what depends on the GL implementation (the resolution limit) and on keys combined
 // from several sources (reversed_z needs d32f; near_plane < far_plane).
 void checkLimits(const ShadowSettings& settings, int maxTextureSize, const std::string& source,
                  const std::string& object);
+
+// A light's own settings JSON (extras.shadow, the command line's) may only size it the way
+// its type is sized: light_radius on a directional light, or angular_diameter on a spot or
+// point light, throws InputError "source: object.key: reason".
+void checkSizeKeyForType(const nlohmann::json& json, engine::Light::Type type, const std::string& source,
+                         const std::string& object);
+// A soft filter (pcss) needs the light to have a size: without one it would be a hard shadow
+// no one asked for. InputError "source: object.filter: reason" naming the key to set.
+void checkFilterForType(const ShadowSettings& settings, engine::Light::Type type, const std::string& source,
+                        const std::string& object);
 
 // ---- Writing -----------------------------------------------------------------------------
 

@@ -30,8 +30,10 @@ std::vector<LightShadow> resolveLights(const engine::Scene& scene, const ShadowS
         shadow.type = light.type;
         shadow.settings = defaults;
         const std::string object = "light \"" + shadow.name + "\"";
-        if (light.extras.is_object() && light.extras.contains("shadow"))
+        if (light.extras.is_object() && light.extras.contains("shadow")) {
             applySettings(shadow.settings, light.extras["shadow"], source, object + ": extras.shadow");
+            checkSizeKeyForType(light.extras["shadow"], light.type, source, object + ": extras.shadow");
+        }
         // KHR_lights_shadows "castShadows": false: the file says this light casts no shadow,
         // and that wins over our extras (only the command line's variant overrides it).
         if (!light.castShadows) {
@@ -43,9 +45,13 @@ std::vector<LightShadow> resolveLights(const engine::Scene& scene, const ShadowS
         }
         // The command line's per-light settings come last: they win over everything.
         const auto options = lightOptions.find(shadow.name);
-        if (options != lightOptions.end()) applySettings(shadow.settings, options->second, "", object);
-        checkLimits(shadow.settings, maxTextureSize, source,
-                    options == lightOptions.end() ? object + ": extras.shadow" : object);
+        if (options != lightOptions.end()) {
+            applySettings(shadow.settings, options->second, "", object);
+            checkSizeKeyForType(options->second, light.type, "", object);
+        }
+        const std::string checked = options == lightOptions.end() ? object + ": extras.shadow" : object;
+        checkLimits(shadow.settings, maxTextureSize, source, checked);
+        checkFilterForType(shadow.settings, light.type, source, checked);
         lights.push_back(std::move(shadow));
     }
     return lights;

@@ -5,6 +5,6 @@ namespace shadowmap::names {
 
 inline constexpr const char* kVariants[] = {"standard", "woo", "backface", "none"};
 inline constexpr const char* kDepthFormats[] = {"d16", "d24", "d32f"};
-inline constexpr const char* kFilters[] = {"nearest", "pcf"};
+inline constexpr const char* kFilters[] = {"nearest", "pcf", "pcss"};
 
 } // namespace shadowmap::names

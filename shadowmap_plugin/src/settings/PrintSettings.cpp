@@ -19,6 +19,7 @@ nlohmann::json printSettings(const ShadowSettings& settings) {
                           {"resolution", settings.resolution},
                           {"depth_format", toString(settings.depthFormat)},
                           {"filter", toString(settings.filter)},
+                          {"filter_taps", settings.filterTaps},
                           {"dimming", jsonNumber(settings.dimming)},
                           {"reversed_z", settings.reversedZ},
                           {"polygon_offset_clamp", jsonNumber(settings.polygonOffsetClamp)},
@@ -26,7 +27,9 @@ nlohmann::json printSettings(const ShadowSettings& settings) {
                                                                           : nlohmann::json(settings.cascades)},
                           {"cascade_lambda", settings.cascadeLambda},
                           {"cascade_blend", settings.cascadeBlend},
-                          {"stable", settings.stable}};
+                          {"stable", settings.stable},
+                          {"light_radius", settings.lightRadius},
+                          {"angular_diameter", settings.angularDiameter}};
     if (settings.polygonOffset)
         out["polygon_offset"] = {jsonNumber(settings.polygonOffset->x), jsonNumber(settings.polygonOffset->y)};
     // 0 stands for "fitted", which applySettings() does not accept as a distance.

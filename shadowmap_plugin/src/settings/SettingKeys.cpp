@@ -30,7 +30,8 @@ std::string defaultOffsetNote() {
     const glm::vec2 pcf = defaultPolygonOffset(Variant::Standard, Filter::Pcf, false);
     const glm::vec2 reversed = defaultPolygonOffset(Variant::Standard, Filter::Pcf, true);
     std::string note = "standard: ";
-    note += pair(nearest) + " " + toString(Filter::Nearest) + ", " + pair(pcf) + " " + toString(Filter::Pcf);
+    note += pair(nearest) + " " + toString(Filter::Nearest) + ", " + pair(pcf) + " " + toString(Filter::Pcf) + " and " +
+            toString(Filter::Pcss);
     note += ", units " + engine::formatNumber(reversed.y) + " with reversed_z; ";
     note += std::string(toString(Variant::Woo)) + ", " + toString(Variant::Backface) + ": none";
     return note;
@@ -68,8 +69,19 @@ std::vector<SettingKey> makeKeys() {
 
     SettingKey filter = makeKey("filter", SettingKind::Choice);
     filter.choices = choicesOf(names::kFilters);
-    filter.description = "`nearest` one tap, `pcf` 2×2 bilinear percentage-closer filtering";
+    filter.description = "`nearest` one tap, `pcf` 2×2 bilinear percentage-closer filtering, `pcss` "
+                         "percentage-closer soft shadows: a penumbra as wide as the light's size makes it "
+                         "(needs `light_radius` or `angular_diameter`)";
     keys.push_back(filter);
+
+    SettingKey taps = makeKey("filter_taps", SettingKind::Integer);
+    taps.minimum = kMinFilterTaps;
+    taps.maximum = kMaxFilterTaps;
+    taps.steps = {8, 16, 32, 64};
+    taps.values = std::to_string(kMinFilterTaps) + " … " + std::to_string(kMaxFilterTaps);
+    taps.description = "`pcss`: the filter's taps, each a 2×2 bilinear comparison; the blocker search takes half "
+                       "as many";
+    keys.push_back(taps);
 
     SettingKey offset = makeKey("polygon_offset", SettingKind::NumberPair);
     offset.values = "`[factor, units]`";
@@ -143,6 +155,20 @@ std::vector<SettingKey> makeKeys() {
     stable.description = "cascades snapped to whole texels in squares of fixed size, so shadows do not "
                          "crawl while the camera moves";
     keys.push_back(stable);
+
+    SettingKey radius = makeKey("light_radius", SettingKind::Number);
+    radius.minimum = 0;
+    radius.values = "≥ 0, world units";
+    radius.description = "spot and point lights: the radius of the disk that emits the light (0: a point); "
+                         "the area truth samples it";
+    keys.push_back(radius);
+
+    SettingKey angular = makeKey("angular_diameter", SettingKind::Number);
+    angular.minimum = 0;
+    angular.values = "≥ 0, radians";
+    angular.description = "directional lights: the apex angle of the cone the light comes from (the sun: "
+                          "about 0.0093; 0: one direction); the area truth samples it";
+    keys.push_back(angular);
 
     const nlohmann::json defaults = printSettings(ShadowSettings{});
     for (SettingKey& key : keys) {

@@ -41,7 +41,8 @@ const char* toString(Filter filter) { return names::kFilters[static_cast<int>(fi
 
 glm::vec2 defaultPolygonOffset(Variant variant, Filter filter, bool reversedZ) {
     if (variant != Variant::Standard) return glm::vec2(0.0f);
-    return glm::vec2(filter == Filter::Pcf ? 2.0f : 1.0f, reversedZ ? 128.0f : 8.0f);
+    // pcss's taps are 2x2 bilinear comparisons, like pcf's one tap.
+    return glm::vec2(filter == Filter::Nearest ? 1.0f : 2.0f, reversedZ ? 128.0f : 8.0f);
 }
 
 Variant parseVariant(const std::string& text, const std::string& source, const std::string& object) {
@@ -78,6 +79,14 @@ void applySettings(ShadowSettings& settings, const nlohmann::json& json, const s
         settings.filter =
             parseEnum<Filter>(json_read::readString(json["filter"], source, key("filter")),
                               names::kFilters, "filter", source, key("filter"));
+    if (json.contains("filter_taps")) {
+        const double taps = json_read::readNumber(json["filter_taps"], source, key("filter_taps"));
+        if (taps < kMinFilterTaps || taps > kMaxFilterTaps || taps != std::floor(taps))
+            engine::throwInputError(source, key("filter_taps"),
+                                    "must be a whole number in [" + std::to_string(kMinFilterTaps) + ", " +
+                                        std::to_string(kMaxFilterTaps) + "], got " + json["filter_taps"].dump());
+        settings.filterTaps = static_cast<int>(taps);
+    }
     if (json.contains("polygon_offset")) {
         const auto& offset = json["polygon_offset"];
         if (!offset.is_array() || offset.size() != 2)
@@ -155,6 +164,37 @@ void applySettings(ShadowSettings& settings, const nlohmann::json& json, const s
         settings.cascadeLambda = lambda;
     }
     if (json.contains("stable")) settings.stable = json_read::readBool(json["stable"], source, key("stable"));
+    const auto readSize = [&](const char* name, const char* unit) {
+        const double size = json_read::readNumber(json[name], source, key(name));
+        if (size < 0.0)
+            engine::throwInputError(source, key(name),
+                                    std::string("must be >= 0 ") + unit + " (0: no size), got " + json[name].dump());
+        return size;
+    };
+    if (json.contains("light_radius")) settings.lightRadius = readSize("light_radius", "world units");
+    if (json.contains("angular_diameter")) settings.angularDiameter = readSize("angular_diameter", "radians");
+}
+
+void checkSizeKeyForType(const nlohmann::json& json, engine::Light::Type type, const std::string& source,
+                         const std::string& object) {
+    const bool directional = type == engine::Light::Type::Directional;
+    const char* wrongKey = directional ? "light_radius" : "angular_diameter";
+    if (json.is_object() && json.contains(wrongKey))
+        engine::throwInputError(source, object + "." + wrongKey,
+                                directional ? "a directional light has no radius: size it with angular_diameter"
+                                            : "a spot or point light has no angular diameter: size it with "
+                                              "light_radius");
+}
+
+void checkFilterForType(const ShadowSettings& settings, engine::Light::Type type, const std::string& source,
+                        const std::string& object) {
+    if (settings.variant == Variant::None || settings.filter != Filter::Pcss || settings.lightSize(type) > 0.0) return;
+    const bool directional = type == engine::Light::Type::Directional;
+    engine::throwInputError(source, object + ".filter",
+                            std::string("\"pcss\" softens the shadow by the light's size, and this light has none: "
+                                        "set ") +
+                                (directional ? "angular_diameter (the sun: about 0.0093)" : "light_radius") +
+                                ", or use filter \"pcf\"");
 }
 
 ShadowSettings parseSettings(const nlohmann::json& json, const std::string& source, const std::string& object) {

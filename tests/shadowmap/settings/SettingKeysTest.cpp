@@ -28,7 +28,7 @@ TEST(SettingKeys, EveryChoiceParsesAndPrintsBackTheSame) {
     EXPECT_EQ(shadowmap::settingKey("variant").choices,
               (std::vector<std::string>{"standard", "woo", "backface", "none"}));
     EXPECT_EQ(shadowmap::settingKey("depth_format").choices, (std::vector<std::string>{"d16", "d24", "d32f"}));
-    EXPECT_EQ(shadowmap::settingKey("filter").choices, (std::vector<std::string>{"nearest", "pcf"}));
+    EXPECT_EQ(shadowmap::settingKey("filter").choices, (std::vector<std::string>{"nearest", "pcf", "pcss"}));
 }
 
 TEST(SettingKeys, DefaultsAreTheDefaults) {
@@ -47,7 +47,7 @@ TEST(SettingKeys, DefaultsAreTheDefaults) {
         }
     }
     EXPECT_EQ(shadowmap::settingKey("polygon_offset").defaultNote,
-              "standard: [1, 8] nearest, [2, 8] pcf, units 128 with reversed_z; woo, backface: none");
+              "standard: [1, 8] nearest, [2, 8] pcf and pcss, units 128 with reversed_z; woo, backface: none");
 }
 
 TEST(SettingKeys, BoundsAndStepsAreWhatParsingAccepts) {

@@ -51,8 +51,9 @@ const double kInfinity = std::numeric_limits<double>::infinity();
 TEST(ShadowSettingsErrors, UnknownKeyListsTheKnownOnes) {
     std::string known;
     for (const shadowmap::SettingKey& key : shadowmap::settingKeys()) known += (known.empty() ? "" : ", ") + key.name;
-    EXPECT_EQ(known, "variant, resolution, depth_format, filter, polygon_offset, dimming, near_plane, far_plane, "
-                     "reversed_z, polygon_offset_clamp, cascades, cascade_lambda, cascade_blend, stable");
+    EXPECT_EQ(known, "variant, resolution, depth_format, filter, filter_taps, polygon_offset, dimming, near_plane, far_plane, "
+                     "reversed_z, polygon_offset_clamp, cascades, cascade_lambda, cascade_blend, stable, "
+                     "light_radius, angular_diameter");
     expectNamed({"unknown key", {{"colour", "red"}}, "colour", "unknown key (known: " + known + ")"});
 }
 
@@ -74,7 +75,7 @@ TEST(ShadowSettingsErrors, BadChoicesNameTheKnownValues) {
     expectNamed({"variant type", {{"variant", 3}}, "variant", "must be a string"});
     expectNamed({"depth format", {{"depth_format", "d32"}}, "depth_format",
                  "unknown depth format \"d32\" (known: d16, d24, d32f)"});
-    expectNamed({"filter", {{"filter", "linear"}}, "filter", "unknown filter \"linear\" (known: nearest, pcf)"});
+    expectNamed({"filter", {{"filter", "linear"}}, "filter", "unknown filter \"linear\" (known: nearest, pcf, pcss)"});
     expectNamed({"reversed_z type", {{"reversed_z", "yes"}}, "reversed_z", "must be true or false"});
 }
 
@@ -96,6 +97,72 @@ TEST(ShadowSettingsErrors, BadNumbersSayWhatIsAccepted) {
     expectNamed({"far_plane -2", {{"far_plane", -2}}, "far_plane", "must be a distance > 0 or \"infinite\", got -2"});
     expectNamed({"clamp -1", {{"polygon_offset_clamp", -1}}, "polygon_offset_clamp",
                  "must be a slope >= 0 (0: unclamped), got -1"});
+}
+
+TEST(ShadowSettingsErrors, ALightsSizeIsAFiniteNumberNotBelowZero) {
+    expectNamed({"radius -1", {{"light_radius", -1}}, "light_radius", "must be >= 0 world units (0: no size), got -1"});
+    expectNamed({"radius NaN", {{"light_radius", kNaN}}, "light_radius", "must be finite"});
+    expectNamed({"radius text", {{"light_radius", "big"}}, "light_radius", "must be a number"});
+    expectNamed({"angle -0.01", {{"angular_diameter", -0.01}}, "angular_diameter",
+                 "must be >= 0 radians (0: no size), got -0.01"});
+    expectNamed({"angle infinite", {{"angular_diameter", kInfinity}}, "angular_diameter", "must be finite"});
+    EXPECT_EQ(errorOf({{"light_radius", 0}, {"angular_diameter", 0.0093}}), "no error");
+}
+
+// The size key of the other type of light, set on the light itself: an error naming the key,
+// whichever type; the type's own key passes.
+TEST(ShadowSettingsErrors, ASizeOnTheWrongTypeOfLightIsNamed) {
+    using Type = engine::Light::Type;
+    auto messageFor = [](const nlohmann::json& json, Type type) -> std::string {
+        try {
+            shadowmap::checkSizeKeyForType(json, type, kSource, kObject);
+        } catch (const engine::InputError& error) {
+            return error.what();
+        }
+        return "no error";
+    };
+    EXPECT_EQ(messageFor({{"light_radius", 0.5}}, Type::Directional),
+              std::string(kSource) + ": " + kObject +
+                  ".light_radius: a directional light has no radius: size it with angular_diameter");
+    for (Type type : {Type::Spot, Type::Point})
+        EXPECT_EQ(messageFor({{"angular_diameter", 0.01}}, type),
+                  std::string(kSource) + ": " + kObject +
+                      ".angular_diameter: a spot or point light has no angular diameter: size it with light_radius");
+    EXPECT_EQ(messageFor({{"angular_diameter", 0.01}}, Type::Directional), "no error");
+    EXPECT_EQ(messageFor({{"light_radius", 0.5}}, Type::Spot), "no error");
+    EXPECT_EQ(messageFor({{"light_radius", 0.5}}, Type::Point), "no error");
+}
+
+TEST(ShadowSettingsErrors, FilterTapsAreAWholeNumberInRange) {
+    const std::string expected = "must be a whole number in [4, 64], got ";
+    expectNamed({"taps 3", {{"filter_taps", 3}}, "filter_taps", expected + "3"});
+    expectNamed({"taps 65", {{"filter_taps", 65}}, "filter_taps", expected + "65"});
+    expectNamed({"taps 8.5", {{"filter_taps", 8.5}}, "filter_taps", expected + "8.5"});
+    expectNamed({"taps NaN", {{"filter_taps", kNaN}}, "filter_taps", "must be finite"});
+}
+
+// pcss without a size would silently be a hard shadow: an error naming the key to set, for
+// the light's own type; a light without a shadow needs no size.
+TEST(ShadowSettingsErrors, PcssOnALightWithoutASizeIsNamed) {
+    using Type = engine::Light::Type;
+    auto messageFor = [](const nlohmann::json& json, Type type) -> std::string {
+        try {
+            shadowmap::checkFilterForType(shadowmap::parseSettings(json, kSource, kObject), type, kSource, kObject);
+        } catch (const engine::InputError& error) {
+            return error.what();
+        }
+        return "no error";
+    };
+    const std::string prefix = std::string(kSource) + ": " + kObject + ".filter: \"pcss\" softens the shadow by the "
+                                                                      "light's size, and this light has none: set ";
+    EXPECT_EQ(messageFor({{"filter", "pcss"}}, Type::Spot), prefix + "light_radius, or use filter \"pcf\"");
+    EXPECT_EQ(messageFor({{"filter", "pcss"}}, Type::Directional),
+              prefix + "angular_diameter (the sun: about 0.0093), or use filter \"pcf\"");
+    // The other type's size does not count.
+    EXPECT_NE(messageFor({{"filter", "pcss"}, {"angular_diameter", 0.01}}, Type::Point), "no error");
+    EXPECT_EQ(messageFor({{"filter", "pcss"}, {"light_radius", 0.1}}, Type::Point), "no error");
+    EXPECT_EQ(messageFor({{"filter", "pcss"}, {"angular_diameter", 0.01}}, Type::Directional), "no error");
+    EXPECT_EQ(messageFor({{"filter", "pcss"}, {"variant", "none"}}, Type::Spot), "no error");
 }
 
 TEST(ShadowSettingsErrors, PolygonOffsetIsTwoFiniteNumbers) {

@@ -31,6 +31,7 @@ std::vector<KeyChange> oneChangePerKey() {
         {"resolution", [](ShadowSettings& s) { s.resolution = 777; }},
         {"depth_format", [](ShadowSettings& s) { s.depthFormat = shadowmap::DepthFormat::D32F; }},
         {"filter", [](ShadowSettings& s) { s.filter = shadowmap::Filter::Nearest; }},
+        {"filter_taps", [](ShadowSettings& s) { s.filterTaps = 40; }},
         {"polygon_offset", [](ShadowSettings& s) { s.polygonOffset = glm::vec2(1.1f, 4.3f); }},
         {"dimming", [](ShadowSettings& s) { s.dimming = 0.73f; }},
         {"near_plane", [](ShadowSettings& s) { s.nearPlane = 0.1; }},
@@ -41,6 +42,8 @@ std::vector<KeyChange> oneChangePerKey() {
         {"cascade_lambda", [](ShadowSettings& s) { s.cascadeLambda = 0.3; }},
         {"cascade_blend", [](ShadowSettings& s) { s.cascadeBlend = 0.25; }},
         {"stable", [](ShadowSettings& s) { s.stable = false; }},
+        {"light_radius", [](ShadowSettings& s) { s.lightRadius = 0.35; }},
+        {"angular_diameter", [](ShadowSettings& s) { s.angularDiameter = 0.0093; }},
     };
 }
 
@@ -56,12 +59,13 @@ TEST(ShadowSettingsRoundTrip, EveryKeyHasAChangeBelow) {
 
 TEST(ShadowSettingsRoundTrip, DefaultsPrintAsDocumented) {
     // README's table and DESIGN.md: standard, 2048, d24, pcf, dimming 0.4; no forced
-    // planes, no explicit offset, no reversal, no clamp.
+    // planes, no explicit offset, no reversal, no clamp, a light without a size.
     const nlohmann::json expected = {{"variant", "standard"}, {"resolution", 2048}, {"depth_format", "d24"},
-                                     {"filter", "pcf"},       {"dimming", 0.4},     {"reversed_z", false},
+                                     {"filter", "pcf"},       {"filter_taps", 16},      {"dimming", 0.4},     {"reversed_z", false},
                                      {"polygon_offset_clamp", 0.0}, {"cascades", "auto"},
                                      {"cascade_lambda", 0.75},     {"cascade_blend", 0.0},
-                                     {"stable", true}};
+                                     {"stable", true},             {"light_radius", 0.0},
+                                     {"angular_diameter", 0.0}};
     EXPECT_EQ(shadowmap::printSettings(ShadowSettings{}), expected);
     EXPECT_EQ(roundTrip(ShadowSettings{}), ShadowSettings{});
     // The float 0.4 prints as the decimal it was written as, not 0.4000000059604645.
@@ -119,6 +123,8 @@ TEST(ShadowSettingsDefaults, PolygonOffsetFollowsVariantFilterAndDepthDirection)
     // tap and 2 for PCF; woo, backface and none draw without an offset.
     EXPECT_EQ(shadowmap::defaultPolygonOffset(Variant::Standard, Filter::Nearest, false), glm::vec2(1.0f, 8.0f));
     EXPECT_EQ(shadowmap::defaultPolygonOffset(Variant::Standard, Filter::Pcf, false), glm::vec2(2.0f, 8.0f));
+    // pcss's taps are 2x2 bilinear comparisons: pcf's offset.
+    EXPECT_EQ(shadowmap::defaultPolygonOffset(Variant::Standard, Filter::Pcss, false), glm::vec2(2.0f, 8.0f));
     EXPECT_EQ(shadowmap::defaultPolygonOffset(Variant::Standard, Filter::Pcf, true), glm::vec2(2.0f, 128.0f));
     for (Variant variant : {Variant::Woo, Variant::Backface, Variant::None})
         EXPECT_EQ(shadowmap::defaultPolygonOffset(variant, Filter::Pcf, false), glm::vec2(0.0f));

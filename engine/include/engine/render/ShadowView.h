@@ -35,6 +35,10 @@ struct ShadowView {
     // and to read (the shadow plugin's shadowmap/ShadowViewSettings.h: usedSettings), so
     // tools need not know its keys and values.
     nlohmann::json settings = nlohmann::json::object();
+    // The size of the light the shadow was made for: a truth that scores the shadow samples
+    // a light this size. Only the one of the light's type is set; 0: a point, one direction.
+    double lightRadius = 0.0;      // spot and point lights: the emitting disk's radius, world units
+    double angularDiameter = 0.0;  // directional lights: the cone's apex angle, radians
     // The map this frame; without one, skipReason says why (variant none, nothing in view...).
     bool hasMap = false;
     std::string skipReason;
