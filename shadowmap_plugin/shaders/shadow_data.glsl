@@ -22,6 +22,14 @@
 //   cascadeBlend  x: cascade_blend (the band past each split, as a fraction of the nearer
 //               cascade's depth range, where the lookup fades into the next cascade; 0: none),
 //               y: the near view depth of cascade 0
+//   softLayers  per light and layer [slot * MAX_CASCADES + layer] (2D and cube maps: layer 0),
+//               for soft filters (pcss): xy: the light's size in map coordinates per unit
+//               of spread, 0.5 * P[0][0] and 0.5 * P[1][1] of the layer's projection times
+//               the light radius (perspective) or tan(angular_diameter / 2) (orthographic);
+//               z: near (perspective) or 0; w: far (perspective, 0 = infinite) or the depth
+//               range far - near (orthographic); all 0 for a light without a size
+//   softParams  x: 1 = perspective (spot, point), 0 = orthographic (directional); y: the
+//               blocker search's taps; z: the filter's taps; w: the map's texels per side
 layout(std140, binding = SHADOW_BLOCK_BINDING) uniform ShadowData {
     mat4 eyePlanes[MAX_LIGHTS];
     vec4 params[MAX_LIGHTS];
@@ -31,4 +39,6 @@ layout(std140, binding = SHADOW_BLOCK_BINDING) uniform ShadowData {
     mat4 cascadePlanes[MAX_LIGHTS * MAX_CASCADES];
     vec4 cascadeFar[MAX_LIGHTS];
     vec4 cascadeBlend[MAX_LIGHTS];
+    vec4 softLayers[MAX_LIGHTS * MAX_CASCADES];
+    vec4 softParams[MAX_LIGHTS];
 } shadowData;

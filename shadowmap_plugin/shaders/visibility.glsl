@@ -12,7 +12,9 @@
 //   beyond the far plane: compared at r = 1, i.e. behind everything the map holds.
 // A template: HookGlsl.cpp writes it once per lookup in use (technique/MapLookup.h), with
 // $LOOKUP replaced by the lookup's GLSL name, after that lookup's own file (shaders/lookup/),
-// which defines $LOOKUP2D, $LOOKUPArray and $LOOKUPCube. The plugin generates, after these,
+// which defines $LOOKUP2D, $LOOKUPArray and $LOOKUPCube, and $SAMPLER2D, $SAMPLERARRAY,
+// $SAMPLERCUBE by the sampler types it reads (comparing ones, or plain ones for a lookup that
+// compares depths itself). The plugin generates, after these,
 // one sampler and one interpolated input per shadowed light (texture unit
 // SHADOW_FIRST_UNIT + its slot) and lightVisibility() calling the functions below with
 // constant slots: only the lookups a frame needs exist in the shader. (A generic version
@@ -31,11 +33,11 @@
 // Reversed Z flips the depth range: nearer than near is r > 1, beyond far is r < 0, and
 // "behind everything the map holds" is r = 0.
 // coord: (s,t,r,q) from the vertex part (texgen.glsl).
-float shadowMap2D_$LOOKUP(int slot, vec4 coord, sampler2DShadow map) {
+float shadowMap2D_$LOOKUP(int slot, vec4 coord, $SAMPLER2D map) {
     vec3 p = coord.xyz / coord.w;
     bool reversed = shadowData.params[slot].x > 0.5;
     float reference = p.z - shadowData.params[slot].y;
-    float shade = $LOOKUP2D(map, p.xy, reversed ? max(reference, 0.0) : min(reference, 1.0));
+    float shade = $LOOKUP2D(slot, map, p.xy, reversed ? max(reference, 0.0) : min(reference, 1.0));
     bool outside = any(lessThan(p.xy, vec2(0.0))) || any(greaterThan(p.xy, vec2(1.0)));
     shade = outside ? shadowData.params[slot].w : shade;
     shade = (reversed ? p.z > 1.0 : p.z < 0.0) ? 1.0 : shade;
@@ -43,11 +45,11 @@ float shadowMap2D_$LOOKUP(int slot, vec4 coord, sampler2DShadow map) {
 }
 
 // One cascade's lookup (as shadowMap2D, orthographic: q = 1, never behind the light).
-float cascadeShade_$LOOKUP(int slot, vec3 eyePosition, sampler2DArrayShadow map, int cascade) {
+float cascadeShade_$LOOKUP(int slot, vec3 eyePosition, $SAMPLERARRAY map, int cascade) {
     vec3 p = cascadeCoordinates(slot, eyePosition, cascade);
     bool reversed = shadowData.params[slot].x > 0.5;
     float reference = p.z - shadowData.params[slot].y;
-    float shade = $LOOKUPArray(map, p.xy, cascade, reversed ? max(reference, 0.0) : min(reference, 1.0));
+    float shade = $LOOKUPArray(slot, map, p.xy, cascade, reversed ? max(reference, 0.0) : min(reference, 1.0));
     bool outside = any(lessThan(p.xy, vec2(0.0))) || any(greaterThan(p.xy, vec2(1.0)));
     shade = outside ? shadowData.params[slot].w : shade;
     return (reversed ? p.z > 1.0 : p.z < 0.0) ? 1.0 : shade;
@@ -56,7 +58,7 @@ float cascadeShade_$LOOKUP(int slot, vec3 eyePosition, sampler2DArrayShadow map,
 // With cascade_blend, just past a split the shade fades from the nearer cascade into the
 // pixel's own (weight 0 at the split, 1 at the band's end), where the nearer map holds the
 // point (a fitted cascade is fitted to reach over the band; math/CascadeFit.cpp).
-float shadowMapCascades_$LOOKUP(int slot, vec3 eyePosition, sampler2DArrayShadow map, int count) {
+float shadowMapCascades_$LOOKUP(int slot, vec3 eyePosition, $SAMPLERARRAY map, int count) {
     int cascade = cascadeIndex(slot, eyePosition, count);
     float shade = cascadeShade_$LOOKUP(slot, eyePosition, map, cascade);
     float blend = shadowData.cascadeBlend[slot].x;
@@ -72,10 +74,10 @@ float shadowMapCascades_$LOOKUP(int slot, vec3 eyePosition, sampler2DArrayShadow
 }
 
 // toPoint: light -> point along world axes, from the vertex part (texgen.glsl).
-float shadowMapCube_$LOOKUP(int slot, vec3 toPoint, samplerCubeShadow map) {
+float shadowMapCube_$LOOKUP(int slot, vec3 toPoint, $SAMPLERCUBE map) {
     float major = cubeMajorAxisDistance(toPoint);
     if (major < shadowData.pointLight[slot].w) return 1.0;
     float depth = cubeBiasedReference(slot, major);
     bool reversed = shadowData.params[slot].x > 0.5;
-    return $LOOKUPCube(map, toPoint, reversed ? max(depth, 0.0) : min(depth, 1.0));
+    return $LOOKUPCube(slot, map, toPoint, reversed ? max(depth, 0.0) : min(depth, 1.0));
 }

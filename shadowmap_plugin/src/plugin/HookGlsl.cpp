@@ -16,12 +16,34 @@ extern const char texgen_glsl[];
 
 namespace {
 
-// visibility.glsl's functions for one lookup: $LOOKUP becomes its GLSL name.
+// The GLSL sampler types a lookup reads a 2D map, a cascaded (array) map and a cube map with:
+// comparing samplers, or plain ones where the lookup compares depths itself.
+struct SamplerTypes {
+    const char* map2D;
+    const char* array;
+    const char* cube;
+};
+
+SamplerTypes samplerTypes(const std::string& glslName) {
+    if (mapLookupNamed(glslName).comparesInHardware())
+        return {"sampler2DShadow", "sampler2DArrayShadow", "samplerCubeShadow"};
+    return {"sampler2D", "sampler2DArray", "samplerCube"};
+}
+
+void replaceAll(std::string& code, const std::string& placeholder, const std::string& value) {
+    for (std::size_t at = code.find(placeholder); at != std::string::npos; at = code.find(placeholder, at))
+        code.replace(at, placeholder.size(), value);
+}
+
+// visibility.glsl's functions for one lookup: $LOOKUP becomes its GLSL name, $SAMPLER2D,
+// $SAMPLERARRAY and $SAMPLERCUBE its sampler types.
 std::string mapShapeFunctions(const std::string& glslName) {
     std::string code = shaders::visibility_glsl;
-    const std::string placeholder = "$LOOKUP";
-    for (std::size_t at = code.find(placeholder); at != std::string::npos; at = code.find(placeholder, at))
-        code.replace(at, placeholder.size(), glslName);
+    const SamplerTypes types = samplerTypes(glslName);
+    replaceAll(code, "$SAMPLER2D", types.map2D);
+    replaceAll(code, "$SAMPLERARRAY", types.array);
+    replaceAll(code, "$SAMPLERCUBE", types.cube);
+    replaceAll(code, "$LOOKUP", glslName);
     return code;
 }
 
@@ -30,9 +52,10 @@ HookGlsl::Code generate(const std::vector<HookGlsl::Lookup>& lookups) {
     std::set<std::string> written;
     for (const HookGlsl::Lookup& lookup : lookups)
         if (written.insert(lookup.glslName).second)
-            lookupFunctions += mapLookupGlsl(lookup.glslName) + mapShapeFunctions(lookup.glslName);
+            lookupFunctions += std::string(mapLookupNamed(lookup.glslName).glsl()) + mapShapeFunctions(lookup.glslName);
     for (const HookGlsl::Lookup& lookup : lookups) {
         const std::string slot = std::to_string(lookup.slot);
+        const SamplerTypes types = samplerTypes(lookup.glslName);
         const std::string suffix = "_" + lookup.glslName + "(";
         if (lookup.cascades > 0) {
             // Cascades pick their layer per pixel from the eye position: nothing interpolated.
@@ -44,7 +67,7 @@ HookGlsl::Code generate(const std::vector<HookGlsl::Lookup>& lookups) {
                                  ", eyePosition, uShadowDepth" + slot + ", " + count + ");\n";
             }
             declarations += "layout(binding = " + std::to_string(lookup.unit) +
-                            ") uniform sampler2DArrayShadow uShadowMap" + slot + ";\n";
+                            ") uniform " + types.array + " uShadowMap" + slot + ";\n";
             dispatch += "    if (lightSlot == " + slot + ") return shadowMapCascades" + suffix + slot +
                         ", eyePosition, uShadowMap" + slot + ", " + count + ");\n";
             continue;
@@ -64,7 +87,7 @@ HookGlsl::Code generate(const std::vector<HookGlsl::Lookup>& lookups) {
                              ", uShadowDepth" + slot + ");\n";
         }
         declarations += "layout(binding = " + std::to_string(lookup.unit) + ") uniform " +
-                        (lookup.cube ? "samplerCubeShadow" : "sampler2DShadow") + " uShadowMap" + slot + ";\n";
+                        (lookup.cube ? types.cube : types.map2D) + " uShadowMap" + slot + ";\n";
         dispatch += "    if (lightSlot == " + slot + ") return " + (lookup.cube ? "shadowMapCube" : "shadowMap2D") +
                     suffix + slot + ", " + coordinate + ", uShadowMap" + slot + ");\n";
     }

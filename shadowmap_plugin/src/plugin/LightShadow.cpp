@@ -86,6 +86,7 @@ engine::ShadowView LightShadow::view() const {
     out.castsShadows = settings.variant != Variant::None;
     // The settings API's printer, so the tools read them back with its parser (usedSettings).
     out.settings = printUsedSettings(settings);
+    (type == engine::Light::Type::Directional ? out.angularDiameter : out.lightRadius) = settings.lightSize(type);
     out.hasMap = frame.kind != MapKind::None;
     out.skipReason = frame.skipReason;
     out.cube = frame.kind == MapKind::Cube;

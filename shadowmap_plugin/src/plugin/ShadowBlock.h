@@ -24,6 +24,10 @@ struct ShadowBlock {
     glm::mat4 cascadePlanes[engine::kMaxLights * kMaxCascades];  // light slot * kMaxCascades + cascade
     glm::vec4 cascadeFar[engine::kMaxLights];                    // far view depth per cascade
     glm::vec4 cascadeBlend[engine::kMaxLights];                  // x: blend fraction, y: first split
+    // Soft shadows (technique/SoftShadowLayers.h): per light and layer (2D map and cube: 0)
+    // and per light.
+    glm::vec4 softLayers[engine::kMaxLights * kMaxCascades];
+    glm::vec4 softParams[engine::kMaxLights];
 };
 
 // cascadeFar holds a light's cascades' far depths in one vec4 (visibility.glsl compares it
@@ -36,7 +40,12 @@ static_assert(offsetof(ShadowBlock, eyeToWorld) == engine::kMaxLights * 112);
 static_assert(offsetof(ShadowBlock, cascadePlanes) == engine::kMaxLights * 112 + 64);
 static_assert(offsetof(ShadowBlock, cascadeFar) == engine::kMaxLights * (112 + 64 * kMaxCascades) + 64);
 static_assert(offsetof(ShadowBlock, cascadeBlend) == engine::kMaxLights * (128 + 64 * kMaxCascades) + 64);
-static_assert(sizeof(ShadowBlock) == engine::kMaxLights * (144 + 64 * kMaxCascades) + 64);
+static_assert(offsetof(ShadowBlock, softLayers) == engine::kMaxLights * (144 + 64 * kMaxCascades) + 64);
+static_assert(offsetof(ShadowBlock, softParams) == engine::kMaxLights * (144 + 80 * kMaxCascades) + 64);
+static_assert(sizeof(ShadowBlock) == engine::kMaxLights * (160 + 80 * kMaxCascades) + 64);
+// Within the 16 KiB every GL 4.5 implementation must allow a uniform block
+// (GL_MAX_UNIFORM_BLOCK_SIZE's minimum).
+static_assert(sizeof(ShadowBlock) <= 16384);
 
 // The constants shadow_data.glsl and visibility.glsl take from here, as #defines to put
 // before them (MAX_LIGHTS comes from the lit pass's own header).

@@ -30,7 +30,9 @@ engine::LightVisibilityHook ShadowHook::build(const engine::Frame& frame, const 
     }
     block.eyeToWorld = glm::mat4(glm::mat3(glm::dmat3(eyeToWorld)));
     std::vector<std::pair<int, unsigned>> units;      // texture unit, map (comparing)
-    std::vector<std::pair<int, unsigned>> rawUnits;   // texture unit, map (raw depth, debug)
+    // texture unit, map read as raw depth: the comparison view's, and the lookups' that
+    // compare depths themselves
+    std::vector<std::pair<int, unsigned>> rawUnits;
     std::vector<std::uint64_t> shadeKeys(lights.size(), 0);  // 0: not to be reused
     // A light without a map this frame has one shade everywhere (1, or 0 for a spot light
     // whose frustum holds nothing visible): the lit pass needs no lookup for it.
@@ -81,10 +83,12 @@ engine::LightVisibilityHook ShadowHook::build(const engine::Frame& frame, const 
         shadeKey.add(params[light.slot]);
         mapLookup.addShadeKey(shadeKey);
         projection->addShadeKey(light, shadeKey);
+        shadeKey.add(block.softParams[light.slot]);
+        for (int layer = 0; layer < kMaxCascades; ++layer) shadeKey.add(block.softLayers[light.slot * kMaxCascades + layer]);
         // Without map caching nothing is reused: a depth pass whose map no pass reads
         // would be culled, and timing runs (bench, cache_maps false) would time nothing.
         if (cacheMaps) shadeKeys[light.slot] = shadeKey.value();
-        units.emplace_back(unit, light.map.id());
+        (mapLookup.comparesInHardware() ? units : rawUnits).emplace_back(unit, light.map.id());
         if (debuggable) rawUnits.emplace_back(rawUnit, light.map.id());
         lookups.push_back(lookup);
     }

@@ -1,8 +1,8 @@
 #pragma once
 // How the lit pass reads a light's map: one axis of a shadow technique (Techniques.h).
-// Today both lookups are the hardware depth comparison, nearest or bilinear (GL_LINEAR on
-// a comparing texture is 2x2 percentage-closer filtering); each in lookup/, its GLSL in
-// shaders/lookup/.
+// The hardware depth comparison, nearest or bilinear (GL_LINEAR on a comparing texture is
+// 2x2 percentage-closer filtering), and percentage-closer soft shadows, which read raw
+// depths; each in lookup/, its GLSL in shaders/lookup/.
 #include "shadowmap/ShadowSettings.h"
 
 #include "engine/util/Hasher.h"
@@ -15,11 +15,15 @@ public:
     virtual Filter filter() const = 0;
     // The comparing texture's min/mag filter: bilinear (true) or nearest.
     virtual bool bilinearCompare() const = 0;
+    // false: the lookup reads the map's depths and compares them itself, through a plain
+    // sampler (sampler2D, sampler2DArray, samplerCube) with comparison off.
+    virtual bool comparesInHardware() const { return true; }
     // What, beyond the map, decides the shade this lookup gives a pixel.
     virtual void addShadeKey(engine::Hasher& key) const { key.add(filter()); }
     // Its GLSL: source defining <glslName>2D, <glslName>Array and <glslName>Cube, the fetch
-    // and comparison for a 2D map, one cascade's layer and a cube map, each given the
-    // comparing sampler, the coordinates and the biased, clamped reference depth. The hook
+    // and comparison for a 2D map, one cascade's layer and a cube map, each given the light's
+    // slot, the sampler, the coordinates (and the layer) and the biased, clamped reference
+    // depth. The hook
     // writes the map shapes' functions once per name in use (shaders/visibility.glsl), so
     // lookups that differ only in sampler state share one name and one program.
     virtual const char* glslName() const = 0;

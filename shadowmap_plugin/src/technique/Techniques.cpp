@@ -4,6 +4,7 @@
 #include "technique/depth/StandardDepth.h"
 #include "technique/depth/WooDepth.h"
 #include "technique/lookup/HardwareCompareLookup.h"
+#include "technique/lookup/PcssLookup.h"
 #include "technique/projection/CascadedMapProjection.h"
 #include "technique/projection/CubeMapProjection.h"
 #include "technique/projection/FittedMapProjection.h"
@@ -28,7 +29,8 @@ const MapProjection* const kProjections[] = {&kFittedMap, &kCubeMap, &kCascadedM
 
 const HardwareCompareLookup kNearest(Filter::Nearest, false);
 const HardwareCompareLookup kPcf(Filter::Pcf, true);
-const MapLookup* const kLookups[] = {&kNearest, &kPcf};
+const PcssLookup kPcss;
+const MapLookup* const kLookups[] = {&kNearest, &kPcf, &kPcss};
 
 // The entry whose key matches, or nullptr.
 template <typename Entry, std::size_t N, typename Key, typename KeyOf>
@@ -69,10 +71,10 @@ const MapLookup& mapLookup(Filter filter) {
     return *lookup;
 }
 
-const char* mapLookupGlsl(const std::string& glslName) {
+const MapLookup& mapLookupNamed(const std::string& glslName) {
     const MapLookup* lookup = find(kLookups, glslName, [](const MapLookup& l) { return std::string(l.glslName()); });
     if (!lookup) throw std::logic_error("no lookup with GLSL name " + glslName);
-    return lookup->glsl();
+    return *lookup;
 }
 
 } // namespace shadowmap

@@ -21,7 +21,8 @@ const MapProjection* mapProjection(MapKind kind);
 // The projection a light of this type gets with this many cascades this frame.
 const MapProjection& projectionFor(engine::Light::Type type, int cascadeCount);
 const MapLookup& mapLookup(Filter filter);
-// The GLSL of the lookups named `glslName` (MapLookup::glslName); std::logic_error if none.
-const char* mapLookupGlsl(const std::string& glslName);
+// A lookup named `glslName` (MapLookup::glslName; lookups of one name share their GLSL and
+// sampler types); std::logic_error if none.
+const MapLookup& mapLookupNamed(const std::string& glslName);
 
 } // namespace shadowmap

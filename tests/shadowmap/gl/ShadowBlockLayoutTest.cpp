@@ -1,5 +1,5 @@
 // The uniform block as the GL compiles it from the shipped GLSL (hook code for a 2D map, a
-// cube map and a cascaded map, as the plugin generates it) against its CPU image
+// cube map and a cascaded map, and a soft-filtered 2D map, as the plugin generates it) against its CPU image
 // plugin/ShadowBlock.h: the binding point, the size, every member's offset and array length.
 // The GLSL takes the binding and MAX_CASCADES from the C++ constants, so the two cannot
 // drift apart without this failing.
@@ -25,8 +25,11 @@ protected:
     static engine::gl::Program compileHook() {
         HookGlsl glsl;
         const std::string pcf = shadowmap::mapLookup(shadowmap::Filter::Pcf).glslName();
-        const HookGlsl::Code& code =
-            glsl.codeFor({{0, 8, false, -1, 0, pcf}, {1, 9, true, -1, 0, pcf}, {2, 10, false, -1, 3, pcf}});
+        const std::string pcss = shadowmap::mapLookup(shadowmap::Filter::Pcss).glslName();
+        const HookGlsl::Code& code = glsl.codeFor({{0, 8, false, -1, 0, pcf},
+                                                   {1, 9, true, -1, 0, pcf},
+                                                   {2, 10, false, -1, 3, pcf},
+                                                   {3, 11, false, -1, 0, pcss}});
         const std::string header = "#version 450 core\n#define MAX_LIGHTS " + std::to_string(engine::kMaxLights) + "\n";
         return engine::gl::Program::compile(
             "shadow block layout",
@@ -37,7 +40,7 @@ protected:
                                       "out vec4 outColor;\n"
                                       "void main() {\n  vec3 p = vec3(0.0, 0.0, -1.0), n = vec3(0.0, 0.0, 1.0);\n"
                                       "  outColor = vec4(lightVisibility(0, p, n), lightVisibility(1, p, n),\n"
-                                      "                  lightVisibility(2, p, n), 1.0);\n}\n"}});
+                                      "                  lightVisibility(2, p, n), lightVisibility(3, p, n));\n}\n"}});
     }
 
     struct Member {
@@ -80,6 +83,8 @@ TEST_F(ShadowBlockLayout, TheCompiledBlockIsTheCppStructAtTheCppBinding) {
         {"ShadowData.cascadePlanes[0]", offsetof(ShadowBlock, cascadePlanes), engine::kMaxLights * shadowmap::kMaxCascades},
         {"ShadowData.cascadeFar[0]", offsetof(ShadowBlock, cascadeFar), engine::kMaxLights},
         {"ShadowData.cascadeBlend[0]", offsetof(ShadowBlock, cascadeBlend), engine::kMaxLights},
+        {"ShadowData.softLayers[0]", offsetof(ShadowBlock, softLayers), engine::kMaxLights * shadowmap::kMaxCascades},
+        {"ShadowData.softParams[0]", offsetof(ShadowBlock, softParams), engine::kMaxLights},
     };
     for (const auto& expected : members) {
         const Member compiled = member(program, expected.name);

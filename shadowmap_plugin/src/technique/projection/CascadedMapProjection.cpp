@@ -1,6 +1,7 @@
 #include "technique/projection/CascadedMapProjection.h"
 
 #include "technique/MapCacheKey.h"
+#include "technique/SoftShadowLayers.h"
 #include "technique/projection/FiniteMatrix.h"
 
 #include "math/Texgen.h"
@@ -91,11 +92,13 @@ bool CascadedMapProjection::packLookup(const LightState& light, const LookupCont
     // The far view depth of each cascade; unused entries never match (visibility.glsl).
     for (int c = 0; c < kMaxCascades; ++c) {
         if (c < count) block.cascadePlanes[light.slot * kMaxCascades + c] = planes[c];
+        if (c < count) block.softLayers[light.slot * kMaxCascades + c] = softLayer(views.cascades[c], light);
         block.cascadeFar[light.slot][c] =
             c < count ? static_cast<float>(views.splits[c + 1]) : std::numeric_limits<float>::max();
     }
     block.cascadeBlend[light.slot] = glm::vec4(static_cast<float>(light.settings.cascadeBlend),
                                                static_cast<float>(views.splits.front()), 0.0f, 0.0f);
+    block.softParams[light.slot] = softParams(light);
     lookup.cascades = count;
     return true;
 }

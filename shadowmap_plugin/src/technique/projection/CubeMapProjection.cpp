@@ -1,6 +1,7 @@
 #include "technique/projection/CubeMapProjection.h"
 
 #include "technique/MapCacheKey.h"
+#include "technique/SoftShadowLayers.h"
 #include "technique/projection/FiniteMatrix.h"
 
 #include <cmath>
@@ -67,6 +68,8 @@ bool CubeMapProjection::packLookup(const LightState& light, const LookupContext&
     block.pointFar[light.slot].x = std::isinf(views.farPlane) ? 0.0f : static_cast<float>(views.farPlane);
     // y: the bias in face widths (a 90-degree face spans 2 * distance over resolution texels).
     block.pointFar[light.slot].y = static_cast<float>(kCubeTexelBias * 2.0 / light.settings.resolution);
+    block.softLayers[light.slot * kMaxCascades] = softCubeLayer(views, light);
+    block.softParams[light.slot] = softParams(light);
     lookup.cube = true;
     return true;
 }

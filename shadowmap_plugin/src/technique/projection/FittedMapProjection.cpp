@@ -1,6 +1,7 @@
 #include "technique/projection/FittedMapProjection.h"
 
 #include "technique/MapCacheKey.h"
+#include "technique/SoftShadowLayers.h"
 #include "technique/projection/FiniteMatrix.h"
 
 #include "math/Texgen.h"
@@ -34,6 +35,8 @@ bool FittedMapProjection::packLookup(const LightState& light, const LookupContex
     const glm::mat4 uploaded(eyePlanesForCamera(light.frame.view.texgenPlanes(), context.eyeToWorld));
     if (!isFinite(uploaded)) return false;
     block.eyePlanes[light.slot] = uploaded;
+    block.softLayers[light.slot * kMaxCascades] = softLayer(light.frame.view, light);
+    block.softParams[light.slot] = softParams(light);
     return true;
 }
 
