@@ -129,6 +129,22 @@ nlohmann::json statsJson(const RenderOptions& options, const std::vector<double>
     return stats;
 }
 
+// A light with a size is also scored against the soft truth (the share of the light each
+// pixel's point sees): the whole evaluation set, and its penumbra alone.
+void printSoftErrors(const evaluation::LightResult& light, nlohmann::json& json) {
+    const truth::ShadowErrors& soft = light.softErrors;
+    const bool directional = light.view.angularDiameter > 0.0;
+    std::printf("  %-20s against its size (%s %g): error %.3f %%, error-edge %.3f %%, penumbra error %.2f %% "
+                "over %zu px\n",
+                "", directional ? "angular_diameter" : "light_radius",
+                directional ? light.view.angularDiameter : light.view.lightRadius, 100 * soft.error,
+                100 * soft.errorNoEdge, 100 * soft.penumbraError, soft.evaluatedPenumbra);
+    json["soft_error"] = 100 * soft.error;
+    json["soft_error_noedge"] = 100 * soft.errorNoEdge;
+    json["penumbra_error"] = 100 * soft.penumbraError;
+    json["penumbra_pixels"] = soft.evaluatedPenumbra;
+}
+
 // Per shadowed light: the median time of its map passes and its errors against ray-traced
 // truth (docs/metrics.md, percent of the evaluation set), printed and returned for --stats.
 nlohmann::json printLightErrors(engine::Renderer& renderer, const engine::Scene& scene,
@@ -155,6 +171,7 @@ nlohmann::json printLightErrors(engine::Renderer& renderer, const engine::Scene&
                           {"acne", 100 * e.acne}, {"leak", 100 * e.leak},
                           {"error", 100 * e.error}, {"error_noedge", 100 * e.errorNoEdge},
                           {"evaluated_pixels", e.evaluated}});
+        if (light.softErrors.evaluated > 0) printSoftErrors(light, lights.back());
     }
     // A light that emits nothing casts no shadow to score: said, not scored.
     for (std::size_t slot = 0; slot < scene.lightInstances.size(); ++slot)

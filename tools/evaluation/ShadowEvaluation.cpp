@@ -70,6 +70,10 @@ ViewResult ShadowEvaluator::evaluate(const engine::FrameCamera& camera, int fram
             out.areaErrors = truth::areaShadowErrors(camera.width, camera.height,
                                                      visibility_.litFraction(scene_, out.slot, surfaces),
                                                      truthImage, shade, evaluationSet, surfaces.covered);
+        if (const truth::LightExtent extent = lightExtent(view); !extent.isPoint())
+            out.softErrors = truth::softShadowErrors(camera.width, camera.height,
+                                                     visibility_.visibleFraction(scene_, out.slot, surfaces, extent),
+                                                     shade, evaluationSet, surfaces.covered);
         result.lights.push_back(std::move(out));
     }
     return result;

@@ -30,6 +30,10 @@ struct LightResult {
     // With setNearDistance(d): the errors on the evaluation pixels whose surface point lies
     // within d of the camera; evaluated == 0 otherwise.
     truth::ShadowErrors nearErrors;
+    // For a light with a size (ShadowView::lightRadius, angularDiameter): against the soft
+    // truth, the share of the light visible from each pixel's point (truth::softShadowErrors,
+    // penumbra figures included), whatever the filter; evaluated == 0 for a point light.
+    truth::ShadowErrors softErrors;
     std::size_t nonFinitePixels = 0;  // NaN/Inf anywhere in its shade (must stay 0)
 };
 
@@ -70,6 +74,11 @@ public:
     // (a light of intensity 0 shadows nothing: its mask says lit everywhere, and scoring it
     // reported leaks no one can see).
     bool scored(const engine::ShadowView& view) const;
+
+    // The light `view` was shadowed for, as the truth samples it.
+    static truth::LightExtent lightExtent(const engine::ShadowView& view) {
+        return {view.lightRadius, view.angularDiameter};
+    }
 
 private:
     engine::Renderer& renderer_;

@@ -483,6 +483,36 @@ TEST_F(EngineRenderShadows, TruthDoesNotScoreALightThatEmitsNothing) {
     EXPECT_EQ(scored, (std::vector<std::string>{"spot_light", "point_light"}));
 }
 
+// A light with a size is scored against the soft truth as well, whatever its filter: the
+// hard pcf shadow of a sized light disagrees with the truth's penumbra, and its ordinary
+// (point-light) score is the same as without the size, since the size does not change a hard
+// filter's shadow.
+TEST_F(EngineRenderShadows, TruthScoresASizedLightAgainstItsSizeToo) {
+    const CommandResult point = render("--truth");
+    ASSERT_EQ(point.exitCode, 0) << point.output;
+    const nlohmann::json pointStats = stats();
+    const CommandResult sized =
+        render("--truth --light-set sun.angular_diameter=0.05 --light-set spot_light.light_radius=0.3");
+    ASSERT_EQ(sized.exitCode, 0) << sized.output;
+    const nlohmann::json sizedStats = stats();
+    ASSERT_EQ(sizedStats["lights"].size(), 3u) << sizedStats.dump();
+    for (std::size_t i = 0; i < 3; ++i) {
+        const nlohmann::json& entry = sizedStats["lights"][i];
+        SCOPED_TRACE(entry.dump());
+        EXPECT_EQ(entry["error"], pointStats["lights"][i]["error"]);
+        EXPECT_FALSE(pointStats["lights"][i].contains("soft_error"));
+        if (entry["light"] == "point_light") {
+            EXPECT_FALSE(entry.contains("soft_error"));
+            continue;
+        }
+        EXPECT_GT(entry["penumbra_pixels"].get<int>(), 0);
+        EXPECT_GT(entry["penumbra_error"].get<double>(), 0.0);
+        EXPECT_GT(entry["soft_error"].get<double>(), 0.0);
+    }
+    EXPECT_NE(sized.output.find("against its size (angular_diameter 0.05)"), std::string::npos) << sized.output;
+    EXPECT_NE(sized.output.find("against its size (light_radius 0.3)"), std::string::npos) << sized.output;
+}
+
 TEST_F(EngineRenderShadows, TruthReportsACachedMapAsCached) {
     const CommandResult result = render("--truth --warmup 1");
     ASSERT_EQ(result.exitCode, 0) << result.output;
@@ -665,6 +695,17 @@ TEST_F(EngineRenderShadows, BadLightSetNamesTheLightTheKeyAndTheReason) {
     expectError(render("--light-set sun.reversed_z=true"), {"light \"sun\".reversed_z", "needs depth_format \"d32f\""});
     expectError(render("--light-set nosuchlight.resolution=512"), {"light \"nosuchlight\"", "no such light"});
     expectError(render("--light-set sun=512"), {"--light-set", "must be NAME.KEY=VALUE"});
+    expectError(render("--light-set sun.light_radius=0.5"),
+                {"light \"sun\".light_radius", "a directional light has no radius: size it with angular_diameter"});
+    expectError(render("--light-set sun.angular_diameter=-0.01"),
+                {"light \"sun\".angular_diameter", "must be >= 0 radians"});
+}
+
+// A size on the other type of light, in the file: named with the scene, light and key.
+TEST_F(EngineRenderShadows, ASizeOnTheWrongTypeOfLightInTheFileIsNamed) {
+    light("spot_light")["extras"]["shadow"]["angular_diameter"] = 0.01;
+    expectError(render(), {"light \"spot_light\": extras.shadow.angular_diameter",
+                           "a spot or point light has no angular diameter: size it with light_radius"});
 }
 
 // The last of two values winning silently hid typos in scripts: both are named instead.
