@@ -139,7 +139,25 @@ void ViewerState::cycleDepthFormat() {
 
 void ViewerState::toggleFilter() {
     if (selected_ < 0) return;
-    set(selected_, "filter", nextChoice("filter", effective(selected_)["filter"].get<std::string>()));
+    const nlohmann::json current = effective(selected_);
+    const engine::Light::Type type = scene_.lights[lights_[selected_].light].type;
+    // A soft filter needs a light with a size: the keys skip it for a light without one.
+    const auto accepted = [&](const std::string& filter) {
+        shadowmap::ShadowSettings settings;
+        settings.lightRadius = current["light_radius"].get<double>();
+        settings.angularDiameter = current["angular_diameter"].get<double>();
+        shadowmap::applySettings(settings, {{"filter", filter}}, "engine-view", "filter");
+        try {
+            shadowmap::checkFilterForType(settings, type, "engine-view", "filter");
+            return true;
+        } catch (const engine::InputError&) {
+            return false;
+        }
+    };
+    std::string filter = current["filter"].get<std::string>();
+    do filter = nextChoice("filter", filter);
+    while (!accepted(filter));  // ends: the hard filters need no size
+    set(selected_, "filter", filter);
 }
 
 void ViewerState::cycleCascades() {

@@ -48,7 +48,7 @@ public:
     void cycleVariant();     // standard -> woo -> backface -> none
     void cycleResolution();  // the resolution's steps: 512 -> 1024 -> 2048 -> 4096
     void cycleDepthFormat(); // d16 -> d24 -> d32f
-    void toggleFilter();     // nearest <-> pcf
+    void toggleFilter();     // the next filter the light accepts (pcss: with a size)
     void cycleCascades();    // auto -> 1 -> 2 -> 3 -> 4 (directional lights; others ignore it)
     void toggleStable();     // stable cascades on <-> off
     void addOffsetUnits(double delta);  // polygon offset units, kept >= 0

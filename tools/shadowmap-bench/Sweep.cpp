@@ -101,9 +101,43 @@ BenchScene loadBenchScene(const BenchOptions& options, const std::string& path, 
     return bench;
 }
 
+// The settings every light of `bench` accepts: a soft filter needs each light to have a size
+// (in its extras.shadow or the config's defaults); a scene where one has none is swept
+// without that filter, with a note naming the light, rather than failing the sweep.
+std::vector<ShadowSetting> acceptedSettings(const BenchScene& bench, const std::vector<ShadowSetting>& settings,
+                                            const nlohmann::json& pluginSettings) {
+    const shadowmap::ShadowSettings defaults =
+        shadowmap::parsePluginSettings(pluginSettings, "engine config").lightDefaults;
+    std::vector<ShadowSetting> accepted;
+    std::vector<std::string> refusedFilters;
+    for (const ShadowSetting& setting : settings) {
+        std::optional<std::string> refusal;
+        for (int instance = 0; instance < bench.shadowedLights && !refusal; ++instance) {
+            const engine::Light& light = bench.scene.lights[bench.scene.lightInstances[instance].light];
+            shadowmap::ShadowSettings lightSettings = defaults;
+            if (light.extras.is_object() && light.extras.contains("shadow"))
+                shadowmap::applySettings(lightSettings, light.extras["shadow"], bench.path, "light \"" + light.name + "\"");
+            shadowmap::applySettings(lightSettings, {{"filter", setting.filter}}, bench.path, "--filters");
+            try {
+                shadowmap::checkFilterForType(lightSettings, light.type, bench.path, "light \"" + light.name + "\"");
+            } catch (const engine::InputError& error) {
+                refusal = error.what();
+            }
+        }
+        if (!refusal) {
+            accepted.push_back(setting);
+        } else if (std::find(refusedFilters.begin(), refusedFilters.end(), setting.filter) == refusedFilters.end()) {
+            refusedFilters.push_back(setting.filter);
+            std::cerr << "shadowmap-bench: " << bench.name << ": no filter " << setting.filter << " rows: " << *refusal
+                      << "\n";
+        }
+    }
+    return accepted;
+}
+
 } // namespace
 
-std::vector<BenchScene> loadBenchScenes(const BenchOptions& options) {
+std::vector<BenchScene> loadBenchScenes(const BenchOptions& options, const nlohmann::json& pluginSettings) {
     std::vector<BenchScene> scenes;
     const std::vector<ShadowSetting> full = sweepSettings(options), masked = maskedSettings(options);
     std::vector<std::pair<std::string, const std::vector<ShadowSetting>*>> requests;
@@ -120,7 +154,7 @@ std::vector<BenchScene> loadBenchScenes(const BenchOptions& options) {
         }
         for (const std::optional<double>& time : poses) {
             scenes.push_back(loadBenchScene(options, path, time, scenes));
-            scenes.back().settings = *settings;
+            scenes.back().settings = acceptedSettings(scenes.back(), *settings, pluginSettings);
         }
     }
     if (scenes.empty()) throw engine::InputError("no scene to sweep (give one with --scene)");

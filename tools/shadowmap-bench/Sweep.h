@@ -34,7 +34,9 @@ struct BenchScene {
 // options.scenes get sweepSettings, options.maskedScenes maskedSettings. With options.times
 // every file gives one scene per time, posed then (BenchScene::name "<stem>@<T>s").
 // Throws engine::InputError naming the file and the reason.
-std::vector<BenchScene> loadBenchScenes(const BenchOptions& options);
+// A scene whose lights cannot all take a setting's filter (pcss on a light without a size)
+// is swept without it, with a note; `pluginSettings` are the shadow plugin's config settings.
+std::vector<BenchScene> loadBenchScenes(const BenchOptions& options, const nlohmann::json& pluginSettings);
 
 // The cartesian product of the listed variants, resolutions, formats and filters.
 std::vector<ShadowSetting> sweepSettings(const BenchOptions& options);

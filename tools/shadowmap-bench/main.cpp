@@ -92,7 +92,7 @@ int run(const BenchOptions& options, std::unique_ptr<engine::GlContext>& context
     engine::EngineConfig config = engine::loadEngineConfig(options.config);
     tools::disableShadowMapCaching(config, options.config);
     // Scenes and the output folder are checked before the first (slow) render.
-    std::vector<BenchScene> scenes = loadBenchScenes(options);
+    std::vector<BenchScene> scenes = loadBenchScenes(options, tools::shadowPluginSettings(config));
     const Shard shard{options.shardIndex, options.shardCount};
     keepShardJobs(scenes, shard);
     const std::filesystem::path out = createOutputFolder(options.out);

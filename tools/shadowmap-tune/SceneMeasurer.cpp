@@ -123,6 +123,7 @@ bool SceneMeasurer::valid(int tuned, const Candidate& candidate) const {
         shadowmap::applySettings(settings, shadow, sceneFile_, "light");
         shadowmap::checkLimits(settings, static_cast<int>(*shadowmap::settingKey("resolution").maximum), sceneFile_,
                                "light");
+        shadowmap::checkFilterForType(settings, scene_.lights.at(lights_.at(tuned)).type, sceneFile_, "light");
         return true;
     } catch (const engine::InputError&) {
         return false;

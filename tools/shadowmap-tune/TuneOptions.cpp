@@ -42,7 +42,7 @@ const char* tuneUsage() {
         "usage: shadowmap-tune --scene SCENE.gltf|.glb (--budget-ms B | --max-error E) --out TUNED.gltf|.glb\n"
         "  [--views cameras|orbit:N] [--config CONFIG.json] [--width W --height H] [--frames N]\n"
         "  [--variants standard,woo,backface] [--resolutions 512,1024,2048]\n"
-        "  [--depth-formats d16,d24,d32f] [--filters nearest,pcf] [--report REPORT.json]\n"
+        "  [--depth-formats d16,d24,d32f] [--filters nearest,pcf,pcss] [--report REPORT.json]\n"
         "  [--key-light spot|point|directional]   a scene without lights gets this key light (placed\n"
         "                  from its bounds as engine-render places it), tuned and written into --out\n"
         "  [--shard K/N]   search every N-th light only and write --out as a partial result (JSON)\n"

@@ -263,6 +263,12 @@ TEST(ViewerState, KeysCycleThroughWhatThePluginAccepts) {
               rotatedFrom(shadowmap::settingKey("variant").choices, shadowmap::toString(defaults.variant)));
     EXPECT_EQ(visit("depth_format", &ViewerState::cycleDepthFormat),
               rotatedFrom(shadowmap::settingKey("depth_format").choices, shadowmap::toString(defaults.depthFormat)));
+    // Without a size the light takes only the hard filters: the key skips pcss.
+    EXPECT_EQ(visit("filter", &ViewerState::toggleFilter),
+              rotatedFrom({shadowmap::toString(shadowmap::Filter::Nearest), shadowmap::toString(shadowmap::Filter::Pcf)},
+                          shadowmap::toString(defaults.filter)));
+    // With one it visits every filter.
+    state.set(0, "light_radius", 0.1);
     EXPECT_EQ(visit("filter", &ViewerState::toggleFilter),
               rotatedFrom(shadowmap::settingKey("filter").choices, shadowmap::toString(defaults.filter)));
     EXPECT_EQ(visit("resolution", &ViewerState::cycleResolution),

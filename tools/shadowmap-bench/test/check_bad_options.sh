@@ -26,7 +26,7 @@ expect_error '--resolutions: "512" is listed twice in "512,512"' --resolutions 5
 expect_error '--resolutions: "0" is not an integer in [1, ' --resolutions 0
 expect_error '--width: "+64" is not an integer in [1, 16384]' --width +64
 expect_error '--variants: unknown value "none" (known: standard,woo,backface)' --variants none
-expect_error '--filters: unknown value "bilinear" (known: nearest,pcf)' --filters bilinear
+expect_error '--filters: unknown value "bilinear" (known: nearest,pcf,pcss)' --filters bilinear
 expect_error '--key-light: "sun" is not spot, point, directional or none' --key-light sun
 expect_error '--time: "-1" is not a number in [0, 1000000]' --time -1
 expect_error '--time: "0.5" is listed twice in "0.5,0.5"' --time 0.5,0.5
