@@ -111,7 +111,12 @@ engine::LightVisibilityHook ShadowHook::build(const engine::Frame& frame, const 
     const unsigned blockBuffer = shadowBlock_.id();
     hook.bind = [=](const engine::gl::Program&, const engine::PassContext&) {
         glBindBufferBase(GL_UNIFORM_BUFFER, kShadowBlockBinding, blockBuffer);
-        for (const auto& [unit, map] : units) glBindTextureUnit(unit, map);
+        // Sampler 0: the map's own comparing state, whatever sampler the unit held before
+        // (a light that was read raw on it in an earlier frame or pass).
+        for (const auto& [unit, map] : units) {
+            glBindTextureUnit(unit, map);
+            glBindSampler(unit, 0);
+        }
         for (const auto& [unit, map] : rawUnits) {
             glBindTextureUnit(unit, map);
             glBindSampler(unit, rawSampler);
