@@ -30,6 +30,7 @@
 //               range far - near (orthographic); all 0 for a light without a size
 //   softParams  x: 1 = perspective (spot, point), 0 = orthographic (directional); y: the
 //               blocker search's taps; z: the filter's taps; w: the map's texels per side
+//   filterParams  wide pcf: x: filter_radius in texels, y: filter_taps
 layout(std140, binding = SHADOW_BLOCK_BINDING) uniform ShadowData {
     mat4 eyePlanes[MAX_LIGHTS];
     vec4 params[MAX_LIGHTS];
@@ -41,4 +42,5 @@ layout(std140, binding = SHADOW_BLOCK_BINDING) uniform ShadowData {
     vec4 cascadeBlend[MAX_LIGHTS];
     vec4 softLayers[MAX_LIGHTS * MAX_CASCADES];
     vec4 softParams[MAX_LIGHTS];
+    vec4 filterParams[MAX_LIGHTS];
 } shadowData;

@@ -141,11 +141,13 @@ void ViewerState::toggleFilter() {
     if (selected_ < 0) return;
     const nlohmann::json current = effective(selected_);
     const engine::Light::Type type = scene_.lights[lights_[selected_].light].type;
-    // A soft filter needs a light with a size: the keys skip it for a light without one.
+    // The keys skip a filter the light's other settings refuse: pcss without a size, a
+    // filter other than pcf with a filter_radius.
     const auto accepted = [&](const std::string& filter) {
         shadowmap::ShadowSettings settings;
         settings.lightRadius = current["light_radius"].get<double>();
         settings.angularDiameter = current["angular_diameter"].get<double>();
+        settings.filterRadius = current["filter_radius"].get<double>();
         shadowmap::applySettings(settings, {{"filter", filter}}, "engine-view", "filter");
         try {
             shadowmap::checkFilterForType(settings, type, "engine-view", "filter");

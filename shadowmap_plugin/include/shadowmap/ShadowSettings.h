@@ -21,8 +21,10 @@
 //   filter          "nearest" (1 tap) | "pcf" (2x2 bilinear)   "pcf"
 //                   | "pcss" (percentage-closer soft shadows from the light's size: a blocker
 //                   search, then a filter as wide as the penumbra; needs a light size)
-//   filter_taps     4 .. 64: pcss's filter taps (each a 2x2      16
-//                   bilinear comparison); its blocker search takes half as many
+//   filter_taps     4 .. 64: pcss's and wide pcf's taps (each     16
+//                   a 2x2 bilinear comparison); pcss's blocker search takes half as many
+//   filter_radius   0 .. 16 texels: pcf over a disk of this       0 (one 2x2 tap)
+//                   radius (filter_taps rotated taps) instead of one 2x2 tap; pcf only
 //   polygon_offset  [factor, units] of the depth pass           standard: [1.0, 8.0]
 //                                                              nearest, [2.0, 8.0] pcf;
 //                                                              woo, backface: none
@@ -146,6 +148,7 @@ struct ShadowSettings {
     Filter filter = Filter::Pcf;
     std::optional<glm::vec2> polygonOffset;  // unset: the variant's default
     int filterTaps = 16;
+    double filterRadius = 0.0;  // texels; 0: pcf's one 2x2 tap
 
     // The offset a two-sided depth draw needs: the explicit one, else the standard
     // variant's default for this filter and depth direction.
@@ -194,6 +197,9 @@ Variant parseVariant(const std::string& text, const std::string& source, const s
 
 // The taps filter_taps accepts.
 inline constexpr int kMinFilterTaps = 4, kMaxFilterTaps = 64;
+// The widest filter_radius, in texels: wider kernels cost taps and blur contact shadows
+// away; a light with a size wants pcss instead.
+inline constexpr double kMaxFilterRadius = 16.0;
 
 // Checks what depends on the GL implementation (the resolution limit) and on keys combined
 // from several sources (reversed_z needs d32f; near_plane < far_plane).
@@ -207,6 +213,7 @@ void checkSizeKeyForType(const nlohmann::json& json, engine::Light::Type type, c
                          const std::string& object);
 // A soft filter (pcss) needs the light to have a size: without one it would be a hard shadow
 // no one asked for. InputError "source: object.filter: reason" naming the key to set.
+// filter_radius widens pcf only: with another filter it is "source: object.filter_radius".
 void checkFilterForType(const ShadowSettings& settings, engine::Light::Type type, const std::string& source,
                         const std::string& object);
 

@@ -3,26 +3,8 @@
 // receiver, the blockers' mean distance, and a filter as wide as the penumbra that distance
 // makes (similar triangles). The light's size per layer and the depth-to-distance terms come
 // from shadow_data.glsl's softLayers and softParams.
-// Every tap compares against the receiver's own plane (Isidoro, "Shadow Mapping: GPU-based
-// Tips and Techniques", GDC 2006: the reference moves with the depth gradient the receiver
-// has in map coordinates), so a wide kernel on a sloped receiver finds the receiver, not
-// itself, in front: the polygon offset stays the 2x2 filter's.
-
-const float kGoldenAngle = 2.39996323;  // pi (3 - sqrt(5)): Vogel's spiral fills a disk evenly
-
-// Tap i of `count` on the unit disk, the spiral turned by `rotation`.
-vec2 pcssDiskTap(int i, int count, float rotation) {
-    float radius = sqrt((float(i) + 0.5) / float(count));
-    float angle = float(i) * kGoldenAngle + rotation;
-    return radius * vec2(cos(angle), sin(angle));
-}
-
-// A turn of the disk per pixel (interleaved gradient noise, Jimenez 2014): neighbouring pixels
-// sample differently, so few taps give fine noise instead of bands; a pixel turns it the same
-// way every frame, so a still view stays still.
-float pcssRotation() {
-    return 6.28318531 * fract(52.9829189 * fract(dot(gl_FragCoord.xy, vec2(0.06711056, 0.00583715))));
-}
+// Every tap compares against the receiver's own plane (disk_taps.glsl), so the polygon
+// offset stays the 2x2 filter's.
 
 bool pcssPerspective(int slot) { return shadowData.softParams[slot].x > 0.5; }
 
@@ -47,15 +29,6 @@ float pcssSpread(int slot, float receiver, float blocker) {
 
 // The nearest a blocker can be: the near plane (perspective) or the map's front (orthographic).
 float pcssNearestBlocker(int slot, vec4 layer) { return pcssPerspective(slot) ? layer.z : 0.0; }
-
-// The receiver's window-depth gradient in map coordinates, from the screen derivatives of
-// (map coordinates, depth); 0 where they do not span the plane (edge-on, or non-finite).
-vec2 pcssDepthGradient(vec3 mapPoint) {
-    vec3 dx = dFdx(mapPoint), dy = dFdy(mapPoint);
-    float det = dx.x * dy.y - dx.y * dy.x;
-    vec2 gradient = vec2(dy.y * dx.z - dx.y * dy.z, dx.x * dy.z - dy.x * dx.z) / det;
-    return all(lessThan(abs(gradient), vec2(1e30))) ? gradient : vec2(0.0);
-}
 
 // 1 for each of four depths that lies in front of `reference` (a blocker), 0 where it does
 // not (lit). Only blockers' depths become distances: the cleared far of an empty texel
@@ -85,7 +58,7 @@ float pcssBilinear(vec4 lit, vec2 st, float texels) {
         int taps = int(shadowData.softParams[slot].y);                                          \
         float sum = 0.0, count = 0.0;                                                            \
         for (int i = 0; i < taps; ++i) {                                                         \
-            vec2 offset = pcssDiskTap(i, taps, rotation) * searchRadius;                         \
+            vec2 offset = diskTap(i, taps, rotation) * searchRadius;                         \
             vec4 depths = pcssGather(map, st + offset, layer);                                   \
             vec4 inFront = pcssInFront(depths, reference + dot(gradient, offset), reversed);     \
             for (int k = 0; k < 4; ++k) sum += inFront[k] > 0.0 ? pcssDistance(slot, scale, depths[k]) : 0.0; \
@@ -104,8 +77,8 @@ PCSS_BLOCKER_DISTANCE(sampler2DArray)
         float texels = shadowData.softParams[slot].w;                                             \
         int taps = int(shadowData.softParams[slot].z);                                            \
         float receiver = pcssDistance(slot, scale, reference);                                    \
-        vec2 gradient = pcssDepthGradient(vec3(st, reference));                                   \
-        float rotation = pcssRotation();                                                          \
+        vec2 gradient = receiverDepthGradient(vec3(st, reference));                                   \
+        float rotation = diskRotation();                                                          \
         vec2 searchRadius = scale.xy * pcssSpread(slot, receiver, pcssNearestBlocker(slot, scale)); \
         float blocker = pcssBlockerDistance(slot, map, st, layer, reference, gradient, searchRadius, rotation); \
         if (blocker <= 0.0) return 1.0;                                                            \
@@ -113,7 +86,7 @@ PCSS_BLOCKER_DISTANCE(sampler2DArray)
         vec2 radius = max(scale.xy * pcssSpread(slot, receiver, blocker), vec2(1.0 / texels));    \
         float lit = 0.0;                                                                           \
         for (int i = 0; i < taps; ++i) {                                                           \
-            vec2 tap = st + pcssDiskTap(i, taps, rotation) * radius;                               \
+            vec2 tap = st + diskTap(i, taps, rotation) * radius;                               \
             vec4 inFront = pcssInFront(pcssGather(map, tap, layer), reference + dot(gradient, tap - st), reversed); \
             lit += pcssBilinear(vec4(1.0) - inFront, tap, texels);                                 \
         }                                                                                          \
@@ -139,18 +112,16 @@ float pcssCube(int slot, samplerCube map, vec3 toPoint, float reference) {
     int searchTaps = int(shadowData.softParams[slot].y), taps = int(shadowData.softParams[slot].z);
     float major = cubeMajorAxisDistance(toPoint);
     vec3 direction = toPoint / major;
-    vec3 a = abs(toPoint);
-    // The face's two tangent axes: the ones that are not the major axis.
-    vec3 across = a.x >= a.y && a.x >= a.z ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0);
-    vec3 up = a.z >= a.x && a.z >= a.y ? vec3(0.0, 1.0, 0.0) : vec3(0.0, 0.0, 1.0);
-    vec2 gradient = pcssDepthGradient(vec3(dot(direction, across), dot(direction, up), reference));
-    float rotation = pcssRotation();
+    vec3 across, up;
+    cubeFaceAxes(toPoint, across, up);
+    vec2 gradient = receiverDepthGradient(vec3(dot(direction, across), dot(direction, up), reference));
+    float rotation = diskRotation();
     // A search disk wider than 45 degrees would look into other faces for blockers that
     // cannot hide this light's edge: capped at one tangent.
     float searchRadius = min(scale.x * pcssSpread(slot, major, pcssNearestBlocker(slot, scale)), 1.0);
     float sum = 0.0, count = 0.0;
     for (int i = 0; i < searchTaps; ++i) {
-        vec2 offset = pcssDiskTap(i, searchTaps, rotation) * searchRadius;
+        vec2 offset = diskTap(i, searchTaps, rotation) * searchRadius;
         vec4 depths = textureGather(map, direction + offset.x * across + offset.y * up);
         vec4 inFront = pcssInFront(depths, reference + dot(gradient, offset), reversed);
         for (int k = 0; k < 4; ++k) sum += inFront[k] > 0.0 ? pcssDistance(slot, scale, depths[k]) : 0.0;
@@ -160,7 +131,7 @@ float pcssCube(int slot, samplerCube map, vec3 toPoint, float reference) {
     float radius = max(scale.x * pcssSpread(slot, major, sum / count), 2.0 / shadowData.softParams[slot].w);
     float lit = 0.0;
     for (int i = 0; i < taps; ++i) {
-        vec2 offset = pcssDiskTap(i, taps, rotation) * radius;
+        vec2 offset = diskTap(i, taps, rotation) * radius;
         vec4 depths = textureGather(map, direction + offset.x * across + offset.y * up);
         lit += 1.0 - 0.25 * dot(pcssInFront(depths, reference + dot(gradient, offset), reversed), vec4(1.0));
     }

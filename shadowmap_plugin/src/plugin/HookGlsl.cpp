@@ -12,6 +12,7 @@ extern const char shadow_data_glsl[];
 extern const char map_shapes_glsl[];
 extern const char visibility_glsl[];
 extern const char texgen_glsl[];
+extern const char disk_taps_glsl[];
 } // namespace shaders
 
 namespace {
@@ -92,7 +93,8 @@ HookGlsl::Code generate(const std::vector<HookGlsl::Lookup>& lookups) {
                     suffix + slot + ", " + coordinate + ", uShadowMap" + slot + ");\n";
     }
     HookGlsl::Code code;
-    code.fragment = shadowBlockGlslDefines() + shaders::shadow_data_glsl + shaders::map_shapes_glsl + lookupFunctions +
+    code.fragment = shadowBlockGlslDefines() + shaders::shadow_data_glsl + shaders::map_shapes_glsl +
+                    shaders::disk_taps_glsl + lookupFunctions +
                     declarations +
                     "float lightVisibility(int lightSlot, vec3 eyePosition, vec3 eyeNormal) {\n" + dispatch +
                     "    return shadowData.params[lightSlot].w;\n}\n" +

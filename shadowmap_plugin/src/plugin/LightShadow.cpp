@@ -33,7 +33,7 @@ void LightShadow::ensureMap() {
     }
     // Reversed Z compares the other way round (lit where r >= stored: near is 1).
     map.setParameter(GL_TEXTURE_COMPARE_FUNC, settings.reversedZ ? GL_GEQUAL : GL_LEQUAL);
-    const GLint filter = mapLookup(settings.filter).bilinearCompare() ? GL_LINEAR : GL_NEAREST;
+    const GLint filter = mapLookupFor(settings).bilinearCompare() ? GL_LINEAR : GL_NEAREST;
     map.setParameter(GL_TEXTURE_MIN_FILTER, filter);
     map.setParameter(GL_TEXTURE_MAG_FILTER, filter);
 }

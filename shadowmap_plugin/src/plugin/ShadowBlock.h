@@ -28,6 +28,7 @@ struct ShadowBlock {
     // and per light.
     glm::vec4 softLayers[engine::kMaxLights * kMaxCascades];
     glm::vec4 softParams[engine::kMaxLights];
+    glm::vec4 filterParams[engine::kMaxLights];  // x: filter_radius (texels), y: filter_taps
 };
 
 // cascadeFar holds a light's cascades' far depths in one vec4 (visibility.glsl compares it
@@ -42,7 +43,8 @@ static_assert(offsetof(ShadowBlock, cascadeFar) == engine::kMaxLights * (112 + 6
 static_assert(offsetof(ShadowBlock, cascadeBlend) == engine::kMaxLights * (128 + 64 * kMaxCascades) + 64);
 static_assert(offsetof(ShadowBlock, softLayers) == engine::kMaxLights * (144 + 64 * kMaxCascades) + 64);
 static_assert(offsetof(ShadowBlock, softParams) == engine::kMaxLights * (144 + 80 * kMaxCascades) + 64);
-static_assert(sizeof(ShadowBlock) == engine::kMaxLights * (160 + 80 * kMaxCascades) + 64);
+static_assert(offsetof(ShadowBlock, filterParams) == engine::kMaxLights * (160 + 80 * kMaxCascades) + 64);
+static_assert(sizeof(ShadowBlock) == engine::kMaxLights * (176 + 80 * kMaxCascades) + 64);
 // Within the 16 KiB every GL 4.5 implementation must allow a uniform block
 // (GL_MAX_UNIFORM_BLOCK_SIZE's minimum).
 static_assert(sizeof(ShadowBlock) <= 16384);

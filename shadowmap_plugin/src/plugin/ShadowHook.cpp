@@ -58,7 +58,7 @@ engine::LightVisibilityHook ShadowHook::build(const engine::Frame& frame, const 
         // from the last unit, above every light's comparing unit.
         const int rawUnit = maxTextureUnits - 1 - light.slot;
         const bool debuggable = rawUnit >= kFirstUnit + static_cast<int>(lights.size());
-        const MapLookup& mapLookup = shadowmap::mapLookup(light.settings.filter);
+        const MapLookup& mapLookup = shadowmap::mapLookupFor(light.settings);
         HookGlsl::Lookup lookup{light.slot, unit, false, debuggable ? rawUnit : -1, 0, mapLookup.glslName()};
         if (!projection->packLookup(light, context, block, lookup)) {
             warn(light, "no shadow: its texgen planes for this camera are not finite");
@@ -83,6 +83,10 @@ engine::LightVisibilityHook ShadowHook::build(const engine::Frame& frame, const 
         shadeKey.add(params[light.slot]);
         mapLookup.addShadeKey(shadeKey);
         projection->addShadeKey(light, shadeKey);
+        block.filterParams[light.slot] =
+            glm::vec4(static_cast<float>(light.settings.filterRadius), static_cast<float>(light.settings.filterTaps),
+                      0.0f, 0.0f);
+        shadeKey.add(block.filterParams[light.slot]);
         shadeKey.add(block.softParams[light.slot]);
         for (int layer = 0; layer < kMaxCascades; ++layer) shadeKey.add(block.softLayers[light.slot * kMaxCascades + layer]);
         // Without map caching nothing is reused: a depth pass whose map no pass reads

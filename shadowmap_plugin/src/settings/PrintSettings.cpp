@@ -20,6 +20,7 @@ nlohmann::json printSettings(const ShadowSettings& settings) {
                           {"depth_format", toString(settings.depthFormat)},
                           {"filter", toString(settings.filter)},
                           {"filter_taps", settings.filterTaps},
+                          {"filter_radius", settings.filterRadius},
                           {"dimming", jsonNumber(settings.dimming)},
                           {"reversed_z", settings.reversedZ},
                           {"polygon_offset_clamp", jsonNumber(settings.polygonOffsetClamp)},

@@ -79,9 +79,17 @@ std::vector<SettingKey> makeKeys() {
     taps.maximum = kMaxFilterTaps;
     taps.steps = {8, 16, 32, 64};
     taps.values = std::to_string(kMinFilterTaps) + " … " + std::to_string(kMaxFilterTaps);
-    taps.description = "`pcss`: the filter's taps, each a 2×2 bilinear comparison; the blocker search takes half "
-                       "as many";
+    taps.description = "`pcss` and wide `pcf`: the filter's taps, each a 2×2 bilinear comparison; pcss's blocker "
+                       "search takes half as many";
     keys.push_back(taps);
+
+    SettingKey filterRadius = makeKey("filter_radius", SettingKind::Number);
+    filterRadius.minimum = 0;
+    filterRadius.maximum = kMaxFilterRadius;
+    filterRadius.values = "0 … " + engine::formatNumber(kMaxFilterRadius) + ", texels";
+    filterRadius.description = "`pcf`: filter over a disk of this radius (`filter_taps` rotated taps) instead of "
+                               "one 2×2 tap; 0: the one tap";
+    keys.push_back(filterRadius);
 
     SettingKey offset = makeKey("polygon_offset", SettingKind::NumberPair);
     offset.values = "`[factor, units]`";

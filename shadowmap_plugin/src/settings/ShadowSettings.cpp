@@ -87,6 +87,14 @@ void applySettings(ShadowSettings& settings, const nlohmann::json& json, const s
                                         std::to_string(kMaxFilterTaps) + "], got " + json["filter_taps"].dump());
         settings.filterTaps = static_cast<int>(taps);
     }
+    if (json.contains("filter_radius")) {
+        const double radius = json_read::readNumber(json["filter_radius"], source, key("filter_radius"));
+        if (radius < 0.0 || radius > kMaxFilterRadius)
+            engine::throwInputError(source, key("filter_radius"),
+                                    "must be in [0, " + engine::formatNumber(kMaxFilterRadius) + "] texels, got " +
+                                        json["filter_radius"].dump());
+        settings.filterRadius = radius;
+    }
     if (json.contains("polygon_offset")) {
         const auto& offset = json["polygon_offset"];
         if (!offset.is_array() || offset.size() != 2)
@@ -188,7 +196,12 @@ void checkSizeKeyForType(const nlohmann::json& json, engine::Light::Type type, c
 
 void checkFilterForType(const ShadowSettings& settings, engine::Light::Type type, const std::string& source,
                         const std::string& object) {
-    if (settings.variant == Variant::None || settings.filter != Filter::Pcss || settings.lightSize(type) > 0.0) return;
+    if (settings.variant == Variant::None) return;
+    if (settings.filterRadius > 0.0 && settings.filter != Filter::Pcf)
+        engine::throwInputError(source, object + ".filter_radius",
+                                std::string("widens pcf's kernel, and this light's filter is \"") +
+                                    toString(settings.filter) + "\": use filter \"pcf\", or filter_radius 0");
+    if (settings.filter != Filter::Pcss || settings.lightSize(type) > 0.0) return;
     const bool directional = type == engine::Light::Type::Directional;
     engine::throwInputError(source, object + ".filter",
                             std::string("\"pcss\" softens the shadow by the light's size, and this light has none: "

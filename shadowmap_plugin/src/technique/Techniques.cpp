@@ -5,6 +5,7 @@
 #include "technique/depth/WooDepth.h"
 #include "technique/lookup/HardwareCompareLookup.h"
 #include "technique/lookup/PcssLookup.h"
+#include "technique/lookup/WidePcfLookup.h"
 #include "technique/projection/CascadedMapProjection.h"
 #include "technique/projection/CubeMapProjection.h"
 #include "technique/projection/FittedMapProjection.h"
@@ -30,7 +31,9 @@ const MapProjection* const kProjections[] = {&kFittedMap, &kCubeMap, &kCascadedM
 const HardwareCompareLookup kNearest(Filter::Nearest, false);
 const HardwareCompareLookup kPcf(Filter::Pcf, true);
 const PcssLookup kPcss;
-const MapLookup* const kLookups[] = {&kNearest, &kPcf, &kPcss};
+const WidePcfLookup kWidePcf;
+// A filter's first entry is its lookup; wide pcf is pcf's with a filter radius.
+const MapLookup* const kLookups[] = {&kNearest, &kPcf, &kPcss, &kWidePcf};
 
 // The entry whose key matches, or nullptr.
 template <typename Entry, std::size_t N, typename Key, typename KeyOf>
@@ -69,6 +72,11 @@ const MapLookup& mapLookup(Filter filter) {
     // Every filter the settings accept has a lookup (TechniquesTest checks each).
     if (!lookup) throw std::logic_error("no lookup for filter " + std::string(toString(filter)));
     return *lookup;
+}
+
+const MapLookup& mapLookupFor(const ShadowSettings& settings) {
+    if (settings.filter == Filter::Pcf && settings.filterRadius > 0.0) return kWidePcf;
+    return mapLookup(settings.filter);
 }
 
 const MapLookup& mapLookupNamed(const std::string& glslName) {

@@ -20,7 +20,10 @@ std::vector<const DepthProgram*> depthPrograms();
 const MapProjection* mapProjection(MapKind kind);
 // The projection a light of this type gets with this many cascades this frame.
 const MapProjection& projectionFor(engine::Light::Type type, int cascadeCount);
+// The lookup of a filter as such (pcf: its one 2x2 tap).
 const MapLookup& mapLookup(Filter filter);
+// The lookup a light's settings read its map with: its filter's, widened by filter_radius.
+const MapLookup& mapLookupFor(const ShadowSettings& settings);
 // A lookup named `glslName` (MapLookup::glslName; lookups of one name share their GLSL and
 // sampler types); std::logic_error if none.
 const MapLookup& mapLookupNamed(const std::string& glslName);

@@ -26,10 +26,14 @@ protected:
         HookGlsl glsl;
         const std::string pcf = shadowmap::mapLookup(shadowmap::Filter::Pcf).glslName();
         const std::string pcss = shadowmap::mapLookup(shadowmap::Filter::Pcss).glslName();
+        shadowmap::ShadowSettings wide;
+        wide.filterRadius = 2.0;
+        const std::string widePcf = shadowmap::mapLookupFor(wide).glslName();
         const HookGlsl::Code& code = glsl.codeFor({{0, 8, false, -1, 0, pcf},
                                                    {1, 9, true, -1, 0, pcf},
                                                    {2, 10, false, -1, 3, pcf},
-                                                   {3, 11, false, -1, 0, pcss}});
+                                                   {3, 11, false, -1, 0, pcss},
+                                                   {4, 12, false, -1, 0, widePcf}});
         const std::string header = "#version 450 core\n#define MAX_LIGHTS " + std::to_string(engine::kMaxLights) + "\n";
         return engine::gl::Program::compile(
             "shadow block layout",
@@ -40,7 +44,7 @@ protected:
                                       "out vec4 outColor;\n"
                                       "void main() {\n  vec3 p = vec3(0.0, 0.0, -1.0), n = vec3(0.0, 0.0, 1.0);\n"
                                       "  outColor = vec4(lightVisibility(0, p, n), lightVisibility(1, p, n),\n"
-                                      "                  lightVisibility(2, p, n), lightVisibility(3, p, n));\n}\n"}});
+                                      "                  lightVisibility(2, p, n), lightVisibility(3, p, n) + lightVisibility(4, p, n));\n}\n"}});
     }
 
     struct Member {
@@ -85,6 +89,7 @@ TEST_F(ShadowBlockLayout, TheCompiledBlockIsTheCppStructAtTheCppBinding) {
         {"ShadowData.cascadeBlend[0]", offsetof(ShadowBlock, cascadeBlend), engine::kMaxLights},
         {"ShadowData.softLayers[0]", offsetof(ShadowBlock, softLayers), engine::kMaxLights * shadowmap::kMaxCascades},
         {"ShadowData.softParams[0]", offsetof(ShadowBlock, softParams), engine::kMaxLights},
+        {"ShadowData.filterParams[0]", offsetof(ShadowBlock, filterParams), engine::kMaxLights},
     };
     for (const auto& expected : members) {
         const Member compiled = member(program, expected.name);

@@ -141,4 +141,35 @@ TEST_F(SoftShadows, PcssWidensThePenumbraWithTheBlockersHeightAsTheTruthDoes) {
     EXPECT_LT(pcss.low.meanError(), 0.184);
 }
 
+// A floor alone under a sun 12 degrees above the horizon: in the light's map the floor is a
+// steep slope, and a kernel 8 texels wide spans a depth step there far beyond the polygon
+// offset. Each tap compares against the receiver's plane, so the lit floor stays lit (a
+// comparison against the centre's depth shadows most of it: with the plane term taken out of
+// widePcf.glsl, all but 16 of 87,264 floor pixels fell below 0.9).
+TEST_F(SoftShadows, WidePcfKeepsAGrazinglyLitFloorLit) {
+    engine::test::SceneBuilder builder;
+    builder.addBox("floor", {-kFloorHalf, -0.5, -kFloorHalf}, {kFloorHalf, 0.0, kFloorHalf});
+    const double elevation = 12.0 * 3.14159265358979323846 / 180.0;
+    builder.addLight("sun", engine::Light::Type::Directional,
+                     glm::dvec3(std::cos(elevation), std::sin(elevation), 0.0) * 100.0, glm::dvec3(0.0),
+                     {{"filter", "pcf"}, {"filter_radius", 8}, {"cascades", 1}, {"resolution", 1024}});
+    const engine::Scene scene = builder.build();
+    const engine::FrameCamera view = camera();
+    const std::vector<std::uint8_t> mask = engine::test::renderShadowMask(plugins(), scene, view, 0);
+    int floorPixels = 0, darkened = 0;
+    for (int y = 0; y < kHeight; ++y)
+        for (int x = 0; x < kWidth; ++x) {
+            const engine::test::Ray ray = engine::test::pixelRay(view, x, y);
+            if (ray.direction.y >= 0.0) continue;
+            const glm::dvec3 p = ray.origin - ray.direction * (ray.origin.y / ray.direction.y);
+            // Away from the floor's rim, where the kernel reaches past the floor's edge.
+            if (std::abs(p.x) > kFloorHalf - 0.5 || std::abs(p.z) > kFloorHalf - 0.5) continue;
+            ++floorPixels;
+            darkened += mask[y * kWidth + x] < 0.9 * 255;
+        }
+    std::printf("grazing sun, filter_radius 8: %d of %d floor pixels below 0.9\n", darkened, floorPixels);
+    ASSERT_GT(floorPixels, 50000);
+    EXPECT_EQ(darkened, 0);
+}
+
 } // namespace

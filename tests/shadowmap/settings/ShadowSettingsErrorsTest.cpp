@@ -51,7 +51,7 @@ const double kInfinity = std::numeric_limits<double>::infinity();
 TEST(ShadowSettingsErrors, UnknownKeyListsTheKnownOnes) {
     std::string known;
     for (const shadowmap::SettingKey& key : shadowmap::settingKeys()) known += (known.empty() ? "" : ", ") + key.name;
-    EXPECT_EQ(known, "variant, resolution, depth_format, filter, filter_taps, polygon_offset, dimming, near_plane, far_plane, "
+    EXPECT_EQ(known, "variant, resolution, depth_format, filter, filter_taps, filter_radius, polygon_offset, dimming, near_plane, far_plane, "
                      "reversed_z, polygon_offset_clamp, cascades, cascade_lambda, cascade_blend, stable, "
                      "light_radius, angular_diameter");
     expectNamed({"unknown key", {{"colour", "red"}}, "colour", "unknown key (known: " + known + ")"});
@@ -141,6 +141,13 @@ TEST(ShadowSettingsErrors, FilterTapsAreAWholeNumberInRange) {
     expectNamed({"taps NaN", {{"filter_taps", kNaN}}, "filter_taps", "must be finite"});
 }
 
+TEST(ShadowSettingsErrors, FilterRadiusIsInRange) {
+    const std::string expected = "must be in [0, 16] texels, got ";
+    expectNamed({"radius -1", {{"filter_radius", -1}}, "filter_radius", expected + "-1"});
+    expectNamed({"radius 16.5", {{"filter_radius", 16.5}}, "filter_radius", expected + "16.5"});
+    expectNamed({"radius NaN", {{"filter_radius", kNaN}}, "filter_radius", "must be finite"});
+}
+
 // pcss without a size would silently be a hard shadow: an error naming the key to set, for
 // the light's own type; a light without a shadow needs no size.
 TEST(ShadowSettingsErrors, PcssOnALightWithoutASizeIsNamed) {
@@ -163,6 +170,13 @@ TEST(ShadowSettingsErrors, PcssOnALightWithoutASizeIsNamed) {
     EXPECT_EQ(messageFor({{"filter", "pcss"}, {"light_radius", 0.1}}, Type::Point), "no error");
     EXPECT_EQ(messageFor({{"filter", "pcss"}, {"angular_diameter", 0.01}}, Type::Directional), "no error");
     EXPECT_EQ(messageFor({{"filter", "pcss"}, {"variant", "none"}}, Type::Spot), "no error");
+    // filter_radius widens pcf only: with another filter it would silently do nothing.
+    const std::string radius = std::string(kSource) + ": " + kObject + ".filter_radius: widens pcf's kernel, and ";
+    EXPECT_EQ(messageFor({{"filter", "nearest"}, {"filter_radius", 2}}, Type::Spot),
+              radius + "this light's filter is \"nearest\": use filter \"pcf\", or filter_radius 0");
+    EXPECT_NE(messageFor({{"filter", "pcss"}, {"light_radius", 0.1}, {"filter_radius", 2}}, Type::Spot), "no error");
+    EXPECT_EQ(messageFor({{"filter", "pcf"}, {"filter_radius", 2}}, Type::Spot), "no error");
+    EXPECT_EQ(messageFor({{"filter", "nearest"}, {"filter_radius", 0}}, Type::Spot), "no error");
 }
 
 TEST(ShadowSettingsErrors, PolygonOffsetIsTwoFiniteNumbers) {
