@@ -30,7 +30,7 @@ float cubeMajorAxisDistance(vec3 toPoint) {
 // with an infinite far (f = 0 here): 1 - n/major, reversed n/major. Its CPU twin is
 // cubeShadowReferenceDepth (math/LightFrustum.h); CubeReferenceDepthTest compares the two.
 float cubeReferenceDepth(int slot, float major) {
-    float n = shadowData.pointLight[slot].w, f = shadowData.pointFar[slot].x;
+    float n = shadowData.pointFar[slot].z, f = shadowData.pointFar[slot].x;
     bool reversed = shadowData.params[slot].x > 0.5;
     if (f <= 0.0) return reversed ? n / major : 1.0 - n / major;
     return reversed ? n / (f - n) * (f / major - 1.0) : f / (f - n) * (1.0 - n / major);
@@ -51,7 +51,40 @@ vec4 comparisonColor(float reference, float stored) {
     return reference > stored ? vec4(0.85, 0.1, 0.1, 1.0) : vec4(0.1, 0.2, 0.9, 1.0);
 }
 
-vec4 comparison2D(int slot, vec4 coord, sampler2D depth) {
+// Normal-offset bias: the receiver moved along its normal, in eye space, by normal_offset
+// texels of width `texelWidth` (the map's at the receiver) times the sine of the angle
+// between the normal and the light: nothing where the surface faces the light (the depth
+// bias suffices there), the most at grazing light, where a texel's depth step is largest.
+// Zero when normal_offset is 0. eyeNormal is unit length.
+vec3 normalOffset(int slot, vec3 eyePosition, vec3 eyeNormal, float texelWidth) {
+    vec4 light = shadowData.lightInEye[slot];
+    vec3 toLight = normalize(light.w > 0.5 ? light.xyz - eyePosition : light.xyz);
+    float cosine = clamp(dot(eyeNormal, toLight), -1.0, 1.0);
+    return eyeNormal * (shadowData.lookupParams[slot].w * texelWidth * sqrt(1.0 - cosine * cosine));
+}
+
+// The point each map shape's lookup compares, moved by the normal offset. Texgen is linear,
+// so an eye-space step d moves a 2D map's (s,t,r,q) by Ee * (d, 0); a cube's light-to-point
+// vector by d turned to world axes.
+vec4 offsetShadowCoord(int slot, vec4 coord, vec3 eyePosition, vec3 eyeNormal) {
+    vec3 offset = normalOffset(slot, eyePosition, eyeNormal, shadowData.texelWidths[slot].x * coord.w);
+    return coord + shadowData.eyePlanes[slot] * vec4(offset, 0.0);
+}
+
+vec3 offsetCascadeCoordinates(int slot, vec3 eyePosition, vec3 eyeNormal, int cascade) {
+    vec3 offset = normalOffset(slot, eyePosition, eyeNormal, shadowData.texelWidths[slot][cascade]);
+    return cascadeCoordinates(slot, eyePosition + offset, cascade);
+}
+
+vec3 offsetToPoint(int slot, vec3 toPoint, vec3 eyePosition, vec3 eyeNormal) {
+    float texelWidth = shadowData.texelWidths[slot].x * cubeMajorAxisDistance(toPoint);
+    return toPoint + mat3(shadowData.eyeToWorld) * normalOffset(slot, eyePosition, eyeNormal, texelWidth);
+}
+
+
+
+vec4 comparison2D(int slot, vec4 coord, vec3 eyePosition, vec3 eyeNormal, sampler2D depth) {
+    coord = offsetShadowCoord(slot, coord, eyePosition, eyeNormal);
     vec3 p = coord.xyz / coord.w;
     if (coord.w <= 0.0 || any(lessThan(p, vec3(0.0))) || any(greaterThan(p, vec3(1.0))))
         return vec4(0.4, 0.4, 0.4, 1.0);
@@ -60,9 +93,9 @@ vec4 comparison2D(int slot, vec4 coord, sampler2D depth) {
     return shadowData.params[slot].x > 0.5 ? comparisonColor(stored, p.z) : comparisonColor(p.z, stored);
 }
 
-vec4 comparisonCascades(int slot, vec3 eyePosition, sampler2DArray depth, int count) {
+vec4 comparisonCascades(int slot, vec3 eyePosition, vec3 eyeNormal, sampler2DArray depth, int count) {
     int cascade = cascadeIndex(slot, eyePosition, count);
-    vec3 p = (shadowData.cascadePlanes[slot * MAX_CASCADES + cascade] * vec4(eyePosition, 1.0)).xyz;
+    vec3 p = offsetCascadeCoordinates(slot, eyePosition, eyeNormal, cascade);
     if (any(lessThan(p, vec3(0.0))) || any(greaterThan(p, vec3(1.0)))) return vec4(0.4, 0.4, 0.4, 1.0);
     float stored = texture(depth, vec3(p.xy, float(cascade))).r;
     return shadowData.params[slot].x > 0.5 ? comparisonColor(stored, p.z) : comparisonColor(p.z, stored);
@@ -78,19 +111,19 @@ float cubeBiasedReference(int slot, float major) {
     // (pointFar.y holds kCubeTexelBias * 2 / res), so the bias is a fixed part of a texel at
     // every distance; the window depth grows with major as n f / ((f - n) major^2), or n / major^2
     // with an infinite far, and falls (reversed Z) as fast.
-    float n = shadowData.pointLight[slot].w, f = shadowData.pointFar[slot].x;
+    float n = shadowData.pointFar[slot].z, f = shadowData.pointFar[slot].x;
     float texelBias = (f <= 0.0 ? n / major : n * f / ((f - n) * major)) * shadowData.pointFar[slot].y;
     return depth + (reversed ? texelBias : -texelBias);
 }
 
-vec4 comparisonCube(int slot, vec3 toPoint, samplerCube depth) {
+vec4 comparisonCube(int slot, vec3 toPoint, vec3 eyePosition, vec3 eyeNormal, samplerCube depth) {
+    toPoint = offsetToPoint(slot, toPoint, eyePosition, eyeNormal);
     float major = cubeMajorAxisDistance(toPoint);
     float reference = cubeReferenceDepth(slot, major);
     bool reversed = shadowData.params[slot].x > 0.5;
-    if (major < shadowData.pointLight[slot].w || (reversed ? reference < 0.0 : reference > 1.0))
+    if (major < shadowData.pointFar[slot].z || (reversed ? reference < 0.0 : reference > 1.0))
         return vec4(0.4, 0.4, 0.4, 1.0);
     float stored = texture(depth, toPoint).r;
     float biased = cubeBiasedReference(slot, major);
     return reversed ? comparisonColor(stored, biased) : comparisonColor(biased, stored);
 }
-

@@ -11,9 +11,11 @@
 //               maps) or of every point of a light without a map this frame (1 for lights
 //               without shadows, 0 for a spot light whose frustum holds nothing the camera
 //               sees: every visible point is outside it)
-//   pointLight  eye-space light position, near (cube maps)
-//   pointFar    x: far (cube maps); 0 = infinite; y: the cube lookup's texel bias,
-//               kCubeTexelBias * 2 / resolution (CubeMapProjection.cpp)
+//   lightInEye  xyz: the light's eye-space position (spot, point: w 1) or the direction
+//               toward it (directional: w 0); w also tells a perspective map (1) from an
+//               orthographic one (0)
+//   pointFar    cube maps: x: far, 0 = infinite; y: the cube lookup's texel bias,
+//               kCubeTexelBias * 2 / resolution (CubeMapProjection.cpp); z: near
 //   eyeToWorld  R_V in its upper 3x3: cube lookups use world axes
 //   cascadePlanes  Ee of each cascade of a cascaded directional light,
 //               [slot * MAX_CASCADES + cascade]
@@ -28,19 +30,21 @@
 //               the light radius (perspective) or tan(angular_diameter / 2) (orthographic);
 //               z: near (perspective) or 0; w: far (perspective, 0 = infinite) or the depth
 //               range far - near (orthographic); all 0 for a light without a size
-//   softParams  x: 1 = perspective (spot, point), 0 = orthographic (directional); y: the
-//               blocker search's taps; z: the filter's taps; w: the map's texels per side
-//   filterParams  wide pcf: x: filter_radius in texels, y: filter_taps
+//   lookupParams  x: filter_radius in texels (wide pcf); y: pcss's blocker search taps;
+//               z: filter_taps; w: normal_offset in texels
+//   texelWidths   a map texel's width in eye units per unit of q (2D maps: q is the distance
+//               along the light's axis for a spot light, 1 for a directional one) in x, per
+//               unit of the major-axis distance for a cube in x, or per cascade in x..w
 layout(std140, binding = SHADOW_BLOCK_BINDING) uniform ShadowData {
     mat4 eyePlanes[MAX_LIGHTS];
     vec4 params[MAX_LIGHTS];
-    vec4 pointLight[MAX_LIGHTS];
+    vec4 lightInEye[MAX_LIGHTS];
     vec4 pointFar[MAX_LIGHTS];
     mat4 eyeToWorld;
     mat4 cascadePlanes[MAX_LIGHTS * MAX_CASCADES];
     vec4 cascadeFar[MAX_LIGHTS];
     vec4 cascadeBlend[MAX_LIGHTS];
     vec4 softLayers[MAX_LIGHTS * MAX_CASCADES];
-    vec4 softParams[MAX_LIGHTS];
-    vec4 filterParams[MAX_LIGHTS];
+    vec4 lookupParams[MAX_LIGHTS];
+    vec4 texelWidths[MAX_LIGHTS];
 } shadowData;

@@ -17,5 +17,5 @@ vec4 shadowCoord(int slot, vec3 eyePosition) {
 }
 
 vec3 shadowToPoint(int slot, vec3 eyePosition) {
-    return mat3(shadowData.eyeToWorld) * (eyePosition - shadowData.pointLight[slot].xyz);
+    return mat3(shadowData.eyeToWorld) * (eyePosition - shadowData.lightInEye[slot].xyz);
 }

@@ -32,8 +32,10 @@
 // branch-free form.
 // Reversed Z flips the depth range: nearer than near is r > 1, beyond far is r < 0, and
 // "behind everything the map holds" is r = 0.
-// coord: (s,t,r,q) from the vertex part (texgen.glsl).
-float shadowMap2D_$LOOKUP(int slot, vec4 coord, $SAMPLER2D map) {
+// coord: (s,t,r,q) from the vertex part (texgen.glsl), moved by the normal offset
+// (map_shapes.glsl).
+float shadowMap2D_$LOOKUP(int slot, vec4 coord, vec3 eyePosition, vec3 eyeNormal, $SAMPLER2D map) {
+    coord = offsetShadowCoord(slot, coord, eyePosition, eyeNormal);
     vec3 p = coord.xyz / coord.w;
     bool reversed = shadowData.params[slot].x > 0.5;
     float reference = p.z - shadowData.params[slot].y;
@@ -45,8 +47,8 @@ float shadowMap2D_$LOOKUP(int slot, vec4 coord, $SAMPLER2D map) {
 }
 
 // One cascade's lookup (as shadowMap2D, orthographic: q = 1, never behind the light).
-float cascadeShade_$LOOKUP(int slot, vec3 eyePosition, $SAMPLERARRAY map, int cascade) {
-    vec3 p = cascadeCoordinates(slot, eyePosition, cascade);
+float cascadeShade_$LOOKUP(int slot, vec3 eyePosition, vec3 eyeNormal, $SAMPLERARRAY map, int cascade) {
+    vec3 p = offsetCascadeCoordinates(slot, eyePosition, eyeNormal, cascade);
     bool reversed = shadowData.params[slot].x > 0.5;
     float reference = p.z - shadowData.params[slot].y;
     float shade = $LOOKUPArray(slot, map, p.xy, cascade, reversed ? max(reference, 0.0) : min(reference, 1.0));
@@ -58,9 +60,9 @@ float cascadeShade_$LOOKUP(int slot, vec3 eyePosition, $SAMPLERARRAY map, int ca
 // With cascade_blend, just past a split the shade fades from the nearer cascade into the
 // pixel's own (weight 0 at the split, 1 at the band's end), where the nearer map holds the
 // point (a fitted cascade is fitted to reach over the band; math/CascadeFit.cpp).
-float shadowMapCascades_$LOOKUP(int slot, vec3 eyePosition, $SAMPLERARRAY map, int count) {
+float shadowMapCascades_$LOOKUP(int slot, vec3 eyePosition, vec3 eyeNormal, $SAMPLERARRAY map, int count) {
     int cascade = cascadeIndex(slot, eyePosition, count);
-    float shade = cascadeShade_$LOOKUP(slot, eyePosition, map, cascade);
+    float shade = cascadeShade_$LOOKUP(slot, eyePosition, eyeNormal, map, cascade);
     float blend = shadowData.cascadeBlend[slot].x;
     if (blend > 0.0 && cascade > 0) {
         float start = shadowData.cascadeFar[slot][cascade - 1];
@@ -68,15 +70,17 @@ float shadowMapCascades_$LOOKUP(int slot, vec3 eyePosition, $SAMPLERARRAY map, i
         float t = (-eyePosition.z - start) / (blend * (start - previousStart));
         vec2 nearer = cascadeCoordinates(slot, eyePosition, cascade - 1).xy;
         bool held = all(greaterThanEqual(nearer, vec2(0.0))) && all(lessThanEqual(nearer, vec2(1.0)));
-        if (t < 1.0 && held) shade = mix(cascadeShade_$LOOKUP(slot, eyePosition, map, cascade - 1), shade, max(t, 0.0));
+        if (t < 1.0 && held) shade = mix(cascadeShade_$LOOKUP(slot, eyePosition, eyeNormal, map, cascade - 1), shade, max(t, 0.0));
     }
     return shade;
 }
 
-// toPoint: light -> point along world axes, from the vertex part (texgen.glsl).
-float shadowMapCube_$LOOKUP(int slot, vec3 toPoint, $SAMPLERCUBE map) {
+// toPoint: light -> point along world axes, from the vertex part (texgen.glsl), moved by the
+// normal offset.
+float shadowMapCube_$LOOKUP(int slot, vec3 toPoint, vec3 eyePosition, vec3 eyeNormal, $SAMPLERCUBE map) {
+    toPoint = offsetToPoint(slot, toPoint, eyePosition, eyeNormal);
     float major = cubeMajorAxisDistance(toPoint);
-    if (major < shadowData.pointLight[slot].w) return 1.0;
+    if (major < shadowData.pointFar[slot].z) return 1.0;
     float depth = cubeBiasedReference(slot, major);
     bool reversed = shadowData.params[slot].x > 0.5;
     return $LOOKUPCube(slot, map, toPoint, reversed ? max(depth, 0.0) : min(depth, 1.0));

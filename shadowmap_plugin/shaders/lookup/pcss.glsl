@@ -2,11 +2,11 @@
 // (comparison off): a blocker search over where the light's edge can be hidden from the
 // receiver, the blockers' mean distance, and a filter as wide as the penumbra that distance
 // makes (similar triangles). The light's size per layer and the depth-to-distance terms come
-// from shadow_data.glsl's softLayers and softParams.
+// from shadow_data.glsl's softLayers, lookupParams and lightInEye.
 // Every tap compares against the receiver's own plane (disk_taps.glsl), so the polygon
 // offset stays the 2x2 filter's.
 
-bool pcssPerspective(int slot) { return shadowData.softParams[slot].x > 0.5; }
+bool pcssPerspective(int slot) { return shadowData.lightInEye[slot].w > 0.5; }
 
 // The distance of window depth z: from the light along the view axis (perspective, the
 // inverse of the projection's depth, reversed or not, far 0 = infinite), or from the near
@@ -55,7 +55,7 @@ float pcssBilinear(vec4 lit, vec2 st, float texels) {
                               vec2 gradient, vec2 searchRadius, float rotation) {                \
         bool reversed = shadowData.params[slot].x > 0.5;                                         \
         vec4 scale = shadowData.softLayers[slot * MAX_CASCADES + layer];                         \
-        int taps = int(shadowData.softParams[slot].y);                                          \
+        int taps = int(shadowData.lookupParams[slot].y);                                        \
         float sum = 0.0, count = 0.0;                                                            \
         for (int i = 0; i < taps; ++i) {                                                         \
             vec2 offset = diskTap(i, taps, rotation) * searchRadius;                         \
@@ -74,8 +74,8 @@ PCSS_BLOCKER_DISTANCE(sampler2DArray)
     float pcssShade(int slot, SAMPLER map, vec2 st, int layer, float reference) {                \
         bool reversed = shadowData.params[slot].x > 0.5;                                          \
         vec4 scale = shadowData.softLayers[slot * MAX_CASCADES + layer];                          \
-        float texels = shadowData.softParams[slot].w;                                             \
-        int taps = int(shadowData.softParams[slot].z);                                            \
+        float texels = float(textureSize(map, 0).x);                                              \
+        int taps = int(shadowData.lookupParams[slot].z);                                          \
         float receiver = pcssDistance(slot, scale, reference);                                    \
         vec2 gradient = receiverDepthGradient(vec3(st, reference));                                   \
         float rotation = diskRotation();                                                          \
@@ -109,7 +109,7 @@ float pcssArray(int slot, sampler2DArray map, vec2 st, int layer, float referenc
 float pcssCube(int slot, samplerCube map, vec3 toPoint, float reference) {
     bool reversed = shadowData.params[slot].x > 0.5;
     vec4 scale = shadowData.softLayers[slot * MAX_CASCADES];
-    int searchTaps = int(shadowData.softParams[slot].y), taps = int(shadowData.softParams[slot].z);
+    int searchTaps = int(shadowData.lookupParams[slot].y), taps = int(shadowData.lookupParams[slot].z);
     float major = cubeMajorAxisDistance(toPoint);
     vec3 direction = toPoint / major;
     vec3 across, up;
@@ -128,7 +128,7 @@ float pcssCube(int slot, samplerCube map, vec3 toPoint, float reference) {
         count += dot(inFront, vec4(1.0));
     }
     if (count == 0.0) return 1.0;
-    float radius = max(scale.x * pcssSpread(slot, major, sum / count), 2.0 / shadowData.softParams[slot].w);
+    float radius = max(scale.x * pcssSpread(slot, major, sum / count), 2.0 / float(textureSize(map, 0).x));
     float lit = 0.0;
     for (int i = 0; i < taps; ++i) {
         vec2 offset = diskTap(i, taps, rotation) * radius;

@@ -1,7 +1,7 @@
 // Percentage-closer filtering over a disk (technique/lookup/WidePcfLookup.h): filter_taps
 // taps on a Vogel disk of filter_radius texels turned per pixel (disk_taps.glsl), each a 2x2
 // bilinear hardware comparison against the receiver's own plane. shadow_data.glsl's
-// filterParams hold the radius and the taps.
+// lookupParams hold the radius (x) and the taps (z).
 
 // A tap's reference: on the receiver's plane, clamped as the caller clamped the centre's
 // (visibility.glsl).
@@ -11,8 +11,8 @@ float widePcfReference(int slot, float reference, vec2 gradient, vec2 offset) {
 }
 
 float widePcf2D(int slot, sampler2DShadow map, vec2 st, float reference) {
-    vec2 radius = vec2(shadowData.filterParams[slot].x) / vec2(textureSize(map, 0));
-    int taps = int(shadowData.filterParams[slot].y);
+    vec2 radius = vec2(shadowData.lookupParams[slot].x) / vec2(textureSize(map, 0));
+    int taps = int(shadowData.lookupParams[slot].z);
     vec2 gradient = receiverDepthGradient(vec3(st, reference));
     float rotation = diskRotation();
     float lit = 0.0;
@@ -25,8 +25,8 @@ float widePcf2D(int slot, sampler2DShadow map, vec2 st, float reference) {
 
 // One cascade's layer: the radius is in its own texels.
 float widePcfArray(int slot, sampler2DArrayShadow map, vec2 st, int layer, float reference) {
-    vec2 radius = vec2(shadowData.filterParams[slot].x) / vec2(textureSize(map, 0).xy);
-    int taps = int(shadowData.filterParams[slot].y);
+    vec2 radius = vec2(shadowData.lookupParams[slot].x) / vec2(textureSize(map, 0).xy);
+    int taps = int(shadowData.lookupParams[slot].z);
     vec2 gradient = receiverDepthGradient(vec3(st, reference));
     float rotation = diskRotation();
     float lit = 0.0;
@@ -40,8 +40,8 @@ float widePcfArray(int slot, sampler2DArrayShadow map, vec2 st, int layer, float
 // A cube map: offsets on the face's plane at unit distance along the major axis, where a
 // texel is 2 / resolution wide.
 float widePcfCube(int slot, samplerCubeShadow map, vec3 toPoint, float reference) {
-    float radius = 2.0 * shadowData.filterParams[slot].x / float(textureSize(map, 0).x);
-    int taps = int(shadowData.filterParams[slot].y);
+    float radius = 2.0 * shadowData.lookupParams[slot].x / float(textureSize(map, 0).x);
+    int taps = int(shadowData.lookupParams[slot].z);
     vec3 direction = toPoint / cubeMajorAxisDistance(toPoint);
     vec3 across, up;
     cubeFaceAxes(toPoint, across, up);

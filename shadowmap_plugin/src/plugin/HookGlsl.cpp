@@ -65,12 +65,12 @@ HookGlsl::Code generate(const std::vector<HookGlsl::Lookup>& lookups) {
                 declarations += "layout(binding = " + std::to_string(lookup.rawUnit) +
                                 ") uniform sampler2DArray uShadowDepth" + slot + ";\n";
                 debugDispatch += "    if (lightSlot == " + slot + ") return comparisonCascades(" + slot +
-                                 ", eyePosition, uShadowDepth" + slot + ", " + count + ");\n";
+                                 ", eyePosition, eyeNormal, uShadowDepth" + slot + ", " + count + ");\n";
             }
             declarations += "layout(binding = " + std::to_string(lookup.unit) +
                             ") uniform " + types.array + " uShadowMap" + slot + ";\n";
             dispatch += "    if (lightSlot == " + slot + ") return shadowMapCascades" + suffix + slot +
-                        ", eyePosition, uShadowMap" + slot + ", " + count + ");\n";
+                        ", eyePosition, eyeNormal, uShadowMap" + slot + ", " + count + ");\n";
             continue;
         }
         // The lookup's coordinates come interpolated from the vertex part (texgen.glsl).
@@ -85,12 +85,12 @@ HookGlsl::Code generate(const std::vector<HookGlsl::Lookup>& lookups) {
                             (lookup.cube ? "samplerCube" : "sampler2D") + " uShadowDepth" + slot + ";\n";
             debugDispatch += "    if (lightSlot == " + slot + ") return " +
                              (lookup.cube ? "comparisonCube(" : "comparison2D(") + slot + ", " + coordinate +
-                             ", uShadowDepth" + slot + ");\n";
+                             ", eyePosition, eyeNormal, uShadowDepth" + slot + ");\n";
         }
         declarations += "layout(binding = " + std::to_string(lookup.unit) + ") uniform " +
                         (lookup.cube ? types.cube : types.map2D) + " uShadowMap" + slot + ";\n";
         dispatch += "    if (lightSlot == " + slot + ") return " + (lookup.cube ? "shadowMapCube" : "shadowMap2D") +
-                    suffix + slot + ", " + coordinate + ", uShadowMap" + slot + ");\n";
+                    suffix + slot + ", " + coordinate + ", eyePosition, eyeNormal, uShadowMap" + slot + ");\n";
     }
     HookGlsl::Code code;
     code.fragment = shadowBlockGlslDefines() + shaders::shadow_data_glsl + shaders::map_shapes_glsl +

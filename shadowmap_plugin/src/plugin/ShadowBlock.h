@@ -18,8 +18,8 @@ constexpr unsigned kShadowBlockBinding = engine::kFirstPluginUniformBinding;
 struct ShadowBlock {
     glm::mat4 eyePlanes[engine::kMaxLights];
     glm::vec4 params[engine::kMaxLights];
-    glm::vec4 pointLight[engine::kMaxLights];
-    glm::vec4 pointFar[engine::kMaxLights];  // x: far, y: cube texel bias (a float array would have a 16-byte stride anyway)
+    glm::vec4 lightInEye[engine::kMaxLights];  // xyz: position (spot, point) or toward the light (directional); w: 1, 0
+    glm::vec4 pointFar[engine::kMaxLights];  // x: far, y: cube texel bias, z: near (a float array would have a 16-byte stride anyway)
     glm::mat4 eyeToWorld;
     glm::mat4 cascadePlanes[engine::kMaxLights * kMaxCascades];  // light slot * kMaxCascades + cascade
     glm::vec4 cascadeFar[engine::kMaxLights];                    // far view depth per cascade
@@ -27,23 +27,25 @@ struct ShadowBlock {
     // Soft shadows (technique/SoftShadowLayers.h): per light and layer (2D map and cube: 0)
     // and per light.
     glm::vec4 softLayers[engine::kMaxLights * kMaxCascades];
-    glm::vec4 softParams[engine::kMaxLights];
-    glm::vec4 filterParams[engine::kMaxLights];  // x: filter_radius (texels), y: filter_taps
+    // What the lookup reads beyond the map (technique/LookupParams.h): filter and normal
+    // offset per light; a texel's width per light (2D map, cube) or per cascade.
+    glm::vec4 lookupParams[engine::kMaxLights];
+    glm::vec4 texelWidths[engine::kMaxLights];
 };
 
 // cascadeFar holds a light's cascades' far depths in one vec4 (visibility.glsl compares it
 // with the pixel's depth at once).
 static_assert(kMaxCascades <= 4);
 static_assert(offsetof(ShadowBlock, params) == engine::kMaxLights * 64);
-static_assert(offsetof(ShadowBlock, pointLight) == engine::kMaxLights * 80);
+static_assert(offsetof(ShadowBlock, lightInEye) == engine::kMaxLights * 80);
 static_assert(offsetof(ShadowBlock, pointFar) == engine::kMaxLights * 96);
 static_assert(offsetof(ShadowBlock, eyeToWorld) == engine::kMaxLights * 112);
 static_assert(offsetof(ShadowBlock, cascadePlanes) == engine::kMaxLights * 112 + 64);
 static_assert(offsetof(ShadowBlock, cascadeFar) == engine::kMaxLights * (112 + 64 * kMaxCascades) + 64);
 static_assert(offsetof(ShadowBlock, cascadeBlend) == engine::kMaxLights * (128 + 64 * kMaxCascades) + 64);
 static_assert(offsetof(ShadowBlock, softLayers) == engine::kMaxLights * (144 + 64 * kMaxCascades) + 64);
-static_assert(offsetof(ShadowBlock, softParams) == engine::kMaxLights * (144 + 80 * kMaxCascades) + 64);
-static_assert(offsetof(ShadowBlock, filterParams) == engine::kMaxLights * (160 + 80 * kMaxCascades) + 64);
+static_assert(offsetof(ShadowBlock, lookupParams) == engine::kMaxLights * (144 + 80 * kMaxCascades) + 64);
+static_assert(offsetof(ShadowBlock, texelWidths) == engine::kMaxLights * (160 + 80 * kMaxCascades) + 64);
 static_assert(sizeof(ShadowBlock) == engine::kMaxLights * (176 + 80 * kMaxCascades) + 64);
 // Within the 16 KiB every GL 4.5 implementation must allow a uniform block
 // (GL_MAX_UNIFORM_BLOCK_SIZE's minimum).

@@ -1,6 +1,7 @@
 #include "plugin/ShadowHook.h"
 
 #include "plugin/ShadowBlock.h"
+#include "technique/LookupParams.h"
 #include "technique/Techniques.h"
 
 #include "engine/scene/Scene.h"
@@ -83,11 +84,10 @@ engine::LightVisibilityHook ShadowHook::build(const engine::Frame& frame, const 
         shadeKey.add(params[light.slot]);
         mapLookup.addShadeKey(shadeKey);
         projection->addShadeKey(light, shadeKey);
-        block.filterParams[light.slot] =
-            glm::vec4(static_cast<float>(light.settings.filterRadius), static_cast<float>(light.settings.filterTaps),
-                      0.0f, 0.0f);
-        shadeKey.add(block.filterParams[light.slot]);
-        shadeKey.add(block.softParams[light.slot]);
+        block.lookupParams[light.slot] = lookupParams(light.settings);
+        shadeKey.add(block.lookupParams[light.slot]);
+        shadeKey.add(block.texelWidths[light.slot]);
+        shadeKey.add(block.lightInEye[light.slot]);
         for (int layer = 0; layer < kMaxCascades; ++layer) shadeKey.add(block.softLayers[light.slot * kMaxCascades + layer]);
         // Without map caching nothing is reused: a depth pass whose map no pass reads
         // would be culled, and timing runs (bench, cache_maps false) would time nothing.

@@ -21,6 +21,7 @@ nlohmann::json printSettings(const ShadowSettings& settings) {
                           {"filter", toString(settings.filter)},
                           {"filter_taps", settings.filterTaps},
                           {"filter_radius", settings.filterRadius},
+                          {"normal_offset", settings.normalOffset},
                           {"dimming", jsonNumber(settings.dimming)},
                           {"reversed_z", settings.reversedZ},
                           {"polygon_offset_clamp", jsonNumber(settings.polygonOffsetClamp)},

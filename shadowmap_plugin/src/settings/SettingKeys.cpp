@@ -91,6 +91,15 @@ std::vector<SettingKey> makeKeys() {
                                "one 2×2 tap; 0: the one tap";
     keys.push_back(filterRadius);
 
+    SettingKey normalOffset = makeKey("normal_offset", SettingKind::Number);
+    normalOffset.minimum = 0;
+    normalOffset.maximum = kMaxNormalOffset;
+    normalOffset.values = "0 … " + engine::formatNumber(kMaxNormalOffset) + ", texels";
+    normalOffset.description = "the lookup moves the receiver along its normal by this many texels of the map "
+                               "there, times the sine of the light's angle to the normal: acne at grazing light "
+                               "goes, at the price of shadows that start a little late";
+    keys.push_back(normalOffset);
+
     SettingKey offset = makeKey("polygon_offset", SettingKind::NumberPair);
     offset.values = "`[factor, units]`";
     offset.defaultNote = defaultOffsetNote();

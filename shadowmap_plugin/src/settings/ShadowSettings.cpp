@@ -95,6 +95,14 @@ void applySettings(ShadowSettings& settings, const nlohmann::json& json, const s
                                         json["filter_radius"].dump());
         settings.filterRadius = radius;
     }
+    if (json.contains("normal_offset")) {
+        const double offset = json_read::readNumber(json["normal_offset"], source, key("normal_offset"));
+        if (offset < 0.0 || offset > kMaxNormalOffset)
+            engine::throwInputError(source, key("normal_offset"),
+                                    "must be in [0, " + engine::formatNumber(kMaxNormalOffset) + "] texels, got " +
+                                        json["normal_offset"].dump());
+        settings.normalOffset = offset;
+    }
     if (json.contains("polygon_offset")) {
         const auto& offset = json["polygon_offset"];
         if (!offset.is_array() || offset.size() != 2)

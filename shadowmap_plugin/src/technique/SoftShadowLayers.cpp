@@ -37,11 +37,4 @@ glm::vec4 softCubeLayer(const PointLightViews& views, const LightState& light) {
     return glm::vec4(radius, radius, static_cast<float>(views.nearPlane), finiteOrZero(views.farPlane));
 }
 
-glm::vec4 softParams(const LightState& light) {
-    const int filterTaps = light.settings.filterTaps;
-    const int searchTaps = std::max(kMinFilterTaps, filterTaps / 2);
-    return glm::vec4(perspective(light) ? 1.0f : 0.0f, static_cast<float>(searchTaps), static_cast<float>(filterTaps),
-                     static_cast<float>(light.settings.resolution));
-}
-
 } // namespace shadowmap

@@ -1,7 +1,7 @@
 #pragma once
 // The uniform block's entries a soft filter (pcss) reads for one light: how large the light
 // is in each layer's map coordinates and how the layer's window depth turns into distance
-// (shaders/shadow_data.glsl, softLayers and softParams, says what each component holds).
+// (shaders/shadow_data.glsl, softLayers, says what each component holds).
 // Each projection packs its layers with these; a light without a size packs zeros, and its
 // hard lookup never reads them.
 #include "plugin/ShadowBlock.h"
@@ -14,7 +14,5 @@ glm::vec4 softLayer(const LightView& view, const LightState& light);
 // A point light's cube: faces are 90-degree perspective views whose map coordinates are the
 // face's tangents, with the cube's near and far.
 glm::vec4 softCubeLayer(const PointLightViews& views, const LightState& light);
-// The light's own entry: the projection's kind and the tap counts.
-glm::vec4 softParams(const LightState& light);
 
 } // namespace shadowmap

@@ -74,12 +74,13 @@ protected:
         shadowmap::ShadowBlock block{};
         for (int slot = 0; slot < engine::kMaxLights; ++slot) {
             block.params[slot] = glm::vec4(1.0f - float(light.reversed), 0, 0, 0);
-            block.pointLight[slot] = glm::vec4(0, 0, 0, 3.0f);
-            block.pointFar[slot] = glm::vec4(7.0f);
+            block.lightInEye[slot] = glm::vec4(0, 0, 0, 1.0f);
+            block.pointFar[slot] = glm::vec4(7.0f, 7.0f, 3.0f, 7.0f);
         }
         block.params[kSlot] = glm::vec4(light.reversed ? 1.0f : 0.0f, 0.0f, 0.4f, 1.0f);
-        block.pointLight[kSlot] = glm::vec4(1.0f, 2.0f, 3.0f, light.nearPlane);
+        block.lightInEye[kSlot] = glm::vec4(1.0f, 2.0f, 3.0f, 1.0f);
         block.pointFar[kSlot].x = light.farPlane;
+        block.pointFar[kSlot].z = light.nearPlane;
         const engine::gl::Buffer blockBuffer = shadowmap::test::bindShadowBlock(block);
 
         engine::gl::Buffer buffer = engine::gl::Buffer::create(directions.size() * sizeof(glm::vec4), directions.data());

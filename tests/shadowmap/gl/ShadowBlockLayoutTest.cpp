@@ -81,15 +81,15 @@ TEST_F(ShadowBlockLayout, TheCompiledBlockIsTheCppStructAtTheCppBinding) {
     } members[] = {
         {"ShadowData.eyePlanes[0]", offsetof(ShadowBlock, eyePlanes), engine::kMaxLights},
         {"ShadowData.params[0]", offsetof(ShadowBlock, params), engine::kMaxLights},
-        {"ShadowData.pointLight[0]", offsetof(ShadowBlock, pointLight), engine::kMaxLights},
+        {"ShadowData.lightInEye[0]", offsetof(ShadowBlock, lightInEye), engine::kMaxLights},
         {"ShadowData.pointFar[0]", offsetof(ShadowBlock, pointFar), engine::kMaxLights},
         {"ShadowData.eyeToWorld", offsetof(ShadowBlock, eyeToWorld), 1},
         {"ShadowData.cascadePlanes[0]", offsetof(ShadowBlock, cascadePlanes), engine::kMaxLights * shadowmap::kMaxCascades},
         {"ShadowData.cascadeFar[0]", offsetof(ShadowBlock, cascadeFar), engine::kMaxLights},
         {"ShadowData.cascadeBlend[0]", offsetof(ShadowBlock, cascadeBlend), engine::kMaxLights},
         {"ShadowData.softLayers[0]", offsetof(ShadowBlock, softLayers), engine::kMaxLights * shadowmap::kMaxCascades},
-        {"ShadowData.softParams[0]", offsetof(ShadowBlock, softParams), engine::kMaxLights},
-        {"ShadowData.filterParams[0]", offsetof(ShadowBlock, filterParams), engine::kMaxLights},
+        {"ShadowData.lookupParams[0]", offsetof(ShadowBlock, lookupParams), engine::kMaxLights},
+        {"ShadowData.texelWidths[0]", offsetof(ShadowBlock, texelWidths), engine::kMaxLights},
     };
     for (const auto& expected : members) {
         const Member compiled = member(program, expected.name);

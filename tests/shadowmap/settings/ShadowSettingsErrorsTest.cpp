@@ -51,7 +51,7 @@ const double kInfinity = std::numeric_limits<double>::infinity();
 TEST(ShadowSettingsErrors, UnknownKeyListsTheKnownOnes) {
     std::string known;
     for (const shadowmap::SettingKey& key : shadowmap::settingKeys()) known += (known.empty() ? "" : ", ") + key.name;
-    EXPECT_EQ(known, "variant, resolution, depth_format, filter, filter_taps, filter_radius, polygon_offset, dimming, near_plane, far_plane, "
+    EXPECT_EQ(known, "variant, resolution, depth_format, filter, filter_taps, filter_radius, normal_offset, polygon_offset, dimming, near_plane, far_plane, "
                      "reversed_z, polygon_offset_clamp, cascades, cascade_lambda, cascade_blend, stable, "
                      "light_radius, angular_diameter");
     expectNamed({"unknown key", {{"colour", "red"}}, "colour", "unknown key (known: " + known + ")"});
@@ -139,6 +139,13 @@ TEST(ShadowSettingsErrors, FilterTapsAreAWholeNumberInRange) {
     expectNamed({"taps 65", {{"filter_taps", 65}}, "filter_taps", expected + "65"});
     expectNamed({"taps 8.5", {{"filter_taps", 8.5}}, "filter_taps", expected + "8.5"});
     expectNamed({"taps NaN", {{"filter_taps", kNaN}}, "filter_taps", "must be finite"});
+}
+
+TEST(ShadowSettingsErrors, NormalOffsetIsInRange) {
+    const std::string expected = "must be in [0, 8] texels, got ";
+    expectNamed({"offset -0.5", {{"normal_offset", -0.5}}, "normal_offset", expected + "-0.5"});
+    expectNamed({"offset 9", {{"normal_offset", 9}}, "normal_offset", expected + "9"});
+    expectNamed({"offset text", {{"normal_offset", "1"}}, "normal_offset", "must be a number"});
 }
 
 TEST(ShadowSettingsErrors, FilterRadiusIsInRange) {

@@ -33,6 +33,7 @@ std::vector<KeyChange> oneChangePerKey() {
         {"filter", [](ShadowSettings& s) { s.filter = shadowmap::Filter::Nearest; }},
         {"filter_taps", [](ShadowSettings& s) { s.filterTaps = 40; }},
         {"filter_radius", [](ShadowSettings& s) { s.filterRadius = 2.73; }},
+        {"normal_offset", [](ShadowSettings& s) { s.normalOffset = 1.37; }},
         {"polygon_offset", [](ShadowSettings& s) { s.polygonOffset = glm::vec2(1.1f, 4.3f); }},
         {"dimming", [](ShadowSettings& s) { s.dimming = 0.73f; }},
         {"near_plane", [](ShadowSettings& s) { s.nearPlane = 0.1; }},
@@ -62,7 +63,7 @@ TEST(ShadowSettingsRoundTrip, DefaultsPrintAsDocumented) {
     // README's table and DESIGN.md: standard, 2048, d24, pcf, dimming 0.4; no forced
     // planes, no explicit offset, no reversal, no clamp, a light without a size.
     const nlohmann::json expected = {{"variant", "standard"}, {"resolution", 2048}, {"depth_format", "d24"},
-                                     {"filter", "pcf"},       {"filter_taps", 16},      {"filter_radius", 0.0},   {"dimming", 0.4},     {"reversed_z", false},
+                                     {"filter", "pcf"},       {"filter_taps", 16},      {"filter_radius", 0.0},   {"normal_offset", 0.25},   {"dimming", 0.4},     {"reversed_z", false},
                                      {"polygon_offset_clamp", 0.0}, {"cascades", "auto"},
                                      {"cascade_lambda", 0.75},     {"cascade_blend", 0.0},
                                      {"stable", true},             {"light_radius", 0.0},

@@ -2,6 +2,11 @@
 """make_tune_scenes.py OUT_DIR: small scenes whose best shadow setting is known, for
 shadowmap-tune's tests (written at test time, nothing checked in).
 
+Every light pins normal_offset 0: the tuner chooses variant, size, format, filter and the
+polygon offset, and these scenes' best choices were found with the depth bias alone (the
+default normal offset changes which variant wins on closed.gltf: woo 0.412 % against
+backface 0.42 %).
+
   closed.gltf  two closed boxes standing on a floor under one low spot light (grazing, so
                a polygon offset large enough against acne lifts the shadows off the boxes'
                feet): back faces are the caster's far side, so backface puts the depth
@@ -44,11 +49,13 @@ def main():
     out = sys.argv[1]
     closed = [("box_a", box((1.0, 1.0, 1.0)), (-0.8, 0.5, 0.3)), ("box_b", box((0.6, 1.6, 0.6)), (1.0, 0.8, -0.6))]
     opened = [("card_a", quad(1.2, 1.2), (-0.8, 1.0, 0.3)), ("card_b", quad(0.8, 0.8), (1.0, 1.5, -0.6))]
-    scene(closed).write(os.path.join(out, "closed.gltf"), "closed.bin")
-    scene(opened).write(os.path.join(out, "open.gltf"), "open.bin")
-    scene(closed, shadow={"variant": "standard", "polygon_offset": [0, 0]}).write(
+    pinned = {"normal_offset": 0}
+    scene(closed, shadow=pinned).write(os.path.join(out, "closed.gltf"), "closed.bin")
+    scene(opened, shadow=pinned).write(os.path.join(out, "open.gltf"), "open.bin")
+    scene(closed, shadow={**pinned, "variant": "standard", "polygon_offset": [0, 0]}).write(
         os.path.join(out, "zero_offset.gltf"), "zero_offset.bin")
-    scene(closed, shadow={"variant": "standard"}, second={"variant": "standard", "polygon_offset": [0, 0]}).write(
+    scene(closed, shadow={**pinned, "variant": "standard"},
+          second={**pinned, "variant": "standard", "polygon_offset": [0, 0]}).write(
         os.path.join(out, "two_lights.gltf"), "two_lights.bin")
     scene(closed, light=False).write(os.path.join(out, "dark.gltf"), "dark.bin")
 

@@ -1,6 +1,7 @@
 #include "technique/projection/CascadedMapProjection.h"
 
 #include "technique/MapCacheKey.h"
+#include "technique/NormalOffsetData.h"
 #include "technique/SoftShadowLayers.h"
 #include "technique/projection/FiniteMatrix.h"
 
@@ -93,12 +94,14 @@ bool CascadedMapProjection::packLookup(const LightState& light, const LookupCont
     for (int c = 0; c < kMaxCascades; ++c) {
         if (c < count) block.cascadePlanes[light.slot * kMaxCascades + c] = planes[c];
         if (c < count) block.softLayers[light.slot * kMaxCascades + c] = softLayer(views.cascades[c], light);
+        block.texelWidths[light.slot][c] =
+            c < count ? texelWidthPerDepth(views.cascades[c], light.settings.resolution) : 0.0f;
         block.cascadeFar[light.slot][c] =
             c < count ? static_cast<float>(views.splits[c + 1]) : std::numeric_limits<float>::max();
     }
     block.cascadeBlend[light.slot] = glm::vec4(static_cast<float>(light.settings.cascadeBlend),
                                                static_cast<float>(views.splits.front()), 0.0f, 0.0f);
-    block.softParams[light.slot] = softParams(light);
+    block.lightInEye[light.slot] = lightInEye(views.cascades.front(), light.type, context.view);
     lookup.cascades = count;
     return true;
 }

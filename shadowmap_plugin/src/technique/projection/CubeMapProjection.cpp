@@ -1,6 +1,7 @@
 #include "technique/projection/CubeMapProjection.h"
 
 #include "technique/MapCacheKey.h"
+#include "technique/NormalOffsetData.h"
 #include "technique/SoftShadowLayers.h"
 #include "technique/projection/FiniteMatrix.h"
 
@@ -63,13 +64,14 @@ bool CubeMapProjection::packLookup(const LightState& light, const LookupContext&
     // in eye space: what the GPU gets of them must be finite.
     if (!isFinite(glm::mat4(glm::dmat4(context.view[0], context.view[1], context.view[2], eyeLight)))) return false;
     const PointLightViews& views = light.frame.pointViews;
-    block.pointLight[light.slot] = glm::vec4(glm::vec3(eyeLight), static_cast<float>(views.nearPlane));
+    block.lightInEye[light.slot] = glm::vec4(glm::vec3(eyeLight), 1.0f);
+    block.pointFar[light.slot].z = static_cast<float>(views.nearPlane);
     // 0 stands for an infinite far plane (GLSL has no infinity to pass).
     block.pointFar[light.slot].x = std::isinf(views.farPlane) ? 0.0f : static_cast<float>(views.farPlane);
     // y: the bias in face widths (a 90-degree face spans 2 * distance over resolution texels).
     block.pointFar[light.slot].y = static_cast<float>(kCubeTexelBias * 2.0 / light.settings.resolution);
     block.softLayers[light.slot * kMaxCascades] = softCubeLayer(views, light);
-    block.softParams[light.slot] = softParams(light);
+    block.texelWidths[light.slot] = glm::vec4(cubeTexelWidthPerDepth(light.settings.resolution), 0.0f, 0.0f, 0.0f);
     lookup.cube = true;
     return true;
 }

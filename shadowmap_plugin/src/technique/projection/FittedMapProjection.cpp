@@ -1,6 +1,7 @@
 #include "technique/projection/FittedMapProjection.h"
 
 #include "technique/MapCacheKey.h"
+#include "technique/NormalOffsetData.h"
 #include "technique/SoftShadowLayers.h"
 #include "technique/projection/FiniteMatrix.h"
 
@@ -36,7 +37,9 @@ bool FittedMapProjection::packLookup(const LightState& light, const LookupContex
     if (!isFinite(uploaded)) return false;
     block.eyePlanes[light.slot] = uploaded;
     block.softLayers[light.slot * kMaxCascades] = softLayer(light.frame.view, light);
-    block.softParams[light.slot] = softParams(light);
+    block.texelWidths[light.slot] = glm::vec4(texelWidthPerDepth(light.frame.view, light.settings.resolution), 0.0f,
+                                              0.0f, 0.0f);
+    block.lightInEye[light.slot] = lightInEye(light.frame.view, light.type, context.view);
     return true;
 }
 
