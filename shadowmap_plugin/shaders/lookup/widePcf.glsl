@@ -10,32 +10,28 @@ float widePcfReference(int slot, float reference, vec2 gradient, vec2 offset) {
     return shadowData.params[slot].x > 0.5 ? max(moved, 0.0) : min(moved, 1.0);
 }
 
-float widePcf2D(int slot, sampler2DShadow map, vec2 st, float reference) {
-    vec2 radius = vec2(shadowData.lookupParams[slot].x) / vec2(textureSize(map, 0));
-    int taps = int(shadowData.lookupParams[slot].z);
-    vec2 gradient = receiverDepthGradient(vec3(st, reference));
-    float rotation = diskRotation();
-    float lit = 0.0;
-    for (int i = 0; i < taps; ++i) {
-        vec2 offset = diskTap(i, taps, rotation) * radius;
-        lit += texture(map, vec3(st + offset, widePcfReference(slot, reference, gradient, offset)));
+// The body of the 2D map's and one cascade's lookup (whose radius is in its own texels):
+// FETCH(st, reference) is the comparison at one tap.
+#define WIDE_PCF_BODY(FETCH)                                                                   \
+    {                                                                                          \
+        vec2 radius = vec2(shadowData.lookupParams[slot].x) / vec2(textureSize(map, 0).xy);    \
+        int taps = int(shadowData.lookupParams[slot].z);                                       \
+        vec2 gradient = receiverDepthGradient(vec3(st, reference));                            \
+        float rotation = diskRotation();                                                       \
+        float lit = 0.0;                                                                       \
+        for (int i = 0; i < taps; ++i) {                                                       \
+            vec2 offset = diskTap(i, taps, rotation) * radius;                                 \
+            lit += FETCH(st + offset, widePcfReference(slot, reference, gradient, offset));    \
+        }                                                                                      \
+        return lit / float(taps);                                                              \
     }
-    return lit / float(taps);
-}
+#define WIDE_PCF_FETCH_2D(tap, r) texture(map, vec3(tap, r))
+#define WIDE_PCF_FETCH_ARRAY(tap, r) texture(map, vec4(tap, float(layer), r))
 
-// One cascade's layer: the radius is in its own texels.
-float widePcfArray(int slot, sampler2DArrayShadow map, vec2 st, int layer, float reference) {
-    vec2 radius = vec2(shadowData.lookupParams[slot].x) / vec2(textureSize(map, 0).xy);
-    int taps = int(shadowData.lookupParams[slot].z);
-    vec2 gradient = receiverDepthGradient(vec3(st, reference));
-    float rotation = diskRotation();
-    float lit = 0.0;
-    for (int i = 0; i < taps; ++i) {
-        vec2 offset = diskTap(i, taps, rotation) * radius;
-        lit += texture(map, vec4(st + offset, float(layer), widePcfReference(slot, reference, gradient, offset)));
-    }
-    return lit / float(taps);
-}
+float widePcf2D(int slot, sampler2DShadow map, vec2 st, float reference) WIDE_PCF_BODY(WIDE_PCF_FETCH_2D)
+
+float widePcfArray(int slot, sampler2DArrayShadow map, vec2 st, int layer, float reference)
+    WIDE_PCF_BODY(WIDE_PCF_FETCH_ARRAY)
 
 // A cube map: offsets on the face's plane at unit distance along the major axis, where a
 // texel is 2 / resolution wide.

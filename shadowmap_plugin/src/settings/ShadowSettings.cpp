@@ -87,22 +87,17 @@ void applySettings(ShadowSettings& settings, const nlohmann::json& json, const s
                                         std::to_string(kMaxFilterTaps) + "], got " + json["filter_taps"].dump());
         settings.filterTaps = static_cast<int>(taps);
     }
-    if (json.contains("filter_radius")) {
-        const double radius = json_read::readNumber(json["filter_radius"], source, key("filter_radius"));
-        if (radius < 0.0 || radius > kMaxFilterRadius)
-            engine::throwInputError(source, key("filter_radius"),
-                                    "must be in [0, " + engine::formatNumber(kMaxFilterRadius) + "] texels, got " +
-                                        json["filter_radius"].dump());
-        settings.filterRadius = radius;
-    }
-    if (json.contains("normal_offset")) {
-        const double offset = json_read::readNumber(json["normal_offset"], source, key("normal_offset"));
-        if (offset < 0.0 || offset > kMaxNormalOffset)
-            engine::throwInputError(source, key("normal_offset"),
-                                    "must be in [0, " + engine::formatNumber(kMaxNormalOffset) + "] texels, got " +
-                                        json["normal_offset"].dump());
-        settings.normalOffset = offset;
-    }
+    // A length in texels, 0 .. maximum.
+    const auto readTexels = [&](const char* name, double maximum) {
+        const double texels = json_read::readNumber(json[name], source, key(name));
+        if (texels < 0.0 || texels > maximum)
+            engine::throwInputError(source, key(name),
+                                    "must be in [0, " + engine::formatNumber(maximum) + "] texels, got " +
+                                        json[name].dump());
+        return texels;
+    };
+    if (json.contains("filter_radius")) settings.filterRadius = readTexels("filter_radius", kMaxFilterRadius);
+    if (json.contains("normal_offset")) settings.normalOffset = readTexels("normal_offset", kMaxNormalOffset);
     if (json.contains("polygon_offset")) {
         const auto& offset = json["polygon_offset"];
         if (!offset.is_array() || offset.size() != 2)

@@ -87,6 +87,19 @@ inline std::vector<int> floorTruthImage(const FrameCamera& camera, double floorY
     return truth;
 }
 
+// Calls visit(x, y, p) for every pixel whose camera ray meets the floor plane y = floorY
+// within |x|, |z| <= floorHalfExtent, at p (whatever may hide it there).
+inline void forEachFloorPixel(const FrameCamera& camera, double floorY, double floorHalfExtent,
+                              const std::function<void(int, int, const glm::dvec3&)>& visit) {
+    for (int y = 0; y < camera.height; ++y)
+        for (int x = 0; x < camera.width; ++x) {
+            const Ray ray = pixelRay(camera, x, y);
+            if (ray.direction.y >= 0.0) continue;
+            const glm::dvec3 p = ray.origin + ray.direction * ((floorY - ray.origin.y) / ray.direction.y);
+            if (std::abs(p.x) <= floorHalfExtent && std::abs(p.z) <= floorHalfExtent) visit(x, y, p);
+        }
+}
+
 // Whether pixel (x, y) of a truth image lies within `radius` pixels of a truth shadow edge.
 inline bool nearTruthEdge(const std::vector<int>& truth, int width, int x, int y, int radius) {
     const int value = truth[y * width + x];

@@ -39,19 +39,15 @@ protected:
         const engine::FrameCamera view = engine::test::cameraLooking({0.0, 12.0, 9.0}, {0.0, 0.0, 0.0}, kWidth, kHeight);
         const std::vector<std::uint8_t> mask = engine::test::renderShadowMask(plugins(), scene, view, 0);
         int floor = 0, darkened = 0;
-        for (int y = 0; y < kHeight; ++y)
-            for (int x = 0; x < kWidth; ++x) {
-                const engine::test::Ray ray = engine::test::pixelRay(view, x, y);
-                if (ray.direction.y >= 0.0) continue;
-                const glm::dvec3 p = ray.origin - ray.direction * (ray.origin.y / ray.direction.y);
-                if (std::abs(p.x) > kFloorHalf - 0.5 || std::abs(p.z) > kFloorHalf - 0.5) continue;
-                // A spot light's cone: only the floor inside it is lit at all.
-                if (light.type == engine::Light::Type::Spot &&
-                    glm::dot(glm::normalize(p - light.position), glm::normalize(-light.position)) < std::cos(0.9))
-                    continue;
-                ++floor;
-                darkened += mask[y * kWidth + x] < 128;
-            }
+        // Away from the floor's rim.
+        engine::test::forEachFloorPixel(view, 0.0, kFloorHalf - 0.5, [&](int x, int y, const glm::dvec3& p) {
+            // A spot light's cone: only the floor inside it is lit at all.
+            if (light.type == engine::Light::Type::Spot &&
+                glm::dot(glm::normalize(p - light.position), glm::normalize(-light.position)) < std::cos(0.9))
+                return;
+            ++floor;
+            darkened += mask[y * kWidth + x] < 128;
+        });
         const double share = floor ? double(darkened) / floor : 1.0;
         std::printf("%s, normal_offset %.2f: %d of %d floor pixels darkened (%.3f%%)\n", light.name.c_str(),
                     normalOffset, darkened, floor, 100.0 * share);

@@ -82,28 +82,23 @@ protected:
         const engine::FrameCamera view = camera();
         const std::vector<std::uint8_t> mask = engine::test::renderShadowMask(plugins(), scene, view, 0);
         Penumbrae out;
-        for (int y = 0; y < kHeight; ++y)
-            for (int x = 0; x < kWidth; ++x) {
-                const engine::test::Ray ray = engine::test::pixelRay(view, x, y);
-                if (ray.direction.y >= 0.0) continue;
-                const double t = -ray.origin.y / ray.direction.y;
-                const glm::dvec3 p = ray.origin + ray.direction * t;
-                if (std::abs(p.x) > kFloorHalf || std::abs(p.z) > kFloorHalf) continue;
-                bool hidden = false;
-                for (const engine::Aabb& slab : {kLowSlab, kHighSlab}) {
-                    double t0, t1;
-                    hidden = hidden || (engine::test::intersectBox(ray.origin, ray.direction, slab, t0, t1) && t0 < t);
-                }
-                if (hidden) continue;
-                const double truth = visibleFraction(p), shade = mask[y * kWidth + x] / 255.0;
-                HalfPenumbra& half = p.x < 0.0 ? out.low : out.high;
-                half.truthPixels += truth > 0.1 && truth < 0.9;
-                half.shadePixels += shade > 0.1 && shade < 0.9;
-                if ((truth > 0.0 && truth < 1.0) || (shade > 0.0 && shade < 1.0)) {
-                    half.errorSum += std::abs(shade - truth);
-                    ++half.errorPixels;
-                }
+        engine::test::forEachFloorPixel(view, 0.0, kFloorHalf, [&](int x, int y, const glm::dvec3& p) {
+            // Hidden behind a slab from the camera.
+            const engine::test::Ray ray = engine::test::pixelRay(view, x, y);
+            const double t = glm::length(p - ray.origin);
+            for (const engine::Aabb& slab : {kLowSlab, kHighSlab}) {
+                double t0, t1;
+                if (engine::test::intersectBox(ray.origin, ray.direction, slab, t0, t1) && t0 < t) return;
             }
+            const double truth = visibleFraction(p), shade = mask[y * kWidth + x] / 255.0;
+            HalfPenumbra& half = p.x < 0.0 ? out.low : out.high;
+            half.truthPixels += truth > 0.1 && truth < 0.9;
+            half.shadePixels += shade > 0.1 && shade < 0.9;
+            if ((truth > 0.0 && truth < 1.0) || (shade > 0.0 && shade < 1.0)) {
+                half.errorSum += std::abs(shade - truth);
+                ++half.errorPixels;
+            }
+        });
         std::printf("%s: low slab penumbra %d px (truth %d), error %.4f over %d px; high slab %d px (truth %d), "
                     "error %.4f over %d px\n",
                     filter.c_str(), out.low.shadePixels, out.low.truthPixels, out.low.meanError(),
@@ -157,16 +152,11 @@ TEST_F(SoftShadows, WidePcfKeepsAGrazinglyLitFloorLit) {
     const engine::FrameCamera view = camera();
     const std::vector<std::uint8_t> mask = engine::test::renderShadowMask(plugins(), scene, view, 0);
     int floorPixels = 0, darkened = 0;
-    for (int y = 0; y < kHeight; ++y)
-        for (int x = 0; x < kWidth; ++x) {
-            const engine::test::Ray ray = engine::test::pixelRay(view, x, y);
-            if (ray.direction.y >= 0.0) continue;
-            const glm::dvec3 p = ray.origin - ray.direction * (ray.origin.y / ray.direction.y);
-            // Away from the floor's rim, where the kernel reaches past the floor's edge.
-            if (std::abs(p.x) > kFloorHalf - 0.5 || std::abs(p.z) > kFloorHalf - 0.5) continue;
-            ++floorPixels;
-            darkened += mask[y * kWidth + x] < 0.9 * 255;
-        }
+    // Away from the floor's rim, where the kernel reaches past the floor's edge.
+    engine::test::forEachFloorPixel(view, 0.0, kFloorHalf - 0.5, [&](int x, int y, const glm::dvec3&) {
+        ++floorPixels;
+        darkened += mask[y * kWidth + x] < 0.9 * 255;
+    });
     std::printf("grazing sun, filter_radius 8: %d of %d floor pixels below 0.9\n", darkened, floorPixels);
     ASSERT_GT(floorPixels, 50000);
     EXPECT_EQ(darkened, 0);
