@@ -4,7 +4,8 @@
 // makes (similar triangles). The light's size per layer and the depth-to-distance terms come
 // from shadow_data.glsl's softLayers, lookupParams and lightInEye.
 // Every tap compares against the receiver's own plane (disk_taps.glsl), so the polygon
-// offset stays the 2x2 filter's.
+// offset stays the 2x2 filter's. Search and filter reach at most kPcssMaxRadiusTexels
+// (technique/lookup/PcssLookup.h says why).
 
 bool pcssPerspective(int slot) { return shadowData.lightInEye[slot].w > 0.5; }
 
@@ -79,11 +80,12 @@ PCSS_BLOCKER_DISTANCE(sampler2DArray)
         float receiver = pcssDistance(slot, scale, reference);                                    \
         vec2 gradient = receiverDepthGradient(vec3(st, reference));                                   \
         float rotation = diskRotation();                                                          \
-        vec2 searchRadius = scale.xy * pcssSpread(slot, receiver, pcssNearestBlocker(slot, scale)); \
+        vec2 widest = vec2(kPcssMaxRadiusTexels / texels);                                        \
+        vec2 searchRadius = min(scale.xy * pcssSpread(slot, receiver, pcssNearestBlocker(slot, scale)), widest); \
         float blocker = pcssBlockerDistance(slot, map, st, layer, reference, gradient, searchRadius, rotation); \
         if (blocker <= 0.0) return 1.0;                                                            \
-        /* never narrower than the 2x2 filter's own texel */                                      \
-        vec2 radius = max(scale.xy * pcssSpread(slot, receiver, blocker), vec2(1.0 / texels));    \
+        /* never narrower than the 2x2 filter's own texel, nor wider than the search */           \
+        vec2 radius = clamp(scale.xy * pcssSpread(slot, receiver, blocker), vec2(1.0 / texels), widest); \
         float lit = 0.0;                                                                           \
         for (int i = 0; i < taps; ++i) {                                                           \
             vec2 tap = st + diskTap(i, taps, rotation) * radius;                               \
@@ -116,9 +118,12 @@ float pcssCube(int slot, samplerCube map, vec3 toPoint, float reference) {
     cubeFaceAxes(toPoint, across, up);
     vec2 gradient = receiverDepthGradient(vec3(dot(direction, across), dot(direction, up), reference));
     float rotation = diskRotation();
-    // A search disk wider than 45 degrees would look into other faces for blockers that
-    // cannot hide this light's edge: capped at one tangent.
-    float searchRadius = min(scale.x * pcssSpread(slot, major, pcssNearestBlocker(slot, scale)), 1.0);
+    // A texel is 2 / texels wide in tangent units. A search disk wider than 45 degrees would
+    // look into other faces for blockers that cannot hide this light's edge: capped at one
+    // tangent too.
+    float texelWidth = 2.0 / float(textureSize(map, 0).x);
+    float widest = min(kPcssMaxRadiusTexels * texelWidth, 1.0);
+    float searchRadius = min(scale.x * pcssSpread(slot, major, pcssNearestBlocker(slot, scale)), widest);
     float sum = 0.0, count = 0.0;
     for (int i = 0; i < searchTaps; ++i) {
         vec2 offset = diskTap(i, searchTaps, rotation) * searchRadius;
@@ -128,7 +133,7 @@ float pcssCube(int slot, samplerCube map, vec3 toPoint, float reference) {
         count += dot(inFront, vec4(1.0));
     }
     if (count == 0.0) return 1.0;
-    float radius = max(scale.x * pcssSpread(slot, major, sum / count), 2.0 / float(textureSize(map, 0).x));
+    float radius = clamp(scale.x * pcssSpread(slot, major, sum / count), texelWidth, widest);
     float lit = 0.0;
     for (int i = 0; i < taps; ++i) {
         vec2 offset = diskTap(i, taps, rotation) * radius;

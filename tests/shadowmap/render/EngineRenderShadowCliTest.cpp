@@ -515,10 +515,10 @@ TEST_F(EngineRenderShadows, TruthScoresASizedLightAgainstItsSizeToo) {
 
 // pcss against the area truth of every light type on the showcase (sun 0.05 rad, spot r 0.15,
 // point r 0.1, 480x270), beside pcf on the same sized lights in the same run. Measured on
-// llvmpipe, soft error / penumbra error pcf -> pcss: spot 0.345 / 20.3 % -> 0.109 / 5.1 %,
-// sun 0.124 / 19.6 % -> 0.076 / 6.6 %, point 0.920 / 22.7 % -> 0.335 / 6.8 %. Bounds: soft
-// error at most 0.75x pcf's (the sun's measured 0.61x plus margin), penumbra error at most
-// half of pcf's (measured at most 0.34x) and at most 12 % (measured at most 6.8 %).
+// llvmpipe, soft error / penumbra error pcf -> pcss: spot 0.345 / 20.3 % -> 0.095 / 4.8 %,
+// sun 0.124 / 19.6 % -> 0.064 / 6.3 %, point 0.920 / 22.7 % -> 0.310 / 6.5 %. Bounds: soft
+// error at most 0.75x pcf's (the sun's measured 0.52x plus margin), penumbra error at most
+// half of pcf's (measured at most 0.32x) and at most 12 % (measured at most 6.5 %).
 TEST_F(EngineRenderShadows, PcssAndWidePcfFollowTheAreaTruthOfEverySizedLight) {
     const std::string sized =
         "--width 480 --height 270 --truth --light-set sun.angular_diameter=0.05 "

@@ -13,6 +13,15 @@ namespace shadowmap {
 
 class PcssLookup final : public MapLookup {
 public:
+    // The widest blocker search and filter, in texels of the map. A directional light's map
+    // holds casters far in front of a receiver (a street's map reaches up to the roofs), and
+    // a search over all that the light's size could hide there is metres wide: its few taps
+    // then miss a thin post (the post's shadow fades to dots) and find the receiver's own
+    // plane, extrapolated that far, in front of it (speckles). 32 texels keep every
+    // penumbra of the showcase and the slab scene (at most about 24), and cost nothing
+    // more than the taps they have.
+    static constexpr int kMaxRadiusTexels = 32;
+
     Filter filter() const override { return Filter::Pcss; }
     bool bilinearCompare() const override { return false; }
     bool comparesInHardware() const override { return false; }
