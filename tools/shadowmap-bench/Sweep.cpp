@@ -9,6 +9,7 @@
 #include "engine/gltf/GltfLoader.h"
 #include "engine/render/CameraSetup.h"
 #include "engine/render/Renderer.h"
+#include "engine/scene/SceneNames.h"
 #include "engine/util/Error.h"
 #include "engine/util/FormatNumber.h"
 
@@ -114,12 +115,13 @@ std::vector<ShadowSetting> acceptedSettings(const BenchScene& bench, const std::
         std::optional<std::string> refusal;
         for (int instance = 0; instance < bench.shadowedLights && !refusal; ++instance) {
             const engine::Light& light = bench.scene.lights[bench.scene.lightInstances[instance].light];
+            const std::string object = "light \"" + engine::lightInstanceName(bench.scene, instance) + "\"";
             shadowmap::ShadowSettings lightSettings = defaults;
             if (light.extras.is_object() && light.extras.contains("shadow"))
-                shadowmap::applySettings(lightSettings, light.extras["shadow"], bench.path, "light \"" + light.name + "\"");
+                shadowmap::applySettings(lightSettings, light.extras["shadow"], bench.path, object);
             shadowmap::applySettings(lightSettings, {{"filter", setting.filter}}, bench.path, "--filters");
             try {
-                shadowmap::checkFilterForType(lightSettings, light.type, bench.path, "light \"" + light.name + "\"");
+                shadowmap::checkFilterForType(lightSettings, light.type, bench.path, object);
             } catch (const engine::InputError& error) {
                 refusal = error.what();
             }
