@@ -163,7 +163,9 @@ TEST_F(SoftShadows, WidePcfKeepsAGrazinglyLitFloorLit) {
     });
     std::printf("grazing sun, filter_radius 8: %d of %d floor pixels below 0.9\n", darkened, floorPixels);
     ASSERT_GT(floorPixels, 50000);
-    EXPECT_EQ(darkened, 0);
+    // Measured 0; a thousandth leaves room for another CPU's rounding at the rim of a tap,
+    // while the failure it guards against darkens nearly every pixel.
+    EXPECT_LE(darkened, floorPixels / 1000);
 }
 
 // pcss under cascades on the street of posts, a sun of 0.1 rad, three cascades: in each
