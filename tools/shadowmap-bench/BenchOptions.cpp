@@ -6,12 +6,15 @@
 #include "AnimationPlayback.h"
 #include "OptionValues.h"
 
+#include "engine/util/FormatNumber.h"
 #include "engine/util/InstallLayout.h"
 #include "shadowmap/ShadowSettings.h"
 
+#include <algorithm>
 #include <filesystem>
-
+#include <limits>
 #include <stdexcept>
+#include <string_view>
 
 namespace shadowmap_bench {
 
@@ -56,6 +59,46 @@ std::optional<engine::Light::Type> parseKeyLight(const std::string& flag, const 
     }
 }
 
+// The optional axes' lists, each value bounded as the shadow plugin bounds its key (the
+// bounds are stated there once); a key without a bound takes any finite number that way.
+std::vector<double> parseSettingNumbers(const std::string& flag, const std::string& text, std::string_view key) {
+    constexpr double kUnbounded = std::numeric_limits<double>::infinity();
+    const shadowmap::SettingKey& bounds = shadowmap::settingKey(key);
+    return tools::parseNumberList(flag, text, bounds.minimum.value_or(-kUnbounded), bounds.maximum.value_or(kUnbounded));
+}
+std::vector<int> parseSettingIntegers(const std::string& flag, const std::string& text, std::string_view key) {
+    const shadowmap::SettingKey& bounds = shadowmap::settingKey(key);
+    return tools::parseIntegerList(flag, text, static_cast<int>(*bounds.minimum), static_cast<int>(*bounds.maximum));
+}
+
+// "0..16" as the plugin bounds the key.
+std::string bounds(std::string_view key) {
+    const shadowmap::SettingKey& setting = shadowmap::settingKey(key);
+    return engine::formatNumber(*setting.minimum) + ".." + engine::formatNumber(*setting.maximum);
+}
+
+bool lists(const std::vector<std::string>& filters, shadowmap::Filter filter) {
+    return std::find(filters.begin(), filters.end(), shadowmap::toString(filter)) != filters.end();
+}
+
+// Axes that would multiply no row are refused rather than ignored: the sweep would not
+// measure what the command line asked for.
+void checkAxes(const BenchOptions& options) {
+    if (!options.lightRadii.empty() && !options.angularDiameters.empty() &&
+        options.lightRadii.size() != options.angularDiameters.size())
+        throw std::invalid_argument("--light-radii and --angular-diameters: " + std::to_string(options.lightRadii.size()) +
+                                    " and " + std::to_string(options.angularDiameters.size()) +
+                                    " values; the k-th of each make the k-th light size step, so list as many of each");
+    const bool pcf = lists(options.filters, shadowmap::Filter::Pcf);
+    if (!options.filterRadii.empty() && !pcf)
+        throw std::invalid_argument("--filter-radii: only pcf has a filter radius, and --filters lists no pcf");
+    const bool widePcf = pcf && std::any_of(options.filterRadii.begin(), options.filterRadii.end(),
+                                            [](double radius) { return radius > 0.0; });
+    if (!options.filterTaps.empty() && !widePcf && !lists(options.filters, shadowmap::Filter::Pcss))
+        throw std::invalid_argument("--filter-taps: only pcss and pcf with a --filter-radii value above 0 take taps, "
+                                    "and the sweep has neither");
+}
+
 } // namespace
 
 const char* benchUsage() {
@@ -82,14 +125,35 @@ const char* benchUsage() {
         "                       the results\n"
         "  [--merge SHARD_DIR]... with --out DIR: merge shards 1..N of one sweep into DIR (results.csv\n"
         "                       in the single run's order, summary.md, plot); renders nothing\n"
+        "Optional axes (each multiplies the rows it applies to; not given: the key is not written,\n"
+        "the light keeps its scene's or the engine config's value, and the column is empty):\n"
+        "  [--light-radii R,...] [--angular-diameters A,...]   light size steps: the k-th step gives\n"
+        "                       spot and point lights light_radius R[k] (world units), directional\n"
+        "                       lights angular_diameter A[k] (radians); both given: equal lengths;\n"
+        "                       one given: the other type of light keeps its own size\n"
+        "  [--filter-radii F,...] pcf rows only: filter_radius " + bounds("filter_radius") + " texels\n"
+        "  [--filter-taps T,...] pcss rows and pcf rows with a filter radius > 0: filter_taps " +
+        bounds("filter_taps") + "\n"
+        "  [--normal-offsets N,...] every row: normal_offset " + bounds("normal_offset") + " texels\n"
+        "  A step a scene's lights refuse (pcss at a size of 0) is left out with one note.\n"
+        "  Labels (progress, summary, plot) add what is set: lr<R> ad<A> (a size step; per light in\n"
+        "  the summary and plot: size<S>, the size it had), fr<F>, taps<T>, no<N>, e.g.\n"
+        "  \"standard 1024 d24 pcss lr0.1 ad0.05 taps32 no0.25\".\n"
         "\n"
         "Renders every scene with every combination of the listed settings applied to all of its\n"
         "lights, times each light's shadow passes (median wall time over N frames, each pass closed\n"
         "by glFinish) and measures its error against ray-traced shadows (Embree). Writes\n"
         "  DIR/results.csv      scene,light,variant,resolution,depth_format,filter,shadow_ms,\n"
-        "                       frame_ms,acne,leak,error,error_noedge   (errors in percent)\n"
+        "                       frame_ms,acne,leak,error,error_noedge,area_acne,area_leak,area_error,\n"
+        "                       shimmer,near_error,near_error_noedge,light_size,filter_radius,\n"
+        "                       filter_taps,normal_offset,soft_error,soft_error_noedge,penumbra_error\n"
+        "                       (errors in percent; light_size: the radius or angular diameter the\n"
+        "                       light had, 0: none; filter_radius, filter_taps, normal_offset: empty\n"
+        "                       where not swept; soft_*, penumbra_error: against the soft truth, the\n"
+        "                       visible fraction of the light, for a light with a size only)\n"
         "  DIR/summary.md       per light: the most accurate setting within 2, 5, 10, 20, 50 ms of\n"
-        "                       shadow time, and the Pareto front of time against error\n"
+        "                       shadow time, and the Pareto front of time against error (error: the\n"
+        "                       soft error for a light with a size, else the area error)\n"
         "  DIR/time_vs_error.gp and .png  (one panel per scene; the png needs gnuplot)\n"
         "\n"
         "Defaults (the default sweep: 324 rows, about 6 minutes on 2 cores):\n"
@@ -99,7 +163,7 @@ const char* benchUsage() {
         "             and the alpha-masked scenes with their opaque twins, masked_fence, opaque_fence,\n"
         "             masked_canopy, opaque_canopy (.gltf), over the variants and resolutions at\n"
         "             " + shadowmap::toString(defaults.depthFormat) + " and " + shadowmap::toString(defaults.filter) +
-        " only (else the first depth format and filter listed)\n"
+        " only (else the first depth format and filter listed), times the optional axes\n"
         "  --camera   the scene's first camera, else one framing the scene\n"
         "  --width 1280 --height 720 --frames 5\n"
         "  --variants " + joined(knownVariants()) + " --resolutions 512,1024,2048\n"
@@ -137,6 +201,11 @@ BenchOptions parseBenchOptions(int argc, char** argv) {
         else if (flag == "--resolutions") options.resolutions = tools::parseIntegerList(flag, value, minResolution, maxResolution);
         else if (flag == "--depth-formats") options.depthFormats = tools::parseNames(flag, value, knownFormats());
         else if (flag == "--filters") options.filters = tools::parseNames(flag, value, knownFilters());
+        else if (flag == "--light-radii") options.lightRadii = parseSettingNumbers(flag, value, "light_radius");
+        else if (flag == "--angular-diameters") options.angularDiameters = parseSettingNumbers(flag, value, "angular_diameter");
+        else if (flag == "--filter-radii") options.filterRadii = parseSettingNumbers(flag, value, "filter_radius");
+        else if (flag == "--filter-taps") options.filterTaps = parseSettingIntegers(flag, value, "filter_taps");
+        else if (flag == "--normal-offsets") options.normalOffsets = parseSettingNumbers(flag, value, "normal_offset");
         else if (flag == "--key-light") options.keyLight = parseKeyLight(flag, value);
         else if (flag == "--time") options.times = tools::parseNumberList(flag, value, 0.0, tools::kMaxAnimationSeconds);
         else if (flag == tools::kGroundFlag) options.ground = true;
@@ -153,6 +222,7 @@ BenchOptions parseBenchOptions(int argc, char** argv) {
     if (options.out.empty()) throw std::invalid_argument("--out is required");
     if (!options.merge.empty() && options.shardCount > 1)
         throw std::invalid_argument("--merge and --shard exclude each other: merge after every shard ran");
+    checkAxes(options);
     if (options.defaultScenes) {
         const std::string scenes = contentDir() + "/scenes/";
         options.scenes = {scenes + "showcase.gltf", kEngineModel};

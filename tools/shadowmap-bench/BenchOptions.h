@@ -24,6 +24,15 @@ struct BenchOptions {
     std::vector<int> resolutions;
     std::vector<std::string> depthFormats;
     std::vector<std::string> filters;
+    // The optional axes (SweepAxes.h); empty: not swept, the key is not written and each
+    // light keeps the value its scene or the engine config gives it.
+    // --light-radii, --angular-diameters: the k-th of each form the k-th light size step
+    // (spot and point lights take the radius, directional lights the diameter); given both,
+    // the lists have one length; given one, the other type of light keeps its own size.
+    std::vector<double> lightRadii, angularDiameters;
+    std::vector<double> filterRadii;  // --filter-radii: pcf rows only
+    std::vector<int> filterTaps;      // --filter-taps: pcss rows and pcf rows with a filter radius > 0
+    std::vector<double> normalOffsets;  // --normal-offsets: every row
     int frames = 0;
     // --shimmer N: also measure shimmer on N frames of a slow pan (evaluation/CameraPath.h); 0: not.
     int shimmerFrames = 0;

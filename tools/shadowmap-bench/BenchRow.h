@@ -1,40 +1,84 @@
 #pragma once
 // One measured point of the sweep: one light of one scene under one shadow setting. The
 // row of results.csv, and what the summary and the plot are made of.
+#include "engine/util/FormatNumber.h"
+
 #include <optional>
 #include <string>
 
 namespace shadowmap_bench {
 
+// " taps32" for a set value, "" for an unset one: labels name only what the sweep set.
+template <typename T>
+std::string labelPart(const char* prefix, const std::optional<T>& value) {
+    return value ? prefix + engine::formatNumber(*value) : std::string();
+}
+
 struct ShadowSetting {
     std::string variant;  // standard | woo | backface
     int resolution = 0;   // texels per side
     std::string depthFormat;  // d16 | d24 | d32f
-    std::string filter;       // nearest | pcf
+    std::string filter;       // nearest | pcf | pcss
+    // The optional axes (SweepAxes.h); unset: the key is not written, so the light keeps the
+    // value its scene or the engine config gives it. (Initialised, so that the four-field
+    // brace lists the sweep builds settings with need not spell them out.)
+    std::optional<double> lightRadius = std::nullopt;      // spot and point lights, world units
+    std::optional<double> angularDiameter = std::nullopt;  // directional lights, radians
+    std::optional<double> filterRadius = std::nullopt;     // pcf only, texels
+    std::optional<int> filterTaps = std::nullopt;          // pcss, and pcf with a filter radius
+    std::optional<double> normalOffset = std::nullopt;     // texels
 
-    // "woo 2048 d24 pcf": how the progress line, the summary and the plot name it.
-    std::string label() const {
-        return variant + " " + std::to_string(resolution) + " " + depthFormat + " " + filter;
+    // "woo 2048 d24 pcf", then what the sweep set: "lr0.1 ad0.05" (light radius, angular
+    // diameter), "fr2" (filter radius), "taps32", "no0.25" (normal offset), e.g.
+    // "standard 1024 d24 pcss lr0.1 ad0.05 taps32 no0.25".
+    std::string label() const { return labelWithSize(sizeLabel()); }
+
+    // The size step's part of the label: " lr0.1 ad0.05", "" without one.
+    std::string sizeLabel() const { return labelPart(" lr", lightRadius) + labelPart(" ad", angularDiameter); }
+
+    // The label with `size` (a light size part) where the sizes stand.
+    std::string labelWithSize(const std::string& size) const {
+        return variant + " " + std::to_string(resolution) + " " + depthFormat + " " + filter + size +
+               labelPart(" fr", filterRadius) + labelPart(" taps", filterTaps) + labelPart(" no", normalOffset);
     }
 };
 
 struct BenchRow {
-    std::string scene;  // the scene file's stem, e.g. "showcase"
+    std::string scene;  // the file's stem, e.g. "showcase"
     std::string light;
+    // The sweep's setting without its size step (lightRadius, angularDiameter unset): a row
+    // holds the one size its light had, lightSize, which results.csv keeps and --merge reads.
     ShadowSetting setting;
+    // The light's size as the row applied it, from the size step or the scene: its radius
+    // (spot, point; world units) or angular diameter (directional; radians); 0: none.
+    double lightSize = 0.0;
     double shadowMs = 0.0;  // median wall time of the light's shadow passes
     double frameMs = 0.0;   // median wall time of the whole frame (all lights)
     // Percent of the evaluation set (docs/metrics.md), against the one-ray-per-pixel truth.
     double acne = 0.0, leak = 0.0, error = 0.0, errorNoEdge = 0.0;
     // The same against the area truth (lit fraction of each pixel's footprint): the figure
-    // settings are ranked by, since it does not count a filter's partial shade at an edge as
-    // error when the edge really crosses the pixel.
+    // a point light's settings are ranked by, since it does not count a filter's partial
+    // shade at an edge as error when the edge really crosses the pixel.
     double areaAcne = 0.0, areaLeak = 0.0, areaError = 0.0;
     // With --shimmer: percent of the compared surface points whose shadow state changed
     // between consecutive frames of the camera path (truth/Shimmer.h); none without.
     std::optional<double> shimmer;
     // With --near D: the error and the error off edges on pixels within D of the camera.
     std::optional<double> nearError, nearErrorNoEdge;
+    // A light with a size (lightSize > 0) only: percent mean |shade - truth| against the soft
+    // truth, the visible fraction of the light (docs/soft-shadows.md), over the evaluation
+    // set, off edges, and over the penumbra (pixels where truth or shade is strictly between
+    // 0 and 1; 0 when there is none).
+    std::optional<double> softError, softErrorNoEdge, penumbraError;
+
+    // The error settings are ranked by (summary, Pareto front, plot): against the truth that
+    // models the light, the soft truth for a sized light, else the area truth.
+    double rankedError() const { return softError.value_or(areaError); }
+
+    // The setting's label with the light's own size ("size0.1") where it has one.
+    std::string label() const {
+        return setting.labelWithSize(lightSize > 0.0 ? labelPart(" size", std::optional<double>(lightSize)) : "");
+    }
 };
 
 } // namespace shadowmap_bench

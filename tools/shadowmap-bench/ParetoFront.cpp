@@ -20,15 +20,15 @@ std::vector<LightRows> groupByLight(const std::vector<BenchRow>& rows) {
 
 std::vector<BenchRow> paretoFront(const std::vector<BenchRow>& rows) {
     return tools::paretoFront(rows, [](const BenchRow& row) { return row.shadowMs; },
-                              [](const BenchRow& row) { return row.areaError; });
+                              [](const BenchRow& row) { return row.rankedError(); });
 }
 
 std::optional<BenchRow> mostAccurateWithin(const std::vector<BenchRow>& rows, double budgetMs) {
     std::optional<BenchRow> best;
     for (const BenchRow& row : rows) {
         if (row.shadowMs > budgetMs) continue;
-        if (!best || row.areaError < best->areaError ||
-            (row.areaError == best->areaError && row.shadowMs < best->shadowMs))
+        if (!best || row.rankedError() < best->rankedError() ||
+            (row.rankedError() == best->rankedError() && row.shadowMs < best->shadowMs))
             best = row;
     }
     return best;

@@ -1,7 +1,8 @@
 #pragma once
 // Choosing settings from measured rows: the Pareto front of shadow time against error, and
-// the most accurate setting within a time budget. "Error" here is the area error
-// (BenchRow::areaError), so a filter is judged by how well it shades partly lit pixels.
+// the most accurate setting within a time budget. "Error" here is BenchRow::rankedError():
+// the soft error for a light with a size, else the area error, so a filter is judged by how
+// well it shades partly lit pixels against the truth that models the light.
 // Pure CPU, no I/O.
 #include "BenchRow.h"
 

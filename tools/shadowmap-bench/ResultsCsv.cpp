@@ -1,5 +1,7 @@
 #include "ResultsCsv.h"
 
+#include "engine/util/FormatNumber.h"
+
 #include <cstdio>
 
 namespace shadowmap_bench {
@@ -24,6 +26,12 @@ std::string number(double value, int decimals) {
 // A figure the sweep may not have measured: empty then.
 std::string optional(const std::optional<double>& value) { return value ? number(*value, 4) : std::string(); }
 
+// A setting as given (0.0093 rad stays 0.0093): empty when the sweep did not set it.
+template <typename T>
+std::string optionalSetting(const std::optional<T>& value) {
+    return value ? engine::formatNumber(*value) : std::string();
+}
+
 } // namespace
 
 std::string resultsCsv(const std::vector<BenchRow>& rows) {
@@ -36,7 +44,10 @@ std::string resultsCsv(const std::vector<BenchRow>& rows) {
                number(row.acne, 4) + "," + number(row.leak, 4) + "," + number(row.error, 4) + "," +
                number(row.errorNoEdge, 4) + "," + number(row.areaAcne, 4) + "," +
                number(row.areaLeak, 4) + "," + number(row.areaError, 4) + "," +
-               optional(row.shimmer) + "," + optional(row.nearError) + "," + optional(row.nearErrorNoEdge) + "\n";
+               optional(row.shimmer) + "," + optional(row.nearError) + "," + optional(row.nearErrorNoEdge) + "," +
+               engine::formatNumber(row.lightSize) + "," + optionalSetting(row.setting.filterRadius) + "," +
+               optionalSetting(row.setting.filterTaps) + "," + optionalSetting(row.setting.normalOffset) + "," +
+               optional(row.softError) + "," + optional(row.softErrorNoEdge) + "," + optional(row.penumbraError) + "\n";
     }
     return csv;
 }

@@ -2,6 +2,11 @@
 // results.csv: one row per scene x light x setting, columns exactly kResultsCsvHeader;
 // times in milliseconds, errors in percent (area_*: against the area truth, docs/metrics.md),
 // shimmer and near_* in percent and empty when not measured (--shimmer, --near).
+// Columns added later come last, so scripts reading the first ones keep working:
+// light_size (the radius or angular diameter the light had; 0: none), filter_radius,
+// filter_taps and normal_offset (empty where the sweep did not set them: the scene's value
+// applied), soft_error, soft_error_noedge and penumbra_error (percent, against the soft
+// truth; empty for a light without a size).
 // Written here, read back by --merge (Shards.h).
 #include "BenchRow.h"
 
@@ -13,8 +18,9 @@ namespace shadowmap_bench {
 
 inline constexpr const char* kResultsCsvHeader =
     "scene,light,variant,resolution,depth_format,filter,shadow_ms,frame_ms,acne,leak,error,error_noedge,"
-    "area_acne,area_leak,area_error,shimmer,near_error,near_error_noedge";
-inline constexpr std::size_t kResultsCsvColumns = 18;
+    "area_acne,area_leak,area_error,shimmer,near_error,near_error_noedge,"
+    "light_size,filter_radius,filter_taps,normal_offset,soft_error,soft_error_noedge,penumbra_error";
+inline constexpr std::size_t kResultsCsvColumns = 25;
 
 std::string resultsCsv(const std::vector<BenchRow>& rows);
 

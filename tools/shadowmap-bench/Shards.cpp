@@ -8,6 +8,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <numeric>
 #include <stdexcept>
 
 namespace shadowmap_bench {
@@ -66,12 +68,13 @@ void keepShardJobs(std::vector<BenchScene>& scenes, const Shard& shard) {
     }
 }
 
-std::string shardManifest(const Shard& shard, const SweepDescription& sweep) {
+std::string shardManifest(const Shard& shard, const SweepDescription& sweep, const std::vector<int>& jobRows) {
     const nlohmann::json manifest = {{"shard", shard.index}, {"of", shard.count},
                                      {"width", sweep.width}, {"height", sweep.height},
                                      {"frames", sweep.frames}, {"gl_renderer", sweep.glRenderer},
                                      {"gl_version", sweep.glVersion}, {"cpu", sweep.cpuModel},
-                                     {"cores", sweep.cores}, {"seconds", sweep.seconds}};
+                                     {"cores", sweep.cores}, {"seconds", sweep.seconds},
+                                     {"job_rows", jobRows}};
     return manifest.dump(2) + "\n";
 }
 
@@ -103,8 +106,12 @@ std::vector<BenchRow> parseResultsCsv(const std::string& text, const std::string
         row.areaAcne = number(f[12], file, line);
         row.areaLeak = number(f[13], file, line);
         row.areaError = number(f[14], file, line);
-        for (auto [field, figure] : {std::pair{15, &row.shimmer}, {16, &row.nearError}, {17, &row.nearErrorNoEdge}})
+        row.lightSize = number(f[18], file, line);
+        for (auto [field, figure] : {std::pair{15, &row.shimmer}, {16, &row.nearError}, {17, &row.nearErrorNoEdge},
+                                     {19, &row.setting.filterRadius}, {21, &row.setting.normalOffset},
+                                     {22, &row.softError}, {23, &row.softErrorNoEdge}, {24, &row.penumbraError}})
             if (!f[field].empty()) *figure = number(f[field], file, line);
+        if (!f[20].empty()) row.setting.filterTaps = static_cast<int>(number(f[20], file, line));
         rows.push_back(std::move(row));
     }
     return rows;
@@ -120,11 +127,18 @@ ShardResult readShard(const std::filesystem::path& dir) {
                         manifest.at("frames").get<int>(),        manifest.at("gl_renderer").get<std::string>(),
                         manifest.at("gl_version").get<std::string>(), manifest.at("cpu").get<std::string>(),
                         manifest.at("cores").get<int>(),         manifest.at("seconds").get<double>()};
+        result.jobRows = manifest.at("job_rows").get<std::vector<int>>();
     } catch (const nlohmann::json::exception& error) {
         engine::throwInputError(manifestPath.string(), "", std::string("not a shard manifest: ") + error.what());
     }
     const std::filesystem::path csv = dir / "results.csv";
     result.rows = parseResultsCsv(readShardFile(csv), csv.string());
+    const long jobRows = std::accumulate(result.jobRows.begin(), result.jobRows.end(), 0L);
+    const bool negative = std::any_of(result.jobRows.begin(), result.jobRows.end(), [](int rows) { return rows < 0; });
+    if (negative || jobRows != static_cast<long>(result.rows.size()))
+        engine::throwInputError(manifestPath.string(), "job_rows",
+                                "add up to " + std::to_string(jobRows) + " rows, and " + csv.string() + " has " +
+                                    std::to_string(result.rows.size()));
     return result;
 }
 
@@ -144,17 +158,16 @@ std::vector<BenchRow> mergeShards(const std::vector<ShardResult>& shards, SweepD
         if (!byIndex[k])
             throw engine::InputError("--merge: shard " + std::to_string(k + 1) + "/" + std::to_string(count) + " missing");
 
-    // Each shard's rows in jobs (consecutive rows of one scene and setting), dealt back
-    // round-robin: job j of the single run is job j / N of shard j % N + 1.
+    // Each shard's rows in jobs (its manifest's rows per job), dealt back round-robin: job j
+    // of the single run is job j / N of shard j % N + 1.
     std::vector<std::vector<std::vector<BenchRow>>> jobs(count);
-    for (int k = 0; k < count; ++k)
-        for (const BenchRow& row : byIndex[k]->rows) {
-            auto& list = jobs[k];
-            if (list.empty() || list.back().front().scene != row.scene ||
-                list.back().front().setting.label() != row.setting.label())
-                list.emplace_back();
-            list.back().push_back(row);
+    for (int k = 0; k < count; ++k) {
+        auto row = byIndex[k]->rows.begin();
+        for (int size : byIndex[k]->jobRows) {
+            jobs[k].emplace_back(row, row + size);
+            row += size;
         }
+    }
     std::vector<BenchRow> rows;
     for (std::size_t round = 0;; ++round) {
         bool any = false;

@@ -20,8 +20,9 @@ using tools::Shard;  // K of N (tools/common/OptionValues.h, which parses --shar
 // Drops from each scene the settings (jobs) other shards run.
 void keepShardJobs(std::vector<BenchScene>& scenes, const Shard& shard);
 
-// shard.json: which shard, and where and how it was measured.
-std::string shardManifest(const Shard& shard, const SweepDescription& sweep);
+// shard.json: which shard, where and how it was measured, and its rows per job (in order:
+// SweepRows::jobRows), by which --merge deals the jobs back.
+std::string shardManifest(const Shard& shard, const SweepDescription& sweep, const std::vector<int>& jobRows);
 
 // results.csv back into rows; an InputError naming the file and line when it is not what
 // resultsCsv writes.
@@ -31,8 +32,10 @@ struct ShardResult {
     Shard shard;
     SweepDescription sweep;
     std::vector<BenchRow> rows;
+    std::vector<int> jobRows;  // rows per job, adding up to rows.size()
 };
-// Reads DIR/shard.json and DIR/results.csv; InputError naming the file on anything missing.
+// Reads DIR/shard.json and DIR/results.csv; InputError naming the file on anything missing,
+// or when the manifest's jobs do not add up to the rows.
 ShardResult readShard(const std::filesystem::path& dir);
 
 // The shards' rows in the single run's order (jobs dealt round-robin back); the sweep's

@@ -2,6 +2,7 @@
 
 #include "AnimationPlayback.h"
 #include "SceneLighting.h"
+#include "SweepAxes.h"
 
 #include "CameraPath.h"
 #include "SettingTrial.h"
@@ -25,14 +26,20 @@ namespace shadowmap_bench {
 namespace {
 
 // Writes the setting into every light's extras.shadow, which the plugin's prepareScene
-// reads over its config defaults; other keys the scene sets (polygon_offset, dimming) stay.
-void applyToEveryLight(engine::Scene& scene, const ShadowSetting& setting) {
-    const nlohmann::json shadow = {{"variant", setting.variant},
-                                   {"resolution", setting.resolution},
-                                   {"depth_format", setting.depthFormat},
-                                   {"filter", setting.filter}};
-    for (std::size_t light = 0; light < scene.lights.size(); ++light)
-        evaluation::setLightShadow(scene, static_cast<int>(light), shadow);
+// reads over its config defaults. Each light starts from its scene's own extras (`original`),
+// so a key an earlier row wrote and this one leaves unset (a pcf row's filter_radius before
+// a pcss row) goes back to the scene's value; keys the sweep never writes (polygon_offset,
+// dimming) stay.
+void applyToEveryLight(engine::Scene& scene, const std::vector<engine::Light>& original, const ShadowSetting& setting) {
+    for (std::size_t light = 0; light < scene.lights.size(); ++light) {
+        scene.lights[light].extras = original[light].extras;
+        evaluation::setLightShadow(scene, static_cast<int>(light), lightShadow(setting, scene.lights[light].type));
+    }
+}
+
+// The light of light instance `instance` (a ShadowView's slot).
+const engine::Light& instanceLight(const engine::Scene& scene, int instance) {
+    return scene.lights[scene.lightInstances[instance].light];
 }
 
 BenchRow makeRow(const BenchScene& scene, const ShadowSetting& setting, double frameMs,
@@ -41,6 +48,10 @@ BenchRow makeRow(const BenchScene& scene, const ShadowSetting& setting, double f
     row.scene = scene.name;
     row.light = light.light;
     row.setting = setting;
+    // The row keeps the size its light had (below), not the step's pair (BenchRow.h).
+    row.setting.lightRadius = row.setting.angularDiameter = std::nullopt;
+    const bool directional = instanceLight(scene.scene, light.slot).type == engine::Light::Type::Directional;
+    row.lightSize = directional ? light.view.angularDiameter : light.view.lightRadius;
     row.shadowMs = light.shadowMs;
     row.frameMs = frameMs;
     row.acne = 100.0 * light.errors.acne;
@@ -50,6 +61,11 @@ BenchRow makeRow(const BenchScene& scene, const ShadowSetting& setting, double f
     row.areaAcne = 100.0 * light.areaErrors.acne;
     row.areaLeak = 100.0 * light.areaErrors.leak;
     row.areaError = 100.0 * light.areaErrors.error;
+    if (light.softErrors.evaluated > 0) {  // a light with a size
+        row.softError = 100.0 * light.softErrors.error;
+        row.softErrorNoEdge = 100.0 * light.softErrors.errorNoEdge;
+        row.penumbraError = 100.0 * light.softErrors.penumbraError;
+    }
     if (scene.nearDistance > 0.0) {
         row.nearError = 100.0 * light.nearErrors.error;
         row.nearErrorNoEdge = 100.0 * light.nearErrors.errorNoEdge;
@@ -102,37 +118,47 @@ BenchScene loadBenchScene(const BenchOptions& options, const std::string& path, 
     return bench;
 }
 
-// The settings every light of `bench` accepts: a soft filter needs each light to have a size
-// (in its extras.shadow or the config's defaults); a scene where one has none is swept
-// without that filter, with a note naming the light, rather than failing the sweep.
+// Why `bench`'s lights refuse `setting` (the plugin's message naming the first light that
+// does), or nullopt when all accept it: a soft filter needs each light to have a size (from
+// the size step, its extras.shadow or the config's defaults); filter_radius widens pcf only.
+std::optional<std::string> refusal(const BenchScene& bench, const ShadowSetting& setting,
+                                   const shadowmap::ShadowSettings& defaults) {
+    for (int instance = 0; instance < bench.shadowedLights; ++instance) {
+        const engine::Light& light = instanceLight(bench.scene, instance);
+        const std::string object = "light \"" + engine::lightInstanceName(bench.scene, instance) + "\"";
+        shadowmap::ShadowSettings lightSettings = defaults;
+        if (light.extras.is_object() && light.extras.contains("shadow"))
+            shadowmap::applySettings(lightSettings, light.extras["shadow"], bench.path, object);
+        shadowmap::applySettings(lightSettings, lightShadow(setting, light.type), bench.path, "the sweep's setting");
+        try {
+            shadowmap::checkFilterForType(lightSettings, light.type, bench.path, object);
+        } catch (const engine::InputError& error) {
+            return error.what();
+        }
+    }
+    return std::nullopt;
+}
+
+// The settings every light of `bench` accepts. A scene where one refuses a setting is swept
+// without it, with a note naming the light, rather than failing the sweep; one note per
+// refused filter and size step, however many rows the other axes multiply it into.
 std::vector<ShadowSetting> acceptedSettings(const BenchScene& bench, const std::vector<ShadowSetting>& settings,
                                             const nlohmann::json& pluginSettings) {
     const shadowmap::ShadowSettings defaults =
         shadowmap::parsePluginSettings(pluginSettings, "engine config").lightDefaults;
     std::vector<ShadowSetting> accepted;
-    std::vector<std::string> refusedFilters;
+    std::vector<std::string> notes;
     for (const ShadowSetting& setting : settings) {
-        std::optional<std::string> refusal;
-        for (int instance = 0; instance < bench.shadowedLights && !refusal; ++instance) {
-            const engine::Light& light = bench.scene.lights[bench.scene.lightInstances[instance].light];
-            const std::string object = "light \"" + engine::lightInstanceName(bench.scene, instance) + "\"";
-            shadowmap::ShadowSettings lightSettings = defaults;
-            if (light.extras.is_object() && light.extras.contains("shadow"))
-                shadowmap::applySettings(lightSettings, light.extras["shadow"], bench.path, object);
-            shadowmap::applySettings(lightSettings, {{"filter", setting.filter}}, bench.path, "--filters");
-            try {
-                shadowmap::checkFilterForType(lightSettings, light.type, bench.path, object);
-            } catch (const engine::InputError& error) {
-                refusal = error.what();
-            }
-        }
-        if (!refusal) {
+        const std::optional<std::string> reason = refusal(bench, setting, defaults);
+        if (!reason) {
             accepted.push_back(setting);
-        } else if (std::find(refusedFilters.begin(), refusedFilters.end(), setting.filter) == refusedFilters.end()) {
-            refusedFilters.push_back(setting.filter);
-            std::cerr << "shadowmap-bench: " << bench.name << ": no filter " << setting.filter << " rows: " << *refusal
-                      << "\n";
+            continue;
         }
+        const std::string sizes = setting.sizeLabel();
+        const std::string note = "no filter " + setting.filter + " rows" + (sizes.empty() ? "" : " at" + sizes) + ": " + *reason;
+        if (std::find(notes.begin(), notes.end(), note) != notes.end()) continue;
+        notes.push_back(note);
+        std::cerr << "shadowmap-bench: " << bench.name << ": " << note << "\n";
     }
     return accepted;
 }
@@ -170,7 +196,7 @@ std::vector<ShadowSetting> sweepSettings(const BenchOptions& options) {
             for (const std::string& format : options.depthFormats)
                 for (const std::string& filter : options.filters)
                     settings.push_back({variant, resolution, format, filter});
-    return settings;
+    return expandAxes(settings, options);
 }
 
 std::vector<ShadowSetting> maskedSettings(const BenchOptions& options) {
@@ -184,24 +210,25 @@ std::vector<ShadowSetting> maskedSettings(const BenchOptions& options) {
         for (int resolution : options.resolutions)
             settings.push_back({variant, resolution, preferred(options.depthFormats, shadowmap::toString(defaults.depthFormat)),
                                 preferred(options.filters, shadowmap::toString(defaults.filter))});
-    return settings;
+    return expandAxes(settings, options);
 }
 
-std::vector<BenchRow> runSweep(std::vector<BenchScene>& scenes, const engine::RendererConfig& rendererConfig,
-                               const std::vector<engine::RenderPlugin*>& plugins, int frames,
-                               const RowCallback& onRow) {
+SweepRows runSweep(std::vector<BenchScene>& scenes, const engine::RendererConfig& rendererConfig,
+                   const std::vector<engine::RenderPlugin*>& plugins, int frames, const RowCallback& onRow) {
     int total = 0;
     for (const BenchScene& scene : scenes) total += scene.shadowedLights * static_cast<int>(scene.settings.size());
 
     engine::Renderer renderer(rendererConfig, plugins);
-    std::vector<BenchRow> rows;
+    SweepRows sweep;
+    std::vector<BenchRow>& rows = sweep.rows;
     for (BenchScene& scene : scenes) {
         if (scene.settings.empty()) continue;  // another shard's
+        const std::vector<engine::Light> original = scene.scene.lights;
         evaluation::SettingTrial trial(renderer, scene.scene, {scene.camera}, frames);
         trial.setAreaTruth(true);
         trial.setNearDistance(scene.nearDistance);
         for (const ShadowSetting& setting : scene.settings) {
-            applyToEveryLight(scene.scene, setting);
+            applyToEveryLight(scene.scene, original, setting);
             const evaluation::TrialResult measured = trial.measure();
             const std::vector<evaluation::LightShimmer> shimmer = trial.shimmer(scene.shimmerPath);
             for (const evaluation::LightResult& light : measured.lights) {
@@ -210,9 +237,10 @@ std::vector<BenchRow> runSweep(std::vector<BenchScene>& scenes, const engine::Re
                     if (moving.slot == light.slot) rows.back().shimmer = 100.0 * moving.count.fraction();
                 onRow(rows.back(), static_cast<int>(rows.size()), total);
             }
+            sweep.jobRows.push_back(static_cast<int>(measured.lights.size()));
         }
     }
-    return rows;
+    return sweep;
 }
 
 } // namespace shadowmap_bench

@@ -34,24 +34,33 @@ struct BenchScene {
 // options.scenes get sweepSettings, options.maskedScenes maskedSettings. With options.times
 // every file gives one scene per time, posed then (BenchScene::name "<stem>@<T>s").
 // Throws engine::InputError naming the file and the reason.
-// A scene whose lights cannot all take a setting's filter (pcss on a light without a size)
-// is swept without it, with a note; `pluginSettings` are the shadow plugin's config settings.
+// A scene whose lights cannot all take a setting (pcss on a light without a size, from the
+// size step or the scene) is swept without it, with one note per filter and size step;
+// `pluginSettings` are the shadow plugin's config settings.
 std::vector<BenchScene> loadBenchScenes(const BenchOptions& options, const nlohmann::json& pluginSettings);
 
-// The cartesian product of the listed variants, resolutions, formats and filters.
+// The cartesian product of the listed variants, resolutions, formats and filters, times the
+// optional axes that apply to each (SweepAxes.h).
 std::vector<ShadowSetting> sweepSettings(const BenchOptions& options);
 
 // The listed variants and resolutions at one depth format and one filter: d24 and pcf (the
-// engine config's defaults) when listed, else the first listed.
+// engine config's defaults) when listed, else the first listed; times the optional axes.
 std::vector<ShadowSetting> maskedSettings(const BenchOptions& options);
 
 // Called after each row is measured: `index` counts from 1 to `total`.
 using RowCallback = std::function<void(const BenchRow& row, int index, int total)>;
 
+// The rows of a sweep, and how many rows each job (one scene under one setting, in sweep
+// order) gave: a shard records them so --merge can deal jobs back (Shards.h), since rows of
+// jobs that differ only in the light size step are otherwise alike but for each light's size.
+struct SweepRows {
+    std::vector<BenchRow> rows;
+    std::vector<int> jobRows;
+};
+
 // Needs a current GL context. `plugins` must include the shadow plugin loaded with map
 // caching off (otherwise a map renders once and later frames time nothing).
-std::vector<BenchRow> runSweep(std::vector<BenchScene>& scenes, const engine::RendererConfig& rendererConfig,
-                               const std::vector<engine::RenderPlugin*>& plugins, int frames,
-                               const RowCallback& onRow);
+SweepRows runSweep(std::vector<BenchScene>& scenes, const engine::RendererConfig& rendererConfig,
+                   const std::vector<engine::RenderPlugin*>& plugins, int frames, const RowCallback& onRow);
 
 } // namespace shadowmap_bench

@@ -40,8 +40,8 @@ std::string dataBlock(const std::string& name, const std::vector<BenchRow>& rows
     text += name + " << EOD\n";
     char line[256];
     for (const BenchRow& row : rows) {
-        std::snprintf(line, sizeof line, "%.4f %.5f %d ", row.shadowMs, row.areaError, pointType(row.setting.variant));
-        text += line + dataLabel(row.setting.label()) + "\n";
+        std::snprintf(line, sizeof line, "%.4f %.5f %d ", row.shadowMs, row.rankedError(), pointType(row.setting.variant));
+        text += line + dataLabel(row.label()) + "\n";
     }
     return text + "EOD\n";
 }
@@ -52,7 +52,7 @@ std::string dataBlock(const std::string& name, const std::vector<BenchRow>& rows
 std::vector<BenchRow> labelledSteps(const std::vector<BenchRow>& front) {
     std::vector<BenchRow> steps;
     for (const BenchRow& row : front)
-        if (steps.empty() || row.areaError <= 0.95 * steps.back().areaError) steps.push_back(row);
+        if (steps.empty() || row.rankedError() <= 0.95 * steps.back().rankedError()) steps.push_back(row);
     return steps;
 }
 
@@ -85,7 +85,7 @@ std::string timeErrorPlotScript(const std::vector<BenchRow>& rows) {
     script += "set multiplot layout " + panels + ",1\n";
     script += "set key outside right top\nset grid\n";
     script += "set xlabel 'shadow passes per frame, ms (median wall time, glFinish)'\n";
-    script += "set ylabel 'area error, % of evaluated pixels (ray-traced lit fraction)'\n";
+    script += "set ylabel 'error, % of evaluated pixels: soft error for a sized light, else area error'\n";
     // Times span three decades (a 512 map of one light to a 2048 woo cube): log x keeps the
     // fast settings, the ones worth choosing, apart.
     script += "set logscale x\nset xrange [*:*]\nset yrange [0:*]\n";

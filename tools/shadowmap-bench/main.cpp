@@ -38,8 +38,10 @@ std::string cpuModel() {
 void printProgress(const BenchRow& row, int index, int total) {
     char shimmer[48] = "";
     if (row.shimmer) std::snprintf(shimmer, sizeof shimmer, ", shimmer %.4f%%", *row.shimmer);
-    std::fprintf(stderr, "[%d/%d] %s %s %s: %.2f ms, error %.3f%%%s\n", index, total, row.scene.c_str(),
-                 row.light.c_str(), row.setting.label().c_str(), row.shadowMs, row.error, shimmer);
+    char soft[48] = "";
+    if (row.softError) std::snprintf(soft, sizeof soft, ", soft error %.3f%%", *row.softError);
+    std::fprintf(stderr, "[%d/%d] %s %s %s: %.2f ms, error %.3f%%%s%s\n", index, total, row.scene.c_str(),
+                 row.light.c_str(), row.label().c_str(), row.shadowMs, row.error, soft, shimmer);
 }
 
 void writePlot(const std::filesystem::path& out, const std::vector<BenchRow>& rows) {
@@ -100,8 +102,8 @@ int run(const BenchOptions& options, std::unique_ptr<engine::GlContext>& context
     context = engine::createEglContext();
     context->makeCurrent();
     host.loadAll(config);
-    const std::vector<BenchRow> rows =
-        runSweep(scenes, config.renderer, host.renderPlugins(), options.frames, printProgress);
+    const SweepRows measured = runSweep(scenes, config.renderer, host.renderPlugins(), options.frames, printProgress);
+    const std::vector<BenchRow>& rows = measured.rows;
 
     SweepDescription sweep{options.width, options.height, options.frames, context->rendererString(),
                            context->versionString(), cpuModel(),
@@ -109,7 +111,7 @@ int run(const BenchOptions& options, std::unique_ptr<engine::GlContext>& context
                            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()};
     writeOutputs(out, rows, sweep);
     // Written last: a folder with shard.json is a finished shard.
-    if (shard.count > 1) engine::writeFileAtomically(out / "shard.json", shardManifest(shard, sweep));
+    if (shard.count > 1) engine::writeFileAtomically(out / "shard.json", shardManifest(shard, sweep, measured.jobRows));
     std::fprintf(stderr, "shadowmap-bench: %zu rows in %.0f s; wrote %s/results.csv, summary.md, time_vs_error.gp/.png\n",
                  rows.size(), sweep.seconds, options.out.c_str());
     return 0;

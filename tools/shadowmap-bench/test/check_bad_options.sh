@@ -15,7 +15,7 @@ expect_error() {  # expect_error FRAGMENT ARGS...
   local output status
   output=$("$bench" --out "$out" "$@" 2>&1)
   status=$?
-  if [[ $status -ne 1 || $output != *"$fragment"* ]]; then
+  if [[ $status -ne 1 || $output != *"$fragment"* || $(wc -l <<< "$output") -ne 1 ]]; then
     echo "shadowmap-bench $*: expected exit 1 and \"$fragment\", got $status: $output"
     failed=1
   fi
@@ -31,5 +31,15 @@ expect_error '--key-light: "sun" is not spot, point, directional or none' --key-
 expect_error '--time: "-1" is not a number in [0, 1000000]' --time -1
 expect_error '--time: "0.5" is listed twice in "0.5,0.5"' --time 0.5,0.5
 expect_error '--shimmer: "1" is not an integer in [2, 10000]' --shimmer 1
+# The optional axes, bounded as the plugin bounds their keys (shadowmap::settingKey).
+expect_error '--light-radii: "-0.1" is not a number in [0, inf]' --light-radii -0.1
+expect_error '--angular-diameters: "-0.01" is not a number in [0, inf]' --angular-diameters 0.05,-0.01
+expect_error '--filter-radii: "17" is not a number in [0, 16]' --filter-radii 17
+expect_error '--filter-taps: "3" is not an integer in [4, 64]' --filter-taps 3
+expect_error '--normal-offsets: "9" is not a number in [0, 8]' --normal-offsets 9
+expect_error '--light-radii and --angular-diameters: 2 and 1 values' --light-radii 0.1,0.2 --angular-diameters 0.05
+# Axes that would multiply no row.
+expect_error '--filter-radii: only pcf has a filter radius, and --filters lists no pcf' --filters pcss --filter-radii 2
+expect_error '--filter-taps: only pcss and pcf with a --filter-radii value above 0 take taps' --filters pcf --filter-taps 8
 [[ $failed -eq 0 ]] && echo "ok"
 exit $failed

@@ -1,7 +1,10 @@
 #!/usr/bin/env bash
 # Two shards merged equal a single run: the same rows in the same order with the same
 # errors (errors are deterministic: the same settings render the same pixels); only the
-# times (columns 7-8, wall clock) differ. Then a merge missing a shard is refused.
+# times (columns 7-8, wall clock) differ. The sweep has three light size steps per filter,
+# so shard 1 runs two jobs in a row that differ only in the size step (pcf at steps 1 and
+# 3): the merge must deal them back as two jobs, and keep the size and soft columns. Then a
+# merge missing a shard is refused.
 # Usage: check_shards_merge.sh BENCH_BINARY CONTENT_DIR
 set -euo pipefail
 bench=$1 content=$2
@@ -10,23 +13,26 @@ trap 'rm -rf "$out"' EXIT
 
 sweep() {
   "$bench" --config "$content/engine.json" --scene "$content/scenes/showcase.gltf" \
-    --variants standard,woo --resolutions 256,512 --depth-formats d24 --filters pcf \
+    --variants standard --resolutions 256 --depth-formats d24 --filters pcf,pcss \
+    --light-radii 0.05,0.1,0.15 --angular-diameters 0.02,0.04,0.06 \
     --width 64 --height 48 --frames 1 "$@" 2> /dev/null
 }
 sweep --out "$out/single"
 sweep --shard 1/2 --out "$out/shard1"
 sweep --shard 2/2 --out "$out/shard2"
 [[ -s $out/shard1/shard.json && -s $out/shard2/shard.json ]] || { echo "no shard.json written"; exit 1; }
-# Each shard ran half of the 4 jobs (3 lights each).
+# Each shard ran half of the 6 jobs (2 filters x 3 size steps, 3 lights each).
 for k in 1 2; do
   rows=$(tail -n +2 "$out/shard$k/results.csv" | wc -l)
-  [[ $rows -eq 6 ]] || { echo "shard $k: expected 6 rows, got $rows"; exit 1; }
+  [[ $rows -eq 9 ]] || { echo "shard $k: expected 9 rows, got $rows"; exit 1; }
 done
 # Merged in either order of the folders.
 "$bench" --merge "$out/shard2" --merge "$out/shard1" --out "$out/merged"
 without_times() { cut -d, -f1-6,9- "$1"; }
 diff <(without_times "$out/single/results.csv") <(without_times "$out/merged/results.csv") \
   || { echo "the merged shards differ from the single run"; exit 1; }
+awk -F, 'NR > 1 && ($19 <= 0 || $23 == "") { print "a merged row without its size or soft error: " $0; bad = 1 }
+         END { exit bad }' "$out/merged/results.csv"
 [[ -s $out/merged/summary.md ]] || { echo "no merged summary.md"; exit 1; }
 
 if "$bench" --merge "$out/shard1" --out "$out/bad" 2> "$out/bad.log"; then echo "merged an incomplete sweep"; exit 1; fi

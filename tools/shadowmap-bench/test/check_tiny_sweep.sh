@@ -12,7 +12,7 @@ trap 'rm -rf "$out"' EXIT
   --width 64 --height 48 --frames 1 --out "$out"
 
 csv=$out/results.csv
-header='scene,light,variant,resolution,depth_format,filter,shadow_ms,frame_ms,acne,leak,error,error_noedge,area_acne,area_leak,area_error,shimmer,near_error,near_error_noedge'
+header='scene,light,variant,resolution,depth_format,filter,shadow_ms,frame_ms,acne,leak,error,error_noedge,area_acne,area_leak,area_error,shimmer,near_error,near_error_noedge,light_size,filter_radius,filter_taps,normal_offset,soft_error,soft_error_noedge,penumbra_error'
 [[ "$(head -n 1 "$csv")" == "$header" ]] || { echo "bad header: $(head -n 1 "$csv")"; exit 1; }
 rows=$(tail -n +2 "$csv" | wc -l)
 [[ $rows -eq 3 ]] || { echo "expected 3 rows (the showcase's lights), got $rows"; exit 1; }
@@ -21,6 +21,8 @@ rows=$(tail -n +2 "$csv" | wc -l)
 # error_noedge and the area figures are percentages in [0, 100]; all plain numbers; the area
 # error is the sum of its parts (to the CSV's 1e-4 rounding, three roundings: 3e-4) and
 # nonzero (a 64x48 view of the showcase has partly lit pixels on every light's shadow edge).
+# Without the optional axes nothing of them is written: the showcase's lights have no size
+# (light_size 0, no soft figures) and the axes' columns are empty.
 awk -F, 'NR > 1 {
   for (i = 7; i <= 15; ++i) if ($i !~ /^[0-9]+(\.[0-9]+)?$/) { print "not a number: " $i " in " $0; bad = 1 }
   if ($1 != "showcase" || $3 != "standard" || $4 != 256 || $5 != "d24" || $6 != "pcf") { print "bad setting: " $0; bad = 1 }
@@ -29,6 +31,9 @@ awk -F, 'NR > 1 {
   d = $15 - $13 - $14; if (d > 3e-4 || d < -3e-4) { print "area error is not acne + leak: " $0; bad = 1 }
   if (!($15 > 0)) { print "area error 0 (area truth not computed?): " $0; bad = 1 }
   if ($16 != "" || $17 != "" || $18 != "") { print "a shimmer or near figure without --shimmer, --near: " $0; bad = 1 }
+  if ($19 != 0) { print "a light size on the showcase without --light-radii: " $0; bad = 1 }
+  for (i = 20; i <= 25; ++i) if ($i != "") { print "column " i " filled without its axis or a sized light: " $0; bad = 1 }
+  if (NF != 25) { print NF " fields, expected 25: " $0; bad = 1 }
 } END { exit bad }' "$csv"
 [[ -s $out/summary.md ]] || { echo "summary.md missing or empty"; exit 1; }
 # It cites the metric definitions by a file the repository has.
