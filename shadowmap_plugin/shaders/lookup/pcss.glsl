@@ -5,7 +5,7 @@
 // from shadow_data.glsl's softLayers, lookupParams and lightInEye.
 // Every tap compares against the receiver's own plane (disk_taps.glsl), so the polygon
 // offset stays the 2x2 filter's. Search and filter reach at most kPcssMaxRadiusTexels
-// (technique/lookup/PcssLookup.h says why).
+// texels of the light's first layer (technique/lookup/PcssLookup.h says why).
 
 bool pcssPerspective(int slot) { return shadowData.lightInEye[slot].w > 0.5; }
 
@@ -36,6 +36,15 @@ float pcssNearestBlocker(int slot, vec4 layer) { return pcssPerspective(slot) ? 
 // would be an infinite distance (0 * inf is NaN).
 vec4 pcssInFront(vec4 depths, float reference, bool reversed) {
     return reversed ? vec4(greaterThan(depths, vec4(reference))) : vec4(lessThan(depths, vec4(reference)));
+}
+
+// The widest search and filter radius in map coordinates of a layer: kPcssMaxRadiusTexels
+// texels of the light's first layer, so that a cascade's coarser texels reach no farther in
+// the world than the first cascade's (a limit in each layer's own texels would let the
+// penumbra widen at a split), and never under one texel of the layer itself.
+vec2 pcssWidestRadius(int slot, int layer, float texels) {
+    float firstLayerTexels = layer == 0 ? 1.0 : shadowData.texelWidths[slot].x / shadowData.texelWidths[slot][layer];
+    return vec2(max(kPcssMaxRadiusTexels * firstLayerTexels, 1.0) / texels);
 }
 
 vec4 pcssGather(sampler2D map, vec2 st, int layer) { return textureGather(map, st); }
@@ -80,7 +89,7 @@ PCSS_BLOCKER_DISTANCE(sampler2DArray)
         float receiver = pcssDistance(slot, scale, reference);                                    \
         vec2 gradient = receiverDepthGradient(vec3(st, reference));                                   \
         float rotation = diskRotation();                                                          \
-        vec2 widest = vec2(kPcssMaxRadiusTexels / texels);                                        \
+        vec2 widest = pcssWidestRadius(slot, layer, texels);                                      \
         vec2 searchRadius = min(scale.xy * pcssSpread(slot, receiver, pcssNearestBlocker(slot, scale)), widest); \
         float blocker = pcssBlockerDistance(slot, map, st, layer, reference, gradient, searchRadius, rotation); \
         if (blocker <= 0.0) return 1.0;                                                            \

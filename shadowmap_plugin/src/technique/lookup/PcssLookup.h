@@ -19,7 +19,9 @@ public:
     // then miss a thin post (the post's shadow fades to dots) and find the receiver's own
     // plane, extrapolated that far, in front of it (speckles). 32 texels keep every
     // penumbra of the showcase and the slab scene (at most about 24), and cost nothing
-    // more than the taps they have.
+    // more than the taps they have. Under cascades they are texels of the first cascade in
+    // every cascade: one world width, so a penumbra wider than the limit is drawn equally
+    // narrow on both sides of a split instead of widening there.
     static constexpr int kMaxRadiusTexels = 32;
 
     Filter filter() const override { return Filter::Pcss; }
