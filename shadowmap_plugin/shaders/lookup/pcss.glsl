@@ -93,8 +93,9 @@ PCSS_BLOCKER_DISTANCE(sampler2DArray)
         vec2 searchRadius = min(scale.xy * pcssSpread(slot, receiver, pcssNearestBlocker(slot, scale)), widest); \
         float blocker = pcssBlockerDistance(slot, map, st, layer, reference, gradient, searchRadius, rotation); \
         if (blocker <= 0.0) return 1.0;                                                            \
-        /* never narrower than the 2x2 filter's own texel, nor wider than the search */           \
-        vec2 radius = clamp(scale.xy * pcssSpread(slot, receiver, blocker), vec2(1.0 / texels), widest); \
+        /* no wider than the search; a penumbra under a texel shrinks the taps onto st, so a    \
+           small light shades as the 2x2 filter does instead of blurred a texel wide */          \
+        vec2 radius = min(scale.xy * pcssSpread(slot, receiver, blocker), widest);                 \
         float lit = 0.0;                                                                           \
         for (int i = 0; i < taps; ++i) {                                                           \
             vec2 tap = st + diskTap(i, taps, rotation) * radius;                               \
@@ -142,7 +143,7 @@ float pcssCube(int slot, samplerCube map, vec3 toPoint, float reference) {
         count += dot(inFront, vec4(1.0));
     }
     if (count == 0.0) return 1.0;
-    float radius = clamp(scale.x * pcssSpread(slot, major, sum / count), texelWidth, widest);
+    float radius = min(scale.x * pcssSpread(slot, major, sum / count), widest);
     float lit = 0.0;
     for (int i = 0; i < taps; ++i) {
         vec2 offset = diskTap(i, taps, rotation) * radius;
