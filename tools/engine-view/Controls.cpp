@@ -26,6 +26,8 @@ int Controls::keyFromName(const std::string& name) {
         case ']': return GLFW_KEY_RIGHT_BRACKET;
         case ',': return GLFW_KEY_COMMA;
         case '.': return GLFW_KEY_PERIOD;
+        case '-': return GLFW_KEY_MINUS;
+        case '=': return GLFW_KEY_EQUAL;
         default: return GLFW_KEY_UNKNOWN;
         }
     }
@@ -36,6 +38,8 @@ int Controls::keyFromName(const std::string& name) {
     if (name == "Esc" || name == "Escape") return GLFW_KEY_ESCAPE;
     if (name == "comma") return GLFW_KEY_COMMA;
     if (name == "period") return GLFW_KEY_PERIOD;
+    if (name == "minus") return GLFW_KEY_MINUS;
+    if (name == "equal") return GLFW_KEY_EQUAL;
     return GLFW_KEY_UNKNOWN;
 }
 
@@ -53,6 +57,8 @@ void Controls::pressKey(int key) {
     case GLFW_KEY_RIGHT_BRACKET: state_.addOffsetUnits(1.0); break;
     case GLFW_KEY_COMMA: state_.addDimming(-0.05); break;
     case GLFW_KEY_PERIOD: state_.addDimming(0.05); break;
+    case GLFW_KEY_MINUS: say(state_.shrinkLightSize()); break;
+    case GLFW_KEY_EQUAL: say(state_.growLightSize()); break;
     case GLFW_KEY_D: state_.nextView(); break;
     case GLFW_KEY_O: requests_.overlay = !requests_.overlay; break;
     case GLFW_KEY_SPACE: playback_.togglePlaying(); break;
@@ -66,6 +72,10 @@ void Controls::pressKey(int key) {
             requests_.say("the scene has no camera " + std::to_string(key - GLFW_KEY_0), true);
         break;
     }
+}
+
+void Controls::say(const std::string& note) {
+    if (!note.empty()) requests_.say(note);
 }
 
 void Controls::cursorMoved(GLFWwindow* window, double x, double y) {

@@ -42,7 +42,7 @@ public:
     // One press of a key (GLFW_KEY_*); unbound keys do nothing.
     void pressKey(int key);
     // A key by the name a script uses: a letter or digit, "Tab", "Esc", "Space", "Left",
-    // "Right", "[", "]", ",", ".";
+    // "Right", "[", "]", ",", ".", "-", "=" (also "comma", "period", "minus", "equal");
     // GLFW_KEY_UNKNOWN (-1) for any other name.
     static int keyFromName(const std::string& name);
 
@@ -53,6 +53,7 @@ public:
     void setPlaying(bool playing) { playback_.setPlaying(playing); requests_.redraw = true; }
 
 private:
+    void say(const std::string& note);  // a key's note on the status line; "" says nothing
     void cursorMoved(GLFWwindow* window, double x, double y);
 
     ViewerState& state_;

@@ -31,6 +31,14 @@ void tint(std::uint8_t* pixel, const std::uint8_t (&color)[3], double amount) {
     for (int c = 0; c < 3; ++c) pixel[c] = static_cast<std::uint8_t>(pixel[c] + (color[c] - pixel[c]) * amount + 0.5);
 }
 
+const char* const kNoShadowTerm = "no plugin provides a shadow term: shaded view";
+
+// The penumbra view: partly lit pixels mostly magenta (a colour lit scenes rarely show), the
+// rest at 30% of their brightness, dark enough that the magenta stands out and light enough
+// that the scene stays readable around it.
+constexpr std::uint8_t kPenumbraColor[3] = {255, 0, 255}, kBlack[3] = {0, 0, 0};
+constexpr double kPenumbraTint = 0.7, kOutsideDimming = 0.7;
+
 } // namespace
 
 struct DebugViews::Cache {
@@ -62,6 +70,17 @@ const truth::SurfaceBuffer& DebugViews::surfaces(const engine::FrameCamera& came
     return cache_->surfaces;
 }
 
+std::size_t paintPenumbra(Image& shaded, const std::vector<std::uint8_t>& shadowTerm) {
+    std::size_t count = 0;
+    const std::size_t pixels = std::min(shadowTerm.size(), shaded.rgba.size() / 4);
+    for (std::size_t i = 0; i < pixels; ++i) {
+        const bool partly = inPenumbra(shadowTerm[i]);
+        tint(&shaded.rgba[4 * i], partly ? kPenumbraColor : kBlack, partly ? kPenumbraTint : kOutsideDimming);
+        count += partly;
+    }
+    return count;
+}
+
 ViewFrame DebugViews::render(DebugView view, const ViewedLight* light, const engine::ShadowView* shadow,
                              const engine::FrameCamera& camera) {
     if (!light && view != DebugView::Shaded) {
@@ -88,22 +107,11 @@ ViewFrame DebugViews::render(DebugView view, const ViewedLight* light, const eng
     case DebugView::ProjectedDepth:
         return projected(*light, camera);
     case DebugView::Comparison:
-    case DebugView::ShadowTerm: {
-        const bool comparison = view == DebugView::Comparison;
-        (comparison ? request.comparisonSlots : request.shadowMaskSlots).push_back(light->slot);
-        out.frame = renderFrame(request);
-        if (!out.frame.shadowTermProvided) {
-            out.image = {camera.width, camera.height, renderer_.readColor()};
-            out.notes.push_back("no plugin provides a shadow term: shaded view");
-        } else if (comparison) {
-            out.image = {camera.width, camera.height, renderer_.readComparison(light->slot)};
-            out.notes.push_back("comparison: green lit, red shadowed, blue offset decided, grey no say");
-        } else {
-            out.image = Image::fromGray(camera.width, camera.height, renderer_.readShadowMask(light->slot));
-            out.notes.push_back("shadow term of " + light->name + ": white lit, black shadowed");
-        }
-        return out;
-    }
+        return comparison(*light, camera);
+    case DebugView::ShadowTerm:
+        return shadowTerm(*light, camera);
+    case DebugView::Penumbra:
+        return penumbra(*light, camera);
     case DebugView::AcneLeak:
         return acneLeak(*light, camera);
     case DebugView::Cascades:
@@ -164,18 +172,62 @@ ViewFrame DebugViews::projected(const ViewedLight& light, const engine::FrameCam
     return out;
 }
 
-ViewFrame DebugViews::acneLeak(const ViewedLight& light, const engine::FrameCamera& camera) {
+std::vector<std::uint8_t> DebugViews::renderShadowTerm(const ViewedLight& light, const engine::FrameCamera& camera,
+                                                       ViewFrame& out) {
     engine::FrameRequest request;
     request.camera = camera;
     request.shadowMaskSlots.push_back(light.slot);
-    ViewFrame out;
     out.frame = renderFrame(request);
     out.image = {camera.width, camera.height, renderer_.readColor()};
+    if (out.frame.shadowTermProvided) return renderer_.readShadowMask(light.slot);
+    out.notes.push_back(kNoShadowTerm);
+    return {};
+}
+
+ViewFrame DebugViews::comparison(const ViewedLight& light, const engine::FrameCamera& camera) {
+    engine::FrameRequest request;
+    request.camera = camera;
+    request.comparisonSlots.push_back(light.slot);
+    ViewFrame out;
+    out.frame = renderFrame(request);
     if (!out.frame.shadowTermProvided) {
-        out.notes.push_back("no plugin provides a shadow term: shaded view");
+        out.image = {camera.width, camera.height, renderer_.readColor()};
+        out.notes.push_back(kNoShadowTerm);
         return out;
     }
-    const std::vector<float> shade = truth::shadeFromMask8(renderer_.readShadowMask(light.slot));
+    out.image = {camera.width, camera.height, renderer_.readComparison(light.slot)};
+    out.notes.push_back("comparison: green lit, red shadowed, blue offset decided, grey no say");
+    return out;
+}
+
+ViewFrame DebugViews::shadowTerm(const ViewedLight& light, const engine::FrameCamera& camera) {
+    ViewFrame out;
+    const std::vector<std::uint8_t> term = renderShadowTerm(light, camera, out);
+    if (term.empty()) return out;
+    out.image = Image::fromGray(camera.width, camera.height, term);
+    out.notes.push_back("shadow term of " + light.name + ": white lit, black shadowed");
+    return out;
+}
+
+ViewFrame DebugViews::penumbra(const ViewedLight& light, const engine::FrameCamera& camera) {
+    ViewFrame out;
+    const std::vector<std::uint8_t> term = renderShadowTerm(light, camera, out);
+    if (term.empty()) return out;
+    const std::size_t count = paintPenumbra(out.image, term);
+    out.notes.push_back("penumbra of " + light.name + " (magenta: partly lit, shadow term strictly between 0 and 1): " +
+                        std::to_string(count) + " pixels, " +
+                        percent(static_cast<double>(count) / static_cast<double>(term.size())) + " of the view");
+    const engine::ShadowView* view = out.frame.shadowView(light.slot);
+    if (view && !(view->lightRadius > 0.0) && !(view->angularDiameter > 0.0))
+        out.notes.push_back(light.name + " has no size: only the filter's edge is partly lit (keys - =)");
+    return out;
+}
+
+ViewFrame DebugViews::acneLeak(const ViewedLight& light, const engine::FrameCamera& camera) {
+    ViewFrame out;
+    const std::vector<std::uint8_t> term = renderShadowTerm(light, camera, out);
+    if (term.empty()) return out;
+    const std::vector<float> shade = truth::shadeFromMask8(term);
     const truth::SurfaceBuffer& buffer = surfaces(camera);
     if (cache_->truthSlot != light.slot) {
         if (!visibility_) visibility_ = std::make_unique<truth::RayTracedVisibility>(scene_);

@@ -13,6 +13,12 @@
 //               r/q agrees with the map (lit), red where the map holds something nearer
 //               (shadowed), blue where the offset decided, grey where the map has no say;
 //   shadow      the light's shadow term alone (FrameRequest::shadowMaskSlots), gray;
+//   penumbra    the shaded image with the pixels the light partly lights (its 8-bit shadow
+//               term strictly between 0 and 255, read as the shadow view reads it) in
+//               magenta and the rest dimmed, so a penumbra's width and reach stand out
+//               (paintPenumbra); the count in the notes. The soft truth's penumbra is not
+//               drawn beside it: it costs 64 shadow rays per pixel (~5 s a 720p frame on
+//               two cores), too slow to follow the keys; the bench scores it;
 //   truth       the shaded image with acne (false shadow, red) and leak (false light, blue)
 //               against Embree shadow rays from every pixel's surface point, weighted by
 //               how wrong the shade is; rates of the metrics (docs/metrics.md) in the notes. The ray
@@ -37,6 +43,13 @@ struct SurfaceBuffer;
 
 namespace engine_view {
 
+// 0 < term < 255: the light neither fully lights nor fully shadows the pixel.
+constexpr bool inPenumbra(std::uint8_t shadowTerm) { return shadowTerm > 0 && shadowTerm < 255; }
+// The penumbra view's picture (DebugView::Penumbra) from the shaded image and the light's
+// 8-bit shadow term of the same frame: the pixels inPenumbra tinted magenta, the rest
+// dimmed. Returns how many pixels are in the penumbra.
+std::size_t paintPenumbra(Image& shaded, const std::vector<std::uint8_t>& shadowTerm);
+
 struct ViewFrame {
     Image image;
     engine::FrameResult frame;       // the frame that was rendered (timings, plugin stats)
@@ -57,6 +70,14 @@ public:
 private:
     engine::FrameResult renderFrame(engine::FrameRequest request);
     const truth::SurfaceBuffer& surfaces(const engine::FrameCamera& camera);
+    // Renders a frame with the light's shadow term; out.frame is that frame and out.image
+    // its shaded picture. Returns the term (8-bit gray, 255 lit), or nothing (and a note in
+    // out) when no plugin provides one.
+    std::vector<std::uint8_t> renderShadowTerm(const ViewedLight& light, const engine::FrameCamera& camera,
+                                               ViewFrame& out);
+    ViewFrame comparison(const ViewedLight& light, const engine::FrameCamera& camera);
+    ViewFrame shadowTerm(const ViewedLight& light, const engine::FrameCamera& camera);
+    ViewFrame penumbra(const ViewedLight& light, const engine::FrameCamera& camera);
     ViewFrame depthMap(const ViewedLight& light, const engine::FrameCamera& camera);
     ViewFrame projected(const ViewedLight& light, const engine::FrameCamera& camera);
     ViewFrame acneLeak(const ViewedLight& light, const engine::FrameCamera& camera);

@@ -19,6 +19,11 @@ std::string format(const char* pattern, auto... values) {
 
 } // namespace
 
+std::string OverlayText::lightSize(double size, engine::Light::Type type) {
+    if (!(size > 0.0)) return "point";
+    return format("size %g%s", size, type == engine::Light::Type::Directional ? " rad" : "");
+}
+
 std::string OverlayText::shadeSource(const engine::ShadeCacheReport& shadeCache, int slot) {
     const std::pair<const std::vector<int>*, const char*> sources[] = {
         {&shadeCache.fetched, "shade reused"}, {&shadeCache.computed, "shade computed"},
@@ -56,9 +61,10 @@ std::vector<OverlayLine> OverlayText::lines(const ViewerState& state, const engi
         } else {
             const shadowmap::ShadowSettings used = shadowmap::usedSettings(*view);
             const glm::vec2 offset = used.effectivePolygonOffset();
-            line += format("\t%s\t%d%s\t%s\t%s\toffset %g/%g\tdim %.2f", shadowmap::toString(used.variant),
+            line += format("\t%s\t%d%s\t%s\t%s\t%s\toffset %g/%g\tdim %.2f", shadowmap::toString(used.variant),
                            used.resolution, view->cube ? " cube" : "", shadowmap::toString(used.depthFormat),
-                           shadowmap::toString(used.filter), shadowmap::jsonNumber(offset.x),
+                           lightSize(used.lightSize(light.type), light.type).c_str(), shadowmap::toString(used.filter),
+                           shadowmap::jsonNumber(offset.x),
                            shadowmap::jsonNumber(offset.y), settings.at("dimming").get<double>());
             bool ran = false;
             const double ms = frame.shadowPassMs(*view, ran);
@@ -79,8 +85,8 @@ std::vector<OverlayLine> OverlayText::lines(const ViewerState& state, const engi
     for (const std::string& note : notes) out.push_back({note, kNote});
     if (!status.empty()) out.push_back({status, statusIsError ? kError : kNote});
     // Three short lines rather than two long ones: each fits a 1280-pixel window.
-    out.push_back({"Tab light  V variant  R size  F format  P filter  C cascades  T stable", kHelp});
-    out.push_back({"[ ] offset units  , . dimming  D view  1-9 glTF camera  0 framing", kHelp});
+    out.push_back({"Tab light  V variant  R map size  F format  P filter  C cascades  T stable", kHelp});
+    out.push_back({"- = light size  [ ] offset units  , . dimming  D view  1-9 glTF camera  0 framing", kHelp});
     out.push_back({"drag: orbit (left), pan (right)  wheel zoom  O text  S save  Esc quit", kHelp});
     return out;
 }

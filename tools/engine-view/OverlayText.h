@@ -1,5 +1,5 @@
 #pragma once
-// What the overlay says: one line per light (variant, map size, depth format, filter,
+// What the overlay says: one line per light (variant, map size, depth format, size, filter,
 // polygon offset, dimming, ms of its passes, cached or rendered, where the lit pass took its
 // shade from), the frame's time, view
 // and camera, the view's notes, a transient status message, and the keys.
@@ -28,6 +28,10 @@ public:
     // "shade reused" (shade cache), "shade computed" (and cached), "shade live" (evaluated,
     // not cached), "shade constant", or "" when the frame does not say.
     static std::string shadeSource(const engine::ShadeCacheReport& shadeCache, int slot);
+
+    // A light's size (light_radius, or angular_diameter for a directional light) beside its
+    // filter, which it decides pcss by: "size 0.15", "size 0.0093 rad", or "point" for 0.
+    static std::string lightSize(double size, engine::Light::Type type);
 
 private:
     std::map<int, double> lastMs_;  // by light slot

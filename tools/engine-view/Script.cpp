@@ -120,8 +120,7 @@ Script Script::parse(const std::string& text, const std::string& fileName) {
         if (command.verb == "overlay" && command.words[0] != "on" && command.words[0] != "off")
             script.fail(command, "expected on or off");
         if (command.verb == "view" && !parseView(command.words[0]))
-            script.fail(command, "unknown view \"" + command.words[0] +
-                                     "\" (shaded, light, depth, projected, comparison, shadow, truth, cascades)");
+            script.fail(command, "unknown view \"" + command.words[0] + "\" (" + viewNames() + ")");
         if (command.verb == "key" && Controls::keyFromName(command.words[0]) < 0)
             script.fail(command, "unknown key \"" + command.words[0] + "\"");
         script.commands_.push_back(std::move(command));

@@ -3,12 +3,13 @@
 // frame after a command shows its effect). Blank lines and lines starting with '#' are
 // skipped. The grammar:
 //   key NAME               press a key (Controls::keyFromName: V, Tab, Esc, Space, Left, Right,
-//                          [, ], ",", ".", 1...)
+//                          [, ], ",", ".", "-", "=", 1...)
 //   select LIGHT           select a light by name
 //   set LIGHT KEY VALUE    set a key of the light's extras.shadow; VALUE is JSON, or a bare
 //                          word taken as a string: `set sun resolution 1024`, `set sun
 //                          variant woo`, `set sun polygon_offset [2, 6]`
-//   view NAME              shaded | light | depth | projected | comparison | shadow | truth
+//   view NAME              shaded | light | depth | projected | comparison | shadow | penumbra |
+//                          truth | cascades
 //   camera N|NAME|framing  a glTF camera by number (1 = first) or by name, or the framing one
 //   orbit DX DY            a left-button drag of DX, DY pixels
 //   pan DX DY              a right-button drag

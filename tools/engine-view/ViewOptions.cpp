@@ -26,8 +26,10 @@ const char* const kViewUsage =
     "  [--time T]               (the scene posed at T seconds; default: at rest)\n"
     "  [--animate NAME|all]     (play that animation, or all, from T; Space plays all)\n"
     "keys: Tab light, V variant, R resolution, F depth format, P filter, C cascades,\n"
-    "      T stable cascades, [ ] offset units,\n"
-    "      , . dimming, 1-9 glTF cameras, 0 framing camera, D debug view, O overlay,\n"
+    "      T stable cascades, [ ] offset units, , . dimming,\n"
+    "      - = light size (light_radius, or angular_diameter for a directional light;\n"
+    "      down to 0 and back up; at 0 a pcss light's filter becomes pcf),\n"
+    "      1-9 glTF cameras, 0 framing camera, D debug view, O overlay,\n"
     "      S save settings, Space play/pause, Left/Right step 0.1 s, Esc quit;\n"
     "      mouse: left orbit, right/middle pan, wheel zoom\n";
 

@@ -18,7 +18,21 @@ namespace engine_view {
 namespace {
 
 constexpr std::array<const char*, kDebugViewCount> kViewNames = {
-    "shaded", "light", "depth", "projected", "comparison", "shadow", "truth", "cascades"};
+    "shaded", "light", "depth", "projected", "comparison", "shadow", "penumbra", "truth", "cascades"};
+
+// The smallest sizes the keys give, one step up from 0: a 1 cm radius (world units are
+// metres in glTF), and 2 mrad, about a fifth of the sun's 0.0093.
+constexpr double kSmallestLightRadius = 0.01;
+constexpr double kSmallestAngularDiameter = 0.002;
+// The ladder's sizes keep this many significant digits, so the saved glTF reads 0.0225,
+// not 0.022500000000000003.
+constexpr int kLightSizeDigits = 4;
+
+double roundToSignificant(double value, int digits) {
+    if (!(value > 0.0)) return value;
+    const double scale = std::pow(10.0, digits - 1 - static_cast<int>(std::floor(std::log10(value))));
+    return std::round(value * scale) / scale;
+}
 
 // The value after `current` among a key's allowed values (the first when `current` is
 // none of them), so the keys cycle through exactly what the plugin accepts.
@@ -36,6 +50,39 @@ std::optional<DebugView> parseView(const std::string& name) {
     for (int i = 0; i < kDebugViewCount; ++i)
         if (name == kViewNames[i]) return static_cast<DebugView>(i);
     return std::nullopt;
+}
+
+std::string viewNames() {
+    std::string names;
+    for (const char* name : kViewNames) names += (names.empty() ? "" : ", ") + std::string(name);
+    return names;
+}
+
+const char* lightSizeKey(engine::Light::Type type) {
+    return type == engine::Light::Type::Directional ? "angular_diameter" : "light_radius";
+}
+
+double smallestLightSize(engine::Light::Type type) {
+    return type == engine::Light::Type::Directional ? kSmallestAngularDiameter : kSmallestLightRadius;
+}
+
+double stepLightSize(double size, engine::Light::Type type, bool grow) {
+    const double smallest = smallestLightSize(type);
+    if (grow && size < smallest) return smallest;
+    // Never below 0 (the plugin refuses a negative size): the smallest size, then 0.
+    if (!grow && size <= smallest) return 0.0;
+    // The keys walk the ladder smallest * kLightSizeStep^k, so a step down undoes a step up
+    // exactly; a size set otherwise (script, file) steps to the next rung in the key's way.
+    const auto rung = [&](int k) { return roundToSignificant(smallest * std::pow(kLightSizeStep, k), kLightSizeDigits); };
+    const int estimate = static_cast<int>(std::floor(std::log(size / smallest) / std::log(kLightSizeStep)));
+    int k = std::max(estimate - 1, 0);
+    if (grow) {
+        while (rung(k) <= size) ++k;
+    } else {
+        k = estimate + 1;
+        while (k > 0 && rung(k) >= size) --k;
+    }
+    return rung(k);
 }
 
 ViewerState::ViewerState(engine::Scene& scene, nlohmann::json pluginDefaults)
@@ -191,6 +238,24 @@ void ViewerState::addDimming(double delta) {
     const double dimming =
         std::clamp(effective(selected_)["dimming"].get<double>() + delta, *range.minimum, *range.maximum);
     set(selected_, "dimming", std::round(dimming * 100.0) / 100.0);
+}
+
+std::string ViewerState::changeLightSize(bool grow) {
+    if (selected_ < 0) return {};
+    const ViewedLight& light = lights_[selected_];
+    const nlohmann::json current = effective(selected_);
+    const char* key = lightSizeKey(light.type);
+    const double size = stepLightSize(current[key].get<double>(), light.type, grow);
+    set(selected_, key, size);
+    const std::string pcss = shadowmap::toString(shadowmap::Filter::Pcss);
+    if (size > 0.0 || current["filter"] != pcss) return {};
+    // pcss without a size is a setting the plugin refuses. Refusing the step instead would
+    // leave 0 out of the keys' reach while pcss is on (and P goes from pcss to nearest, not
+    // to pcf); pcf is the filter a point light's shadow is best served by, and the filter
+    // every light starts with. A step up again does not bring pcss back: P does.
+    const std::string pcf = shadowmap::toString(shadowmap::Filter::Pcf);
+    set(selected_, "filter", pcf);
+    return light.name + ": " + key + " 0 is a point light, which pcss cannot soften: filter " + pcss + " -> " + pcf;
 }
 
 void ViewerState::apply(engine::Renderer& renderer) {

@@ -14,11 +14,24 @@
 
 namespace engine_view {
 
-enum class DebugView { Shaded, LightView, DepthMap, ProjectedDepth, Comparison, ShadowTerm, AcneLeak, Cascades };
-constexpr int kDebugViewCount = 8;
-// "shaded", "light", "depth", "projected", "comparison", "shadow", "truth", "cascades"
+// In the order D cycles them (the penumbra right after the shadow term it is drawn from).
+enum class DebugView { Shaded, LightView, DepthMap, ProjectedDepth, Comparison, ShadowTerm, Penumbra, AcneLeak, Cascades };
+constexpr int kDebugViewCount = 9;
+// "shaded", "light", "depth", "projected", "comparison", "shadow", "penumbra", "truth", "cascades"
 const char* viewName(DebugView view);
 std::optional<DebugView> parseView(const std::string& name);
+// Every view's name, in order, comma-separated (for error messages).
+std::string viewNames();
+
+// A light's size as the size keys step it: the setting its type is sized by (light_radius
+// for spot and point lights, angular_diameter for directional ones), on the ladder
+// smallest * kLightSizeStep^k (four significant digits). 0 (a point light) and the type's
+// smallest size are one step apart, so the keys reach 0 and leave it.
+constexpr double kLightSizeStep = 1.5;
+const char* lightSizeKey(engine::Light::Type type);
+double smallestLightSize(engine::Light::Type type);
+// `size` one step larger (grow) or smaller, as the keys step it.
+double stepLightSize(double size, engine::Light::Type type, bool grow);
 
 struct ViewedLight {
     std::string name;  // as the shadow plugin names it: the light's name, else its node's
@@ -53,6 +66,11 @@ public:
     void toggleStable();     // stable cascades on <-> off
     void addOffsetUnits(double delta);  // polygon offset units, kept >= 0
     void addDimming(double delta);      // kept in [0, 1], rounded to 0.01
+    // The light's size one step larger or smaller (stepLightSize). A step to 0 under pcss
+    // also sets the filter to pcf (pcss needs a size): returns that note for the overlay,
+    // else "".
+    std::string growLightSize() { return changeLightSize(true); }
+    std::string shrinkLightSize() { return changeLightSize(false); }
     // Any key of extras.shadow (the plugin checks it when applied).
     void set(int index, const std::string& key, const nlohmann::json& value);
 
@@ -75,6 +93,7 @@ public:
 
 private:
     nlohmann::json& shadowOf(int index);  // scene.lights[...].extras["shadow"], created on demand
+    std::string changeLightSize(bool grow);
 
     engine::Scene& scene_;
     nlohmann::json defaults_;

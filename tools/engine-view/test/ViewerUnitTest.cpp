@@ -1,5 +1,7 @@
 // engine-view without a window: saving settings in place (every other byte kept), the
 // script grammar and its errors, and the per-light edits the keys make.
+#include "Controls.h"
+#include "DebugViews.h"
 #include "DepthImage.h"
 #include "JsonSpans.h"
 #include "OverlayText.h"
@@ -173,7 +175,7 @@ TEST(Script, ErrorsNameTheFileAndLine) {
     EXPECT_EQ(message("key F13"), "s.txt:1: key: unknown key \"F13\"");
     EXPECT_EQ(message("set sun"), "s.txt:1: set: expected 3 or more argument(s), got 1");
     EXPECT_EQ(message("view up"), "s.txt:1: view: unknown view \"up\" (shaded, light, depth, projected, comparison, "
-                                  "shadow, truth, cascades)");
+                                  "shadow, penumbra, truth, cascades)");
     EXPECT_EQ(message("overlay maybe"), "s.txt:1: overlay: expected on or off");
 }
 
@@ -278,10 +280,142 @@ TEST(ViewerState, KeysCycleThroughWhatThePluginAccepts) {
     EXPECT_EQ(state.effective(0)["dimming"], 0.4);
 }
 
+namespace {
+
+// Whether the plugin takes light `index`'s settings as the viewer holds them: its own keys
+// (a light sized by its type's key) and the effective settings (pcss only with a size).
+void expectAccepted(ViewerState& state, const engine::Scene& scene, int index) {
+    const engine::Light::Type type = state.lights()[index].type;
+    const nlohmann::json& own = scene.lights[state.lights()[index].light].extras["shadow"];
+    EXPECT_NO_THROW(shadowmap::checkSizeKeyForType(own, type, "test", "shadow")) << own;
+    EXPECT_NO_THROW(shadowmap::checkFilterForType(shadowmap::parseSettings(state.effective(index), "test", "shadow"),
+                                                  type, "test", "shadow"))
+        << state.effective(index);
+}
+
+} // namespace
+
+TEST(ViewerState, SizeStepsReachZeroAndLeaveIt) {
+    using Type = engine::Light::Type;
+    for (const Type type : {Type::Spot, Type::Point, Type::Directional}) {
+        const double smallest = smallestLightSize(type);
+        EXPECT_GT(smallest, 0.0);
+        EXPECT_EQ(stepLightSize(0.0, type, true), smallest);
+        EXPECT_EQ(stepLightSize(0.0, type, false), 0.0);  // clamped at 0
+        EXPECT_EQ(stepLightSize(smallest, type, false), 0.0);
+        EXPECT_EQ(stepLightSize(0.5 * smallest, type, false), 0.0);  // below the smallest: to 0
+        EXPECT_EQ(stepLightSize(1.2 * smallest, type, false), smallest);  // not below the smallest before 0
+        // A size off the keys' ladder (set by a script) steps to the next rung each way.
+        const double off = 10.3 * smallest;
+        EXPECT_GT(stepLightSize(off, type, true), off);
+        EXPECT_LE(stepLightSize(off, type, true), off * kLightSizeStep);
+        EXPECT_LT(stepLightSize(off, type, false), off);
+        EXPECT_GE(stepLightSize(off, type, false), off / kLightSizeStep);
+        // Steps multiply by kLightSizeStep, and a step down undoes a step up exactly.
+        double size = smallest;
+        std::vector<double> up = {size};
+        for (int i = 0; i < 20; ++i) up.push_back(size = stepLightSize(size, type, true));
+        for (std::size_t i = 1; i < up.size(); ++i) EXPECT_NEAR(up[i] / up[i - 1], kLightSizeStep, 1e-3);
+        for (std::size_t i = up.size() - 1; i > 0; --i) EXPECT_EQ(stepLightSize(up[i], type, false), up[i - 1]);
+    }
+    EXPECT_STREQ(lightSizeKey(Type::Directional), "angular_diameter");
+    EXPECT_STREQ(lightSizeKey(Type::Spot), "light_radius");
+    EXPECT_STREQ(lightSizeKey(Type::Point), "light_radius");
+}
+
+TEST(ViewerState, SizeKeysSizeEachLightByItsType) {
+    engine::Scene scene = twoLights();
+    scene.lights[1].type = engine::Light::Type::Directional;
+    ViewerState state(scene, nlohmann::json::object());
+    const auto own = [&](int light) { return scene.lights[light].extras["shadow"]; };
+    EXPECT_EQ(state.shrinkLightSize(), "");
+    EXPECT_EQ(own(0)["light_radius"], 0.0);
+    for (int i = 0; i < 3; ++i) EXPECT_EQ(state.growLightSize(), "");
+    EXPECT_EQ(own(0)["light_radius"].get<double>(),
+              stepLightSize(stepLightSize(smallestLightSize(engine::Light::Type::Spot), engine::Light::Type::Spot, true),
+                            engine::Light::Type::Spot, true));
+    EXPECT_FALSE(own(0).contains("angular_diameter"));
+    expectAccepted(state, scene, 0);
+    state.selectNext();
+    state.growLightSize();
+    EXPECT_EQ(own(1)["angular_diameter"], smallestLightSize(engine::Light::Type::Directional));
+    EXPECT_FALSE(own(1).contains("light_radius"));
+    expectAccepted(state, scene, 1);
+    EXPECT_EQ(own(0)["light_radius"].get<double>(), state.effective(0)["light_radius"].get<double>())
+        << "the other light is left as it was";
+}
+
+TEST(ViewerState, ShrinkingAPcssLightToAPointFallsBackToPcf) {
+    engine::Scene scene = twoLights();
+    ViewerState state(scene, nlohmann::json::object());
+    const std::string pcss = shadowmap::toString(shadowmap::Filter::Pcss), pcf = shadowmap::toString(shadowmap::Filter::Pcf);
+    state.growLightSize();
+    state.set(0, "filter", pcss);
+    expectAccepted(state, scene, 0);
+    const std::string note = state.shrinkLightSize();
+    EXPECT_NE(note.find(pcf), std::string::npos) << note;
+    EXPECT_NE(note.find("key"), std::string::npos) << note;  // names the light
+    EXPECT_EQ(scene.lights[0].extras["shadow"]["light_radius"], 0.0);
+    EXPECT_EQ(scene.lights[0].extras["shadow"]["filter"], pcf);
+    expectAccepted(state, scene, 0);
+    // Sized again, the filter stays pcf (P brings pcss back); a hard filter is left alone at 0.
+    EXPECT_EQ(state.growLightSize(), "");
+    EXPECT_EQ(scene.lights[0].extras["shadow"]["filter"], pcf);
+    state.set(0, "filter", shadowmap::toString(shadowmap::Filter::Nearest));
+    EXPECT_EQ(state.shrinkLightSize(), "");
+    EXPECT_EQ(scene.lights[0].extras["shadow"]["filter"], shadowmap::toString(shadowmap::Filter::Nearest));
+    expectAccepted(state, scene, 0);
+}
+
+TEST(Controls, SizeKeysHaveScriptNames) {
+    EXPECT_GE(Controls::keyFromName("-"), 0);
+    EXPECT_GE(Controls::keyFromName("="), 0);
+    EXPECT_EQ(Controls::keyFromName("-"), Controls::keyFromName("minus"));
+    EXPECT_EQ(Controls::keyFromName("="), Controls::keyFromName("equal"));
+    EXPECT_NE(Controls::keyFromName("-"), Controls::keyFromName("="));
+}
+
+TEST(PenumbraView, TintsExactlyThePartlyLitPixelsAndDimsTheRest) {
+    const std::vector<std::uint8_t> term = {0, 1, 128, 254, 255, 0};
+    Image image{3, 2, {}};
+    for (std::uint8_t value : {200, 30, 90, 255, 120, 0}) image.rgba.insert(image.rgba.end(), {value, value, value, 255});
+    const Image shaded = image;
+    EXPECT_EQ(paintPenumbra(image, term), 3u);
+    for (std::size_t i = 0; i < term.size(); ++i) {
+        const std::uint8_t* before = &shaded.rgba[4 * i];
+        const std::uint8_t* after = &image.rgba[4 * i];
+        EXPECT_EQ(inPenumbra(term[i]), term[i] > 0 && term[i] < 255);
+        if (inPenumbra(term[i])) {
+            // Magenta, wherever it falls: red and blue up, green down.
+            EXPECT_GE(after[0], 128) << i;
+            EXPECT_GE(after[2], 128) << i;
+            EXPECT_LT(after[1], 128) << i;
+        } else {
+            for (int c = 0; c < 3; ++c) EXPECT_LT(after[c], 128) << i;  // dimmed
+            for (int c = 0; c < 3; ++c) EXPECT_LE(after[c], before[c]) << i;
+            EXPECT_EQ(after[0], after[1]) << i;  // the hue kept
+        }
+    }
+}
+
+TEST(OverlayText, ShowsTheLightsSizeInItsUnit) {
+    EXPECT_EQ(OverlayText::lightSize(0.0, engine::Light::Type::Spot), "point");
+    EXPECT_EQ(OverlayText::lightSize(0.0, engine::Light::Type::Directional), "point");
+    EXPECT_EQ(OverlayText::lightSize(0.15, engine::Light::Type::Point), "size 0.15");
+    EXPECT_EQ(OverlayText::lightSize(0.0093, engine::Light::Type::Directional), "size 0.0093 rad");
+}
+
 TEST(ViewerState, ViewsHaveNames) {
     for (int i = 0; i < kDebugViewCount; ++i)
         EXPECT_EQ(parseView(viewName(static_cast<DebugView>(i))), static_cast<DebugView>(i));
     EXPECT_FALSE(parseView("sideways"));
+    EXPECT_EQ(parseView("penumbra"), DebugView::Penumbra);
+    // D goes from the shadow term to its penumbra.
+    engine::Scene scene = twoLights();
+    ViewerState state(scene, nlohmann::json::object());
+    state.setView(DebugView::ShadowTerm);
+    state.nextView();
+    EXPECT_EQ(state.view(), DebugView::Penumbra);
 }
 
 TEST(OverlayText, SaysWhereEachLightsShadeCameFrom) {

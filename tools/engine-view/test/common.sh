@@ -1,4 +1,4 @@
-# Sourced by engine-view's CLI tests. Arguments: VIEW RENDER COMPARE CONTENT_DIR.
+# Sourced by engine-view's CLI tests. Arguments: VIEW RENDER COMPARE CONTENT_DIR CHECK_PENUMBRA.
 #
 # Tolerance for "the viewer's screenshot equals engine-render's image": every pixel within
 # 1/255 per channel (TOLERANCE, FRACTION below). Both images come from the same Mesa llvmpipe
@@ -10,7 +10,7 @@
 # far below what a real difference makes: one dimming step (0.05) of one light moves
 # pixels by up to 13/255 (settings_round_trip.sh checks that this control does differ).
 set -euo pipefail
-view=$1 render=$2 compare=$3 content=$4
+view=$1 render=$2 compare=$3 content=$4 check_penumbra=${5:-}
 TOLERANCE=1
 FRACTION=1.0
 

@@ -30,6 +30,8 @@ expect_error $'time soon' 'bad.txt:1: time: T must be a number of seconds in [0,
 # The plugin refuses these when they are applied (the next frame): still the `set` line.
 expect_error $'set sun variant foo\nframes 1' 'engine-view: bad.txt:1: ' 'sun' '"foo"'
 expect_error $'set sun colour 3' 'engine-view: bad.txt:1: ' 'sun' 'colour'
+# A light is sized by its type's key: the sun by angular_diameter, never light_radius.
+expect_error $'set sun light_radius 0.1' 'engine-view: bad.txt:1: ' 'sun' 'angular_diameter'
 
 # Outputs are checked before the window opens: a save into a missing folder (or with
 # nowhere to save) fails naming its line, and the screenshot before it is never taken.
