@@ -81,10 +81,18 @@ std::string tableText(const std::string& text) {
     return out;
 }
 
+// The soft columns of stress.csv: empty for a light without a size.
+std::string softFields(const Row& row) {
+    if (!row.soft) return ",,";
+    return fixed(row.soft->error, 4) + ',' + fixed(row.soft->errorNoEdge, 4) + ',' + fixed(row.soft->penumbraError, 4);
+}
+
+// The error the bounds judge (judgedError), "soft " before it for a light with a size.
 std::string cell(const Row& row) {
     if (row.nonFiniteShade + row.nonFiniteDepth > 0 || row.nonFiniteStats) return "**NaN**";
     if (row.map == "none") return "no map";
-    return fixed(row.error, 2) + " (" + fixed(row.errorNoEdge, 2) + ")";
+    const JudgedError judged = judgedError(row);
+    return (judged.soft ? "soft " : "") + fixed(judged.error, 2) + " (" + fixed(judged.errorNoEdge, 2) + ")";
 }
 
 } // namespace
@@ -105,7 +113,7 @@ void writeCsv(const std::filesystem::path& path, const std::vector<Row>& rows) {
     std::ostringstream out;
     out << "sweep,light,variant,format,label,value,acne_pct,leak_pct,error_pct,error_noedge_pct,"
            "evaluated_pixels,nonfinite_shade,nonfinite_depth,nonfinite_matrices,map,near,far,"
-           "skip_reason,seconds,shimmer_pct\n";
+           "skip_reason,seconds,shimmer_pct,soft_error_pct,soft_error_noedge_pct,penumbra_error_pct\n";
     for (const Row& row : rows)
         out << row.sweep << ',' << row.light << ',' << row.variant << ',' << row.format << ','
             << csvField(row.label) << ',' << general(row.value) << ',' << fixed(row.acne, 4) << ','
@@ -114,7 +122,8 @@ void writeCsv(const std::filesystem::path& path, const std::vector<Row>& rows) {
             << (row.nonFiniteStats ? 1 : 0) << ',' << row.map << ',' << general(row.nearPlane) << ','
             << (row.farPlane < 0.0 ? std::string("inf") : general(row.farPlane)) << ','
             << csvField(row.skipReason) << ',' << fixed(row.seconds, 3) << ','
-            << (row.shimmer < 0.0 ? std::string() : fixed(row.shimmer, 4)) << '\n';
+            << (row.shimmer < 0.0 ? std::string() : fixed(row.shimmer, 4)) << ','
+            << softFields(row) << '\n';
     engine::writeFileAtomically(path, out.str());
 }
 
@@ -153,7 +162,7 @@ bool writePlots(const std::filesystem::path& outDir, const std::vector<Sweep>& s
                             row.format == s.second && row.label == point.label)
                             data << general(plotX(sweep, point)) << ' '
                                  << (row.map == "none" ? std::string("NaN")
-                                                       : general(std::max(row.error, kPlotFloor)))
+                                                       : general(std::max(judgedError(row).error, kPlotFloor)))
                                  << '\n';
                 data << "\n\n";
                 blockOf[{light, s}] = block++;
@@ -170,7 +179,7 @@ bool writePlots(const std::filesystem::path& outDir, const std::vector<Sweep>& s
         script << "set terminal pngcairo noenhanced size 1100," << 360 * lights.size() << " font ',9'\n";
         script << "set output '" << png.filename().string() << "'\n";
         script << "set multiplot layout " << lights.size() << ",1 title '" << sweep.title
-               << ": error = acne + leak, % of the evaluation set'\n";
+               << ": error = acne + leak (a light with a size: the soft error), % of the evaluation set'\n";
         // Log y: 0.1% and 20% on one picture; an error of 0 is drawn on the floor.
         script << "set grid\nset key outside right top\nset ylabel 'error % (log; 0 drawn at "
                << general(kPlotFloor) << ")'\nset xlabel '" << sweep.xLabel << "'\n";
@@ -234,7 +243,8 @@ void writeSummary(const std::filesystem::path& path, const RunInfo& info, const 
     out << "- view " << info.width << "x" << info.height << ", shadow maps " << info.resolution
         << "² (PCF 2x2), " << rows.size() << " cases in " << fixed(info.seconds, 1) << " s\n";
     out << "- errors: percent of the evaluation set (docs/metrics.md, Embree truth); "
-           "tables show `error (error without edge pixels)`\n";
+           "tables show `error (error without edge pixels)`, and for a light with a size `soft` the "
+           "same against the soft truth (the visible fraction of the light), which the bounds judge it by\n";
     out << "- result: " << (failed ? std::to_string(failed) + " bound(s) FAILED" : std::string("all bounds hold"))
         << "\n\n";
 

@@ -215,11 +215,12 @@ void compareWithReference(BoundResult& bound, const std::vector<Row>& rows, cons
         if (ref == byLabel.end()) continue;
         for (const auto& [label, row] : byLabel) {
             if (label == reference || !keep(*row)) continue;
-            const double delta = row->error - ref->second->error;
+            const JudgedError mine = judgedError(*row), theirs = judgedError(*ref->second);
+            const double delta = mine.error - theirs.error;
             const double deviation = oneSided ? delta : std::abs(delta);
             ++bound.checked;
-            const std::string line = describe(*row) + ": error " + number(row->error) + " vs " +
-                                     number(ref->second->error) + " at " + reference + " (" +
+            const std::string line = describe(*row) + ": " + mine.name + " " + number(mine.error) + " vs " +
+                                     number(theirs.error) + " at " + reference + " (" +
                                      (delta >= 0 ? "+" : "") + number(delta) + ")";
             if (deviation > worst) {
                 worst = deviation;
@@ -247,8 +248,9 @@ BoundResult maskedAgainstTwin(const std::vector<Row>& rows) {
                    other.light == row.light && other.variant == row.variant && other.format == row.format;
         });
         if (twin == rows.end()) continue;
-        for (const auto& [what, mine, theirs] : {std::tuple{"error", row.error, twin->error},
-                                                 std::tuple{"error_noedge", row.errorNoEdge, twin->errorNoEdge}}) {
+        const JudgedError fence = judgedError(row), opaque = judgedError(*twin);
+        for (const auto& [what, mine, theirs] : {std::tuple{fence.name, fence.error, opaque.error},
+                                                 std::tuple{fence.nameNoEdge, fence.errorNoEdge, opaque.errorNoEdge}}) {
             ++masked.checked;
             const double excess = mine - 2.0 * theirs;
             const std::string line = describe(row) + ": " + what + " " + number(mine) + " vs twin " + number(theirs);
@@ -288,6 +290,11 @@ BoundResult stableAgainstFitted(const std::vector<Row>& rows) {
 }
 
 } // namespace
+
+JudgedError judgedError(const Row& row) {
+    if (row.soft) return {row.soft->error, row.soft->errorNoEdge, "soft_error", "soft_error_noedge", true};
+    return {row.error, row.errorNoEdge, "error", "error_noedge", false};
+}
 
 std::vector<Sweep> makeSweeps(bool quick) {
     if (quick)
@@ -406,12 +413,13 @@ std::vector<BoundResult> checkBounds(const std::vector<Row>& rows) {
     for (const Row& row : rows) {
         if (row.sweep != "elevation" || row.variant == shadowmap::toString(shadowmap::Variant::Woo)) continue;
         ++grazing.checked;
-        const std::string line = describe(row) + ": error_noedge " + number(row.errorNoEdge);
-        if (row.errorNoEdge > worstGrazing) {
-            worstGrazing = row.errorNoEdge;
+        const JudgedError judged = judgedError(row);
+        const std::string line = describe(row) + ": " + judged.nameNoEdge + " " + number(judged.errorNoEdge);
+        if (judged.errorNoEdge > worstGrazing) {
+            worstGrazing = judged.errorNoEdge;
             grazing.worst = line;
         }
-        if (row.errorNoEdge > 0.5) grazing.failures.push_back(line);
+        if (judged.errorNoEdge > 0.5) grazing.failures.push_back(line);
     }
     bounds.push_back(grazing);
 
@@ -423,12 +431,13 @@ std::vector<BoundResult> checkBounds(const std::vector<Row>& rows) {
                                        row.label != toString(Layout::LightStraightDown)))
             continue;
         ++special.checked;
-        const std::string line = describe(row) + ": error_noedge " + number(row.errorNoEdge);
-        if (row.errorNoEdge > worstSpecial) {
-            worstSpecial = row.errorNoEdge;
+        const JudgedError judged = judgedError(row);
+        const std::string line = describe(row) + ": " + judged.nameNoEdge + " " + number(judged.errorNoEdge);
+        if (judged.errorNoEdge > worstSpecial) {
+            worstSpecial = judged.errorNoEdge;
             special.worst = line;
         }
-        if (row.errorNoEdge > 0.5) special.failures.push_back(line);
+        if (judged.errorNoEdge > 0.5) special.failures.push_back(line);
     }
     bounds.push_back(special);
     bounds.push_back(maskedAgainstTwin(rows));

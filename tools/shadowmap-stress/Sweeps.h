@@ -22,7 +22,9 @@
 // near/far 1e-2, 1e-7 and infinite, scale 1e-3, 1 and 1e3, the light inside a box and the
 // masked fence under the spot, in d24, d32f and d32f_rz.
 //
-// Bounds (checkBounds; the numbers are percentage points of the evaluation set):
+// Bounds (checkBounds; the numbers are percentage points of the evaluation set; "error" is
+// judgedError's: against the soft truth for a light with a size, e.g. run with
+// --set shadowmap_plugin.light_radius=0.2):
 //   finite          no NaN/Inf anywhere: shadow term, depth map texels, light matrices
 //   has_map         every light that should cast a shadow has a map (no silent skip)
 //   distance        |error(d) - error(0)| <= 0.1 for d = 1e3, 1e5, 1e6, per light kind,
@@ -49,6 +51,7 @@
 #include "StressScenes.h"
 
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -106,7 +109,26 @@ struct Row {
     double seconds = 0.0;             // wall time of the row
     double shimmer = -1.0;            // percent of compared points; < 0: not measured
     bool expectMap = true;            // false where losing the shadow is right
+    // A light with a size (light_radius, angular_diameter): its errors against the soft
+    // truth, the visible fraction of the light (truth::softShadowErrors: error = mean
+    // |truth - shade| over the evaluation set, without edge pixels, and over the penumbra
+    // alone); empty for a light without a size.
+    struct SoftErrors {
+        double error = 0.0, errorNoEdge = 0.0, penumbraError = 0.0;
+    };
+    std::optional<SoftErrors> soft;
 };
+
+// The error a bound judges a row by, and what it is called in the bound's lines. A light
+// with a size is judged against the soft truth: the binary truth counts every partly lit
+// pixel of a true penumbra as wrong, so a right soft shadow would fail every bound. A light
+// without a size is judged against the binary truth.
+struct JudgedError {
+    double error = 0.0, errorNoEdge = 0.0;
+    std::string name, nameNoEdge;  // "error", "error_noedge" or "soft_error", "soft_error_noedge"
+    bool soft = false;             // against the soft truth
+};
+JudgedError judgedError(const Row& row);
 
 struct BoundResult {
     std::string name;

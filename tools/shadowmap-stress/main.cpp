@@ -172,6 +172,28 @@ void writeDepthImage(const std::filesystem::path& path, const engine::DepthReadb
     engine::writePngAtomically(path, map.width, map.height, 1, gray);
 }
 
+// The row's errors in percent: against the binary truth, and for a light with a size
+// (evaluated soft pixels) against the soft truth too.
+void fillErrors(stress::Row& row, const evaluation::LightResult& result) {
+    row.acne = 100.0 * result.errors.acne;
+    row.leak = 100.0 * result.errors.leak;
+    row.error = 100.0 * result.errors.error;
+    row.errorNoEdge = 100.0 * result.errors.errorNoEdge;
+    row.evaluated = result.errors.evaluated;
+    row.nonFiniteShade = result.nonFinitePixels;
+    if (result.softErrors.evaluated > 0)
+        row.soft = stress::Row::SoftErrors{100.0 * result.softErrors.error, 100.0 * result.softErrors.errorNoEdge,
+                                           100.0 * result.softErrors.penumbraError};
+}
+
+// "  soft 0.412%  penumbra 8.100%" for a light with a size, "" otherwise.
+std::string softText(const stress::Row& row) {
+    if (!row.soft) return {};
+    char text[96];
+    std::snprintf(text, sizeof text, "  soft %7.3f%%  penumbra %7.3f%%", row.soft->error, row.soft->penumbraError);
+    return text;
+}
+
 struct Runner {
     const Options& options;
     std::vector<engine::RenderPlugin*> plugins;
@@ -223,15 +245,7 @@ struct Runner {
                     row.farPlane = std::isinf(published->farPlane) ? -1.0 : published->farPlane;
                 }
                 row.nonFiniteStats = !viewFinite(*published);
-                if (!view.lights.empty()) {
-                    const evaluation::LightResult& result = view.lights.front();
-                    row.acne = 100.0 * result.errors.acne;
-                    row.leak = 100.0 * result.errors.leak;
-                    row.error = 100.0 * result.errors.error;
-                    row.errorNoEdge = 100.0 * result.errors.errorNoEdge;
-                    row.evaluated = result.errors.evaluated;
-                    row.nonFiniteShade = result.nonFinitePixels;
-                }
+                if (!view.lights.empty()) fillErrors(row, view.lights.front());
                 if (const auto found = frame.shadowMaps.find(0); found != frame.shadowMaps.end())
                     for (float depth : found->second.depth) row.nonFiniteDepth += !std::isfinite(depth);
                 if (point.shimmerFrames > 0)
@@ -247,10 +261,11 @@ struct Runner {
                         writeDepthImage(options.out / "images" / (name + "_map.png"), found->second);
                 }
                 row.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-                std::printf("  %-9s %-17s %-11s %-8s %-7s error %7.3f%%  no-edge %7.3f%%  acne %7.3f%%  leak %7.3f%%%s%s\n",
+                std::printf("  %-9s %-17s %-11s %-8s %-7s error %7.3f%%  no-edge %7.3f%%  acne %7.3f%%  leak %7.3f%%%s%s%s\n",
                             row.sweep.c_str(), row.label.c_str(), row.light.c_str(), row.variant.c_str(),
                             row.format.c_str(), row.error, row.errorNoEdge, row.acne, row.leak,
-                            row.map == "none" ? "  NO MAP: " : "", row.map == "none" ? row.skipReason.c_str() : "");
+                            softText(row).c_str(), row.map == "none" ? "  NO MAP: " : "",
+                            row.map == "none" ? row.skipReason.c_str() : "");
                 std::fflush(stdout);
                 rows.push_back(std::move(row));
             }

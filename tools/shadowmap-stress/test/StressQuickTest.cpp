@@ -1,7 +1,9 @@
 // The CI version of the stress sweep: runs shadowmap-stress --quick once and holds
 // its CSV to the bounds: error at 1e6 within 0.1 points of the origin's for every light,
 // variant and format; scale 1e-3 and 1e3 within 0.2 points of scale 1; no NaN/Inf anywhere;
-// a light inside a closed box leaves everything outside in shadow.
+// a light inside a closed box leaves everything outside in shadow. Then a small run with
+// every light sized (light_radius, angular_diameter, pcss): its rows carry the soft columns,
+// and its bounds judge the soft error.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -37,28 +39,50 @@ std::vector<std::string> splitCsvLine(const std::string& line) {
     return fields;
 }
 
+struct StressRun {
+    int exitCode = -1;
+    std::string log;  // stdout and stderr
+    std::vector<Record> records;  // stress.csv by column name
+};
+
+// shadowmap-stress OPTIONS --out OUT, from a fresh OUT.
+StressRun runStress(const std::filesystem::path& out, const std::string& options) {
+    std::filesystem::remove_all(out);
+    std::filesystem::create_directories(out);
+    const std::string command = std::string("'") + SHADOWMAP_STRESS_BIN + "' " + options + " --out '" + out.string() +
+                                "' > '" + (out / "log.txt").string() + "' 2>&1";
+    const int status = std::system(command.c_str());
+    StressRun run;
+    run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    std::ifstream log(out / "log.txt");
+    run.log.assign(std::istreambuf_iterator<char>(log), {});
+    std::ifstream csv(out / "stress.csv");
+    std::string line;
+    std::getline(csv, line);
+    const std::vector<std::string> header = splitCsvLine(line);
+    while (std::getline(csv, line)) {
+        const std::vector<std::string> fields = splitCsvLine(line);
+        Record record;
+        for (std::size_t i = 0; i < header.size() && i < fields.size(); ++i) record[header[i]] = fields[i];
+        run.records.push_back(record);
+    }
+    return run;
+}
+
+// The columns against the soft truth, filled only for a light with a size.
+const std::vector<std::string> kSoftColumns = {"soft_error_pct", "soft_error_noedge_pct", "penumbra_error_pct"};
+
+std::string describe(const Record& r) {
+    return r.at("sweep") + " " + r.at("label") + " " + r.at("light") + "/" + r.at("variant") + "/" + r.at("format");
+}
+
 class StressQuick : public ::testing::Test {
 protected:
     static void SetUpTestSuite() {
-        const std::filesystem::path out = STRESS_OUTPUT_DIR;
-        std::filesystem::remove_all(out);
-        std::filesystem::create_directories(out);
-        const std::string command = std::string("'") + SHADOWMAP_STRESS_BIN + "' --quick --out '" + out.string() +
-                                    "' > '" + (out / "log.txt").string() + "' 2>&1";
-        const int status = std::system(command.c_str());
-        exitCode_ = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-        std::ifstream log(out / "log.txt");
-        log_.assign(std::istreambuf_iterator<char>(log), {});
-        std::ifstream csv(out / "stress.csv");
-        std::string line;
-        std::getline(csv, line);
-        const std::vector<std::string> header = splitCsvLine(line);
-        while (std::getline(csv, line)) {
-            const std::vector<std::string> fields = splitCsvLine(line);
-            Record record;
-            for (std::size_t i = 0; i < header.size() && i < fields.size(); ++i) record[header[i]] = fields[i];
-            records_.push_back(record);
-        }
+        StressRun run = runStress(STRESS_OUTPUT_DIR, "--quick");
+        exitCode_ = run.exitCode;
+        log_ = std::move(run.log);
+        records_ = std::move(run.records);
     }
 
     static double number(const Record& r, const char* key) { return std::stod(r.at(key)); }
@@ -150,6 +174,16 @@ TEST_F(StressQuick, NoNaNOrInfAnywhere) {
     }
 }
 
+// The quick set's lights have no size: no soft truth, the soft columns are there and empty.
+TEST_F(StressQuick, LightsWithoutASizeLeaveTheSoftColumnsEmpty) {
+    ASSERT_FALSE(records_.empty());
+    for (const Record& r : records_)
+        for (const std::string& column : kSoftColumns) {
+            ASSERT_TRUE(r.count(column)) << column << " missing from stress.csv";
+            EXPECT_EQ(r.at(column), "") << describe(r) << " " << column;
+        }
+}
+
 TEST_F(StressQuick, LightInsideABoxShadowsEverythingOutside) {
     int rows = 0;
     for (const Record& r : records_) {
@@ -166,6 +200,47 @@ TEST_F(StressQuick, ReversedZHoldsANearFarRatioOf1e7AndAnInfiniteFar) {
     // The reversed-Z d32f path, which the near/far bound of the full sweep relies on.
     expectClose("near_far", "1e-2", "1e-7", 0.5, "d32f_rz");
     expectClose("near_far", "1e-2", "inf", 0.5, "d32f_rz");
+}
+
+// Every light sized through the config (spot and point by light_radius, the sun by
+// angular_diameter) and softened by pcss, on the quick distance sweep in one format and
+// variant (about 4 s): each row has the soft columns filled with percentages, and the bounds
+// judge the soft error (the distance bound's lines name it).
+class StressSized : public ::testing::Test {
+protected:
+    static void SetUpTestSuite() {
+        run_ = runStress(std::string(STRESS_OUTPUT_DIR) + "-sized",
+                         "--quick --sweep distance --variants standard --formats d24 --no-plots"
+                         " --set shadowmap_plugin.light_radius=0.3 --set shadowmap_plugin.angular_diameter=0.03"
+                         " --set shadowmap_plugin.filter=pcss");
+    }
+    static inline StressRun run_;
+};
+
+TEST_F(StressSized, SizedLightsHaveTheSoftColumnsFilled) {
+    EXPECT_EQ(run_.exitCode, 0) << run_.log;
+    ASSERT_FALSE(run_.records.empty()) << run_.log;
+    std::set<std::string> lights;
+    for (const Record& r : run_.records) {
+        lights.insert(r.at("light"));
+        for (const std::string& column : kSoftColumns) {
+            ASSERT_FALSE(r.at(column).empty()) << describe(r) << " " << column << "\n" << run_.log;
+            const double percent = std::stod(r.at(column));
+            EXPECT_TRUE(std::isfinite(percent)) << describe(r) << " " << column;
+            EXPECT_GE(percent, 0.0) << describe(r) << " " << column;
+            EXPECT_LE(percent, 100.0) << describe(r) << " " << column;
+        }
+        // A penumbra was there to score: the boxes shadow the floor under a sized light.
+        EXPECT_GT(std::stod(r.at("penumbra_error_pct")), 0.0) << describe(r);
+    }
+    EXPECT_EQ(lights, (std::set<std::string>{"spot", "directional", "point"}));
+}
+
+TEST_F(StressSized, BoundsJudgeASizedLightByItsSoftError) {
+    const std::size_t bound = run_.log.find("\ndistance ");
+    ASSERT_NE(bound, std::string::npos) << run_.log;
+    const std::string line = run_.log.substr(bound + 1, run_.log.find('\n', bound + 1) - bound - 1);
+    EXPECT_NE(line.find("soft_error"), std::string::npos) << line;
 }
 
 } // namespace
