@@ -23,7 +23,8 @@
 //               largest float for cascades the light does not have
 //   cascadeBlend  x: cascade_blend (the band past each split, as a fraction of the nearer
 //               cascade's depth range, where the lookup fades into the next cascade; 0: none),
-//               y: the near view depth of cascade 0
+//               y: the near view depth of cascade 0; z: shadow_distance, the view depth from
+//               which every point is lit (0: none), w: where the fade toward it starts
 //   softLayers  per light and layer [slot * MAX_CASCADES + layer] (2D and cube maps: layer 0),
 //               for soft filters (pcss): xy: the light's size in map coordinates per unit
 //               of spread, 0.5 * P[0][0] and 0.5 * P[1][1] of the layer's projection times

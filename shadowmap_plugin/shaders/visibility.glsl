@@ -61,6 +61,11 @@ float cascadeShade_$LOOKUP(int slot, vec3 eyePosition, vec3 eyeNormal, $SAMPLERA
 // pixel's own (weight 0 at the split, 1 at the band's end), where the nearer map holds the
 // point (a fitted cascade is fitted to reach over the band; math/CascadeFit.cpp).
 float shadowMapCascades_$LOOKUP(int slot, vec3 eyePosition, vec3 eyeNormal, $SAMPLERARRAY map, int count) {
+    // Past shadow_distance every point is lit, without a lookup; over its fade band the
+    // shade fades toward lit.
+    float fadeEnd = shadowData.cascadeBlend[slot].z, fadeStart = shadowData.cascadeBlend[slot].w;
+    float fade = fadeEnd > 0.0 ? clamp((-eyePosition.z - fadeStart) / max(fadeEnd - fadeStart, 1e-30), 0.0, 1.0) : 0.0;
+    if (fade >= 1.0) return 1.0;
     int cascade = cascadeIndex(slot, eyePosition, count);
     float shade = cascadeShade_$LOOKUP(slot, eyePosition, eyeNormal, map, cascade);
     float blend = shadowData.cascadeBlend[slot].x;
@@ -72,7 +77,7 @@ float shadowMapCascades_$LOOKUP(int slot, vec3 eyePosition, vec3 eyeNormal, $SAM
         bool held = all(greaterThanEqual(nearer, vec2(0.0))) && all(lessThanEqual(nearer, vec2(1.0)));
         if (t < 1.0 && held) shade = mix(cascadeShade_$LOOKUP(slot, eyePosition, eyeNormal, map, cascade - 1), shade, max(t, 0.0));
     }
-    return shade;
+    return mix(shade, 1.0, fade);
 }
 
 // toPoint: light -> point along world axes, from the vertex part (texgen.glsl), moved by the

@@ -96,6 +96,12 @@
 //   stable          true: each cascade a texel-snapped square    true
 //                   around its slice's bounding sphere, so a moving camera moves shadows
 //                   in whole texels (costs up to 2x the texel size of a fitted cascade)
+//   shadow_distance >= 0, world units: the view depth (along     0 (every visible
+//                   the camera's -Z) where the light's shadows end; its   receiver)
+//                   maps cover no farther, so their texels shrink with it (even one
+//                   cascade is then a slice of the view); past it every point is lit
+//   shadow_fade     0 .. 1: the last fraction of shadow_distance  0.1
+//                   over which shadows fade out, so they end without a visible line
 // A light's size (soft shadows; the truth samples the whole light):
 //   light_radius    >= 0, world units: a spot or point light is   0 (a point)
 //                   a disk of this radius facing the shaded point
@@ -176,6 +182,8 @@ struct ShadowSettings {
     double cascadeLambda = 0.75;
     double cascadeBlend = 0.0;
     bool stable = true;
+    double shadowDistance = 0.0;  // directional lights, world units; 0: no limit
+    double shadowFade = 0.1;      // fraction of shadowDistance
     // The light's size (see the table above): what the area truth samples and what a
     // soft filter spreads the shadow by. Each applies to its light types only.
     double lightRadius = 0.0;      // spot and point lights, world units

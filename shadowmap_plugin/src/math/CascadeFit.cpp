@@ -102,6 +102,13 @@ bool receiverDepthRange(const CascadeCamera& camera, const std::vector<engine::A
     return farDepth >= nearDepth;
 }
 
+bool shadowedDepthRange(const CascadeCamera& camera, const std::vector<engine::Aabb>& receivers,
+                        const CascadeOptions& options, double& nearDepth, double& farDepth) {
+    if (!receiverDepthRange(camera, receivers, nearDepth, farDepth)) return false;
+    if (options.maxDistance > 0.0) farDepth = std::min(farDepth, options.maxDistance);
+    return farDepth >= nearDepth;
+}
+
 std::vector<glm::dvec3> frustumSliceCorners(const CascadeCamera& camera, double d0, double d1) {
     const glm::dmat4 inverseProjection = glm::inverse(camera.projection);
     auto unproject = [&](double x, double y, double z) {
@@ -144,7 +151,7 @@ CascadeViews fitDirectionalCascades(const engine::LightInstance& instance, const
     direction /= length;
     out.valid = true;
     double nearDepth, farDepth;
-    if (!receiverDepthRange(camera, bounds.receivers, nearDepth, farDepth)) return out;  // empty
+    if (!shadowedDepthRange(camera, bounds.receivers, options, nearDepth, farDepth)) return out;  // empty
     // A receiver touching the camera's near plane at depth 0 (orthographic) still needs a
     // positive start for the logarithmic part.
     nearDepth = std::max(nearDepth, farDepth * 1e-6);
@@ -258,18 +265,22 @@ CascadeNeed cascadeNeed(const engine::LightInstance& instance, const engine::Lig
     CascadeNeed need;
     for (int count = 0; count <= kMaxCascades; ++count) need.texelsPerPixel[count] = need.meanTexel[count] = kInf;
     double nearDepth, farDepth;
-    if (viewportHeight <= 0 || !receiverDepthRange(camera, bounds.receivers, nearDepth, farDepth)) return need;
+    if (viewportHeight <= 0 || !shadowedDepthRange(camera, bounds.receivers, options, nearDepth, farDepth)) return need;
     nearDepth = std::max(nearDepth, farDepth * 1e-6);
     // A pixel's height in world units at the nearest receiver (P11 = cot(fovy / 2), or
     // 2 / height of an orthographic view).
     const bool perspective = camera.projection[2][3] != 0.0;
     const double pixel = (perspective ? nearDepth : 1.0) * 2.0 / (std::abs(camera.projection[1][1]) * viewportHeight);
-    const LightView single = fitDirectionalLight(instance, light, bounds, options.fit);
-    if (single.valid && !single.empty) {
-        need.meanTexel[1] = texelSize(single, options.resolution);
-        need.texelsPerPixel[1] = need.meanTexel[1] / pixel;
+    // With a shadow distance one map is a slice of the view too (directionalMapIsSliced).
+    const int firstSliced = directionalMapIsSliced(1, options.maxDistance) ? 1 : 2;
+    if (firstSliced > 1) {
+        const LightView single = fitDirectionalLight(instance, light, bounds, options.fit);
+        if (single.valid && !single.empty) {
+            need.meanTexel[1] = texelSize(single, options.resolution);
+            need.texelsPerPixel[1] = need.meanTexel[1] / pixel;
+        }
     }
-    for (int count = 2; count <= kMaxCascades; ++count) {
+    for (int count = firstSliced; count <= kMaxCascades; ++count) {
         CascadeOptions sliced = options;
         sliced.count = count;
         const CascadeViews views = fitDirectionalCascades(instance, light, bounds, sceneBounds, camera, sliced);

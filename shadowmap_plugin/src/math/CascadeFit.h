@@ -45,6 +45,8 @@ struct CascadeOptions {
     // its depth range past its far split, where the lookup fades into the next one.
     double blend = 0.0;
     bool stable = false;
+    // shadow_distance: no map reaches past this view depth; 0: every visible receiver.
+    double maxDistance = 0.0;
     int resolution = kDefaultResolution;  // texels per side of each cascade's map (stable snapping)
     FrustumFitOptions fit;  // margins and reversed Z
 };
@@ -61,6 +63,18 @@ struct CascadeViews {
 // receivers' boxes lie, clamped to the camera's own near and far planes. False when none do.
 bool receiverDepthRange(const CascadeCamera& camera, const std::vector<engine::Aabb>& receivers,
                         double& nearDepth, double& farDepth);
+
+// Whether a directional light's map(s) are slices of the camera's view (fitDirectionalCascades)
+// rather than one map fitted to every visible receiver (fitDirectionalLight): with several
+// cascades, or with a shadow distance (shadow_distance > 0), which only a slice can end at.
+inline bool directionalMapIsSliced(int cascadeCount, double shadowDistance) {
+    return cascadeCount > 1 || shadowDistance > 0.0;
+}
+
+// receiverDepthRange, ending at options.maxDistance where one is set: the view depths the
+// cascades slice. False when no visible receiver lies nearer than that.
+bool shadowedDepthRange(const CascadeCamera& camera, const std::vector<engine::Aabb>& receivers,
+                        const CascadeOptions& options, double& nearDepth, double& farDepth);
 
 // The eight world-space corners of the camera's frustum between view depths d0 and d1
 // (d0 corners first, in the order (-x,-y), (+x,-y), (-x,+y), (+x,+y)).

@@ -23,7 +23,7 @@ struct ShadowBlock {
     glm::mat4 eyeToWorld;
     glm::mat4 cascadePlanes[engine::kMaxLights * kMaxCascades];  // light slot * kMaxCascades + cascade
     glm::vec4 cascadeFar[engine::kMaxLights];                    // far view depth per cascade
-    glm::vec4 cascadeBlend[engine::kMaxLights];                  // x: blend fraction, y: first split
+    glm::vec4 cascadeBlend[engine::kMaxLights];  // x: blend fraction, y: first split, z, w: fade end, start
     // Soft shadows (technique/SoftShadowLayers.h): per light and layer (2D map and cube: 0)
     // and per light.
     glm::vec4 softLayers[engine::kMaxLights * kMaxCascades];

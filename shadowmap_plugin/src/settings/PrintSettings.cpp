@@ -30,6 +30,8 @@ nlohmann::json printSettings(const ShadowSettings& settings) {
                           {"cascade_lambda", settings.cascadeLambda},
                           {"cascade_blend", settings.cascadeBlend},
                           {"stable", settings.stable},
+                          {"shadow_distance", settings.shadowDistance},
+                          {"shadow_fade", settings.shadowFade},
                           {"light_radius", settings.lightRadius},
                           {"angular_diameter", settings.angularDiameter}};
     if (settings.polygonOffset)

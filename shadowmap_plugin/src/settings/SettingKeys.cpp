@@ -173,6 +173,20 @@ std::vector<SettingKey> makeKeys() {
                          "crawl while the camera moves";
     keys.push_back(stable);
 
+    SettingKey distance = makeKey("shadow_distance", SettingKind::Number);
+    distance.minimum = 0;
+    distance.values = "≥ 0, world units";
+    distance.description = "directional lights: the view depth where shadows end; the maps cover no farther, so "
+                           "their texels shrink with it; 0: every visible receiver";
+    keys.push_back(distance);
+
+    SettingKey fade = makeKey("shadow_fade", SettingKind::Number);
+    fade.minimum = 0;
+    fade.maximum = 1;
+    fade.values = "0 … 1";
+    fade.description = "directional lights: the last fraction of shadow_distance over which shadows fade out";
+    keys.push_back(fade);
+
     SettingKey radius = makeKey("light_radius", SettingKind::Number);
     radius.minimum = 0;
     radius.values = "≥ 0, world units";

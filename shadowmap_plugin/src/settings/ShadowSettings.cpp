@@ -175,6 +175,19 @@ void applySettings(ShadowSettings& settings, const nlohmann::json& json, const s
         settings.cascadeLambda = lambda;
     }
     if (json.contains("stable")) settings.stable = json_read::readBool(json["stable"], source, key("stable"));
+    if (json.contains("shadow_distance")) {
+        const double distance = json_read::readNumber(json["shadow_distance"], source, key("shadow_distance"));
+        if (!(distance >= 0.0) || !std::isfinite(distance))
+            engine::throwInputError(source, key("shadow_distance"),
+                                    "must be a finite number >= 0 (0: no limit), got " + json["shadow_distance"].dump());
+        settings.shadowDistance = distance;
+    }
+    if (json.contains("shadow_fade")) {
+        const double fade = json_read::readNumber(json["shadow_fade"], source, key("shadow_fade"));
+        if (!(fade >= 0.0 && fade <= 1.0))
+            engine::throwInputError(source, key("shadow_fade"), "must be in [0, 1], got " + json["shadow_fade"].dump());
+        settings.shadowFade = fade;
+    }
     const auto readSize = [&](const char* name, const char* unit) {
         const double size = json_read::readNumber(json[name], source, key(name));
         if (size < 0.0)

@@ -30,6 +30,7 @@ int cascadeCount(LightState& light, const PlanContext& context, const FrustumFit
     inputs.add(light.settings.cascadeLambda);
     inputs.add(light.settings.cascadeBlend);
     inputs.add(light.settings.stable);
+    inputs.add(light.settings.shadowDistance);
     inputs.add(light.settings.reversedZ);
     for (const auto* boxes : {&context.bounds.receivers, &context.bounds.casters}) {
         inputs.add(boxes->size());
@@ -95,6 +96,8 @@ bool planLight(LightState& light, const PlanContext& context, int textureUnit, i
     if (!directional && light.settings.cascades > 1)
         plan.warnings.push_back("cascades apply to directional lights only: " +
                                 std::to_string(light.settings.cascades) + " ignored");
+    if (!directional && light.settings.shadowDistance > 0.0)
+        plan.warnings.push_back("shadow_distance applies to directional lights only: ignored");
     // Forced near/far and reversed Z (shadowmap/ShadowSettings.h). A directional light's depth is
     // linear and fitted to what it must hold: forced planes are ignored there (said once).
     FrustumFitOptions fitOptions;
@@ -107,7 +110,7 @@ bool planLight(LightState& light, const PlanContext& context, int textureUnit, i
         fitOptions.nearPlane = light.settings.nearPlane;
         fitOptions.farPlane = light.settings.farPlane;
     }
-    const MapProjection& projection = projectionFor(light.type, plan.cascadeCount);
+    const MapProjection& projection = projectionFor(light.type, plan.cascadeCount, light.settings.shadowDistance);
     const ProjectionFit fit = projection.fit(light, context, fitOptions);
     if (!fit.valid) {
         // Never upload NaN: a degenerate light loses its shadow, loudly.

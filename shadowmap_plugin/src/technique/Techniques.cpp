@@ -10,6 +10,8 @@
 #include "technique/projection/CubeMapProjection.h"
 #include "technique/projection/FittedMapProjection.h"
 
+#include "math/CascadeFit.h"
+
 #include <algorithm>
 #include <stdexcept>
 #include <string>
@@ -61,9 +63,10 @@ const MapProjection* mapProjection(MapKind kind) {
     return find(kProjections, kind, [](const MapProjection& p) { return p.kind(); });
 }
 
-const MapProjection& projectionFor(engine::Light::Type type, int cascadeCount) {
+const MapProjection& projectionFor(engine::Light::Type type, int cascadeCount, double shadowDistance) {
     if (type == engine::Light::Type::Point) return kCubeMap;
-    if (type == engine::Light::Type::Directional && cascadeCount > 1) return kCascadedMap;
+    if (type == engine::Light::Type::Directional && directionalMapIsSliced(cascadeCount, shadowDistance))
+        return kCascadedMap;
     return kFittedMap;
 }
 

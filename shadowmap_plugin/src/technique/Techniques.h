@@ -18,8 +18,9 @@ const DepthTechnique* depthTechnique(Variant variant);
 std::vector<const DepthProgram*> depthPrograms();
 // The projection of a map kind; nullptr for MapKind::None.
 const MapProjection* mapProjection(MapKind kind);
-// The projection a light of this type gets with this many cascades this frame.
-const MapProjection& projectionFor(engine::Light::Type type, int cascadeCount);
+// The projection a light of this type gets with this many cascades this frame and its
+// shadow_distance (a directional light with one: cascades even for one map).
+const MapProjection& projectionFor(engine::Light::Type type, int cascadeCount, double shadowDistance = 0.0);
 // The lookup of a filter as such (pcf: its one 2x2 tap).
 const MapLookup& mapLookup(Filter filter);
 // The lookup a light's settings read its map with: its filter's, widened by filter_radius.

@@ -52,7 +52,7 @@ TEST(ShadowSettingsErrors, UnknownKeyListsTheKnownOnes) {
     std::string known;
     for (const shadowmap::SettingKey& key : shadowmap::settingKeys()) known += (known.empty() ? "" : ", ") + key.name;
     EXPECT_EQ(known, "variant, resolution, depth_format, filter, filter_taps, filter_radius, normal_offset, polygon_offset, dimming, near_plane, far_plane, "
-                     "reversed_z, polygon_offset_clamp, cascades, cascade_lambda, cascade_blend, stable, "
+                     "reversed_z, polygon_offset_clamp, cascades, cascade_lambda, cascade_blend, stable, shadow_distance, shadow_fade, "
                      "light_radius, angular_diameter");
     expectNamed({"unknown key", {{"colour", "red"}}, "colour", "unknown key (known: " + known + ")"});
 }
@@ -67,6 +67,14 @@ TEST(ShadowSettingsErrors, CascadeSettingsOutOfRangeAreNamed) {
     expectNamed({"blend 0.6", {{"cascade_blend", 0.6}}, "cascade_blend", "must be in [0, 0.5], got 0.6"});
     expectNamed({"blend -0.1", {{"cascade_blend", -0.1}}, "cascade_blend", "must be in [0, 0.5], got -0.1"});
     expectNamed({"stable type", {{"stable", "yes"}}, "stable", "must be true or false"});
+}
+
+TEST(ShadowSettingsErrors, ShadowDistanceAndFadeOutOfRangeAreNamed) {
+    expectNamed({"distance -1", {{"shadow_distance", -1}}, "shadow_distance",
+                 "must be a finite number >= 0 (0: no limit), got -1"});
+    expectNamed({"distance text", {{"shadow_distance", "far"}}, "shadow_distance", "must be a number"});
+    expectNamed({"fade 1.5", {{"shadow_fade", 1.5}}, "shadow_fade", "must be in [0, 1], got 1.5"});
+    expectNamed({"fade -0.1", {{"shadow_fade", -0.1}}, "shadow_fade", "must be in [0, 1], got -0.1"});
 }
 
 TEST(ShadowSettingsErrors, BadChoicesNameTheKnownValues) {

@@ -44,6 +44,8 @@ std::vector<KeyChange> oneChangePerKey() {
         {"cascade_lambda", [](ShadowSettings& s) { s.cascadeLambda = 0.3; }},
         {"cascade_blend", [](ShadowSettings& s) { s.cascadeBlend = 0.25; }},
         {"stable", [](ShadowSettings& s) { s.stable = false; }},
+        {"shadow_distance", [](ShadowSettings& s) { s.shadowDistance = 42.3; }},
+        {"shadow_fade", [](ShadowSettings& s) { s.shadowFade = 0.27; }},
         {"light_radius", [](ShadowSettings& s) { s.lightRadius = 0.35; }},
         {"angular_diameter", [](ShadowSettings& s) { s.angularDiameter = 0.0093; }},
     };
@@ -61,12 +63,14 @@ TEST(ShadowSettingsRoundTrip, EveryKeyHasAChangeBelow) {
 
 TEST(ShadowSettingsRoundTrip, DefaultsPrintAsDocumented) {
     // README's table and DESIGN.md: standard, 2048, d24, pcf, dimming 0.4; no forced
-    // planes, no explicit offset, no reversal, no clamp, a light without a size.
+    // planes, no explicit offset, no reversal, no clamp, no shadow distance, a light without
+    // a size.
     const nlohmann::json expected = {{"variant", "standard"}, {"resolution", 2048}, {"depth_format", "d24"},
                                      {"filter", "pcf"},       {"filter_taps", 16},      {"filter_radius", 0.0},   {"normal_offset", 0.25},   {"dimming", 0.4},     {"reversed_z", false},
                                      {"polygon_offset_clamp", 0.0}, {"cascades", "auto"},
                                      {"cascade_lambda", 0.75},     {"cascade_blend", 0.0},
-                                     {"stable", true},             {"light_radius", 0.0},
+                                     {"stable", true},             {"shadow_distance", 0.0},
+                                     {"shadow_fade", 0.1},         {"light_radius", 0.0},
                                      {"angular_diameter", 0.0}};
     EXPECT_EQ(shadowmap::printSettings(ShadowSettings{}), expected);
     EXPECT_EQ(roundTrip(ShadowSettings{}), ShadowSettings{});

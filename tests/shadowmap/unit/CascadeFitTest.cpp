@@ -139,6 +139,40 @@ TEST(CascadeFit, NoVisibleReceiverIsEmpty) {
     EXPECT_TRUE(views.empty);
 }
 
+// shadow_distance: the slices end there (their maps cover no farther, so even one slice's
+// texels shrink), and receivers only beyond it leave nothing to shadow.
+TEST(CascadeFit, AShadowDistanceEndsTheSlices) {
+    const CascadeCamera camera = cameraAt({0, 2, 0}, {0, 2, -10});
+    CascadeOptions options;
+    options.count = 1;
+    options.maxDistance = 20.0;
+    double nearDepth = 0, farDepth = 0;
+    ASSERT_TRUE(shadowmap::shadowedDepthRange(camera, {kGround}, options, nearDepth, farDepth));
+    EXPECT_NEAR(farDepth, 20.0, 1e-9);
+    const CascadeViews limited = shadowmap::fitDirectionalCascades(sunShining({0, -1, 0}), engine::Light{},
+                                                                   groundAndPost(), sceneBox(), camera, options);
+    ASSERT_TRUE(limited.valid && !limited.empty);
+    EXPECT_EQ(limited.splits.back(), 20.0);
+    options.maxDistance = 0.0;  // no limit: the camera's far plane
+    const CascadeViews whole = shadowmap::fitDirectionalCascades(sunShining({0, -1, 0}), engine::Light{},
+                                                                 groundAndPost(), sceneBox(), camera, options);
+    ASSERT_TRUE(whole.valid && !whole.empty);
+    EXPECT_NEAR(whole.splits.back(), kFar, 1e-9);
+    // The sun straight down: the map's width is the slice's far width, 2 d tan(fovy/2) aspect.
+    EXPECT_LT(2.0 / limited.cascades[0].projection[0][0], 0.25 * 2.0 / whole.cascades[0].projection[0][0]);
+    // Only the post, 5 m ahead, beyond a distance of 3: nothing to shadow.
+    options.maxDistance = 3.0;
+    EXPECT_FALSE(shadowmap::shadowedDepthRange(camera, {kPost}, options, nearDepth, farDepth));
+    ShadowBounds post;
+    post.receivers = post.casters = {kPost};
+    EXPECT_TRUE(shadowmap::fitDirectionalCascades(sunShining({0, -1, 0}), engine::Light{}, post, kPost, camera, options)
+                    .empty);
+    // A directional map is a slice of the view with several cascades or with a distance.
+    EXPECT_FALSE(shadowmap::directionalMapIsSliced(1, 0.0));
+    EXPECT_TRUE(shadowmap::directionalMapIsSliced(1, 20.0));
+    EXPECT_TRUE(shadowmap::directionalMapIsSliced(3, 0.0));
+}
+
 // The sun at 35 degrees above the horizon, from an azimuth that does not line up with any axis.
 const glm::dvec3 kSun = glm::normalize(glm::dvec3(std::cos(0.61) * std::cos(0.4), -std::sin(0.61),
                                                   std::cos(0.61) * std::sin(0.4)));

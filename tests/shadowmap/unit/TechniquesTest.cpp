@@ -51,6 +51,9 @@ TEST(Techniques, EachLightTypeGetsItsProjection) {
     EXPECT_EQ(shadowmap::projectionFor(Type::Spot, 3).kind(), MapKind::Map2D);
     EXPECT_EQ(shadowmap::projectionFor(Type::Directional, 1).kind(), MapKind::Map2D);
     EXPECT_EQ(shadowmap::projectionFor(Type::Directional, 2).kind(), MapKind::Cascades);
+    // A shadow distance slices the view even for one map (it is where the slice ends).
+    EXPECT_EQ(shadowmap::projectionFor(Type::Directional, 1, 20.0).kind(), MapKind::Cascades);
+    EXPECT_EQ(shadowmap::projectionFor(Type::Spot, 1, 20.0).kind(), MapKind::Map2D);
     EXPECT_EQ(shadowmap::mapProjection(MapKind::None), nullptr);
     for (const MapKind kind : {MapKind::Map2D, MapKind::Cube, MapKind::Cascades})
         EXPECT_EQ(shadowmap::mapProjection(kind)->kind(), kind);

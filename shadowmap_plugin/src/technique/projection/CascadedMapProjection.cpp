@@ -13,12 +13,18 @@
 
 namespace shadowmap {
 
+ShadowFade shadowFade(const ShadowSettings& settings) {
+    if (!(settings.shadowDistance > 0.0)) return {};
+    return {settings.shadowDistance * (1.0 - settings.shadowFade), settings.shadowDistance};
+}
+
 CascadeOptions cascadeOptions(const ShadowSettings& settings, const FrustumFitOptions& fit) {
     CascadeOptions options;
     options.count = settings.cascades;
     options.lambda = settings.cascadeLambda;
     options.blend = settings.cascadeBlend;
     options.stable = settings.stable;
+    options.maxDistance = settings.shadowDistance;
     options.resolution = settings.resolution;
     options.fit = fit;
     return options;
@@ -99,8 +105,10 @@ bool CascadedMapProjection::packLookup(const LightState& light, const LookupCont
         block.cascadeFar[light.slot][c] =
             c < count ? static_cast<float>(views.splits[c + 1]) : std::numeric_limits<float>::max();
     }
+    const ShadowFade fade = shadowFade(light.settings);
     block.cascadeBlend[light.slot] = glm::vec4(static_cast<float>(light.settings.cascadeBlend),
-                                               static_cast<float>(views.splits.front()), 0.0f, 0.0f);
+                                               static_cast<float>(views.splits.front()),
+                                               static_cast<float>(fade.end), static_cast<float>(fade.start));
     block.lightInEye[light.slot] = lightInEye(views.cascades.front(), light.type, context.view);
     lookup.cascades = count;
     return true;
@@ -110,6 +118,8 @@ void CascadedMapProjection::addShadeKey(const LightState& light, engine::Hasher&
     // Which cascade a pixel reads (the splits) and how it fades into the next.
     for (const double split : light.frame.cascades.splits) key.add(split);
     key.add(light.settings.cascadeBlend);
+    key.add(light.settings.shadowDistance);
+    key.add(light.settings.shadowFade);
 }
 
 void CascadedMapProjection::addStats(const LightState& light, nlohmann::json& stats) const {

@@ -11,6 +11,13 @@ namespace shadowmap {
 // The cascade fit's options for these settings and depth-range options.
 CascadeOptions cascadeOptions(const ShadowSettings& settings, const FrustumFitOptions& fit);
 
+// Where a directional light's shadows fade out (shadow_distance, shadow_fade), in view depth:
+// fully shadowed up to start, fully lit from end on; end 0: no limit.
+struct ShadowFade {
+    double start = 0.0, end = 0.0;
+};
+ShadowFade shadowFade(const ShadowSettings& settings);
+
 class CascadedMapProjection final : public MapProjection {
 public:
     MapKind kind() const override { return MapKind::Cascades; }
