@@ -25,8 +25,10 @@ truth::ShadowErrors pooledErrors(const std::vector<truth::ShadowErrors>& views) 
         pooled.leak += view.leak * n;
         pooled.acneNoEdge += view.acneNoEdge * m;
         pooled.leakNoEdge += view.leakNoEdge * m;
+        pooled.penumbraError += view.penumbraError * static_cast<double>(view.evaluatedPenumbra);
         pooled.evaluated += view.evaluated;
         pooled.evaluatedNoEdge += view.evaluatedNoEdge;
+        pooled.evaluatedPenumbra += view.evaluatedPenumbra;
     }
     if (pooled.evaluated > 0) {
         pooled.acne /= static_cast<double>(pooled.evaluated);
@@ -36,10 +38,21 @@ truth::ShadowErrors pooledErrors(const std::vector<truth::ShadowErrors>& views) 
         pooled.acneNoEdge /= static_cast<double>(pooled.evaluatedNoEdge);
         pooled.leakNoEdge /= static_cast<double>(pooled.evaluatedNoEdge);
     }
+    if (pooled.evaluatedPenumbra > 0) pooled.penumbraError /= static_cast<double>(pooled.evaluatedPenumbra);
     pooled.error = pooled.acne + pooled.leak;
     pooled.errorNoEdge = pooled.acneNoEdge + pooled.leakNoEdge;
     return pooled;
 }
+
+RankingTruth rankingTruth(const LightResult& light) {
+    return ShadowEvaluator::lightExtent(light.view).isPoint() ? RankingTruth::Area : RankingTruth::Soft;
+}
+
+const truth::ShadowErrors& rankedErrors(const LightResult& light) {
+    return rankingTruth(light) == RankingTruth::Soft ? light.softErrors : light.areaErrors;
+}
+
+const char* rankedFigure(RankingTruth truth) { return truth == RankingTruth::Soft ? "soft error" : "area error"; }
 
 SettingTrial::SettingTrial(engine::Renderer& renderer, const engine::Scene& scene,
                            std::vector<engine::FrameCamera> views, int frames)
@@ -67,7 +80,7 @@ TrialResult SettingTrial::measure() {
     for (auto& [slot, views] : bySlot) {
         LightResult pooled = views.front();
         std::vector<double> ms;
-        std::vector<truth::ShadowErrors> errors, areaErrors, nearErrors;
+        std::vector<truth::ShadowErrors> errors, areaErrors, nearErrors, softErrors;
         pooled.framesRendered = 0;
         pooled.nonFinitePixels = 0;
         for (const LightResult& view : views) {
@@ -75,6 +88,7 @@ TrialResult SettingTrial::measure() {
             errors.push_back(view.errors);
             areaErrors.push_back(view.areaErrors);
             nearErrors.push_back(view.nearErrors);
+            softErrors.push_back(view.softErrors);
             pooled.framesRendered += view.framesRendered;
             pooled.nonFinitePixels += view.nonFinitePixels;
         }
@@ -82,6 +96,7 @@ TrialResult SettingTrial::measure() {
         pooled.errors = pooledErrors(errors);
         pooled.areaErrors = pooledErrors(areaErrors);
         pooled.nearErrors = pooledErrors(nearErrors);
+        pooled.softErrors = pooledErrors(softErrors);
         result.lights.push_back(std::move(pooled));
     }
     return result;

@@ -27,13 +27,27 @@ void setLightShadow(engine::Scene& scene, int light, const nlohmann::json& shado
                     const std::vector<std::string>& owned = {});
 
 // The errors of several views as one: each view's acne, leak and error weighted by the
-// size of its evaluation set (the figure one big image of all views would give).
+// size of its evaluation set, the penumbra error by the size of its penumbra (the figures
+// one big image of all views would give).
 truth::ShadowErrors pooledErrors(const std::vector<truth::ShadowErrors>& views);
+
+// The truth a light's settings are ranked by (shadowmap-tune; shadowmap-bench's
+// BenchRow::rankedError states the same rule on its rows): for a light with a size the soft
+// truth, the visible share of the light, since only it models the penumbra such a light
+// casts; for a point light the area truth, which does not count a filter's partial shade as
+// error where an edge really crosses the pixel (it needs SettingTrial::setAreaTruth(true)).
+enum class RankingTruth { Area, Soft };
+RankingTruth rankingTruth(const LightResult& light);
+// The light's errors against that truth.
+const truth::ShadowErrors& rankedErrors(const LightResult& light);
+// How reports name the figure: "soft error" or "area error".
+const char* rankedFigure(RankingTruth truth);
 
 struct TrialResult {
     double frameMs = 0.0;             // median over the views' median frame times
-    std::vector<LightResult> lights;  // per shadowed light instance; errors pooled over views,
-                                      // shadowMs the median over views
+    std::vector<LightResult> lights;  // per shadowed light instance; every error figure (soft
+                                      // ones included) pooled over views, shadowMs the
+                                      // median over views
 };
 
 class SettingTrial {

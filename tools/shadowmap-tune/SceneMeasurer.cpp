@@ -22,8 +22,8 @@ nlohmann::json shadowOf(const engine::Light& light) {
 } // namespace
 
 SceneMeasurer::SceneMeasurer(engine::Scene& scene, const std::string& sceneFile, evaluation::SettingTrial& trial,
-                             std::vector<std::string> ownedKeys, nlohmann::json configSettings)
-    : scene_(scene), sceneFile_(sceneFile), trial_(trial), owned_(std::move(ownedKeys)) {
+                             std::vector<SettingDimension> space, nlohmann::json configSettings)
+    : scene_(scene), sceneFile_(sceneFile), trial_(trial), space_(std::move(space)), owned_(ownedKeys(space_)) {
     configured_ = nlohmann::json::object();
     for (const shadowmap::SettingKey& key : shadowmap::settingKeys())
         if (configSettings.is_object() && configSettings.contains(key.name)) configured_[key.name] = configSettings[key.name];
@@ -46,7 +46,7 @@ void SceneMeasurer::measureCurrent() {
         engine::throwInputError(sceneFile_, "", "the scene has no lights: nothing to tune");
     const evaluation::TrialResult result = trial_.measure();
     // The tuned lights, in the order of their first instance; their current settings as the
-    // plugin resolved them (its public ShadowView::settings), limited to the keys we own.
+    // plugin resolved them (its public ShadowView::settings), in the search space's terms.
     for (const evaluation::LightResult& view : result.lights) {
         const int light = scene_.lightInstances.at(view.slot).light;
         if (std::find(lights_.begin(), lights_.end(), light) != lights_.end()) continue;
@@ -58,7 +58,6 @@ void SceneMeasurer::measureCurrent() {
     const std::vector<std::optional<Measured>> measured = collect(result);
     for (std::size_t i = 0; i < lights_.size(); ++i) {
         Measured current = *measured[i];
-        current.setting = Candidate::object();
         for (const evaluation::LightResult& view : result.lights)
             if (scene_.lightInstances.at(view.slot).light == lights_[i]) {
                 // The plugin reports the offset in effect; it is the light's own only when the
@@ -66,10 +65,12 @@ void SceneMeasurer::measureCurrent() {
                 // as the search's candidates leave it).
                 const bool explicitOffset = loaded_[lights_[i]].contains("polygon_offset") ||
                                             configured_.contains("polygon_offset");
-                const nlohmann::json used = shadowmap::printSettings(shadowmap::usedSettings(view.view));
-                for (const std::string& key : owned_)
-                    if (used.contains(key) && (key != "polygon_offset" || explicitOffset))
-                        current.setting[key] = used[key];
+                const shadowmap::ShadowSettings settings = shadowmap::usedSettings(view.view);
+                const nlohmann::json used = shadowmap::printSettings(settings);
+                current.setting = candidateOf(space_, used);
+                if (explicitOffset && used.contains("polygon_offset")) current.setting["polygon_offset"] = used["polygon_offset"];
+                normalOffsets_.push_back(settings.normalOffset);
+                rankingTruths_.push_back(evaluation::rankingTruth(view));
                 break;
             }
         current_.push_back(current);
@@ -85,17 +86,19 @@ std::vector<std::optional<Measured>> SceneMeasurer::collect(const evaluation::Tr
         const auto found = byLight.find(lights_[i]);
         if (found == byLight.end()) continue;
         Measured m;
-        std::vector<truth::ShadowErrors> errors, areaErrors;
+        std::vector<truth::ShadowErrors> errors, rankedErrors;
         for (const evaluation::LightResult* instance : found->second) {
             m.ms += instance->shadowMs;
             errors.push_back(instance->errors);
-            areaErrors.push_back(instance->areaErrors);
+            rankedErrors.push_back(evaluation::rankedErrors(*instance));
         }
         const truth::ShadowErrors pooled = evaluation::pooledErrors(errors);
-        const truth::ShadowErrors area = evaluation::pooledErrors(areaErrors);
-        m.acne = 100.0 * area.acne;
-        m.leak = 100.0 * area.leak;
-        m.error = 100.0 * area.error;
+        const truth::ShadowErrors ranked = evaluation::pooledErrors(rankedErrors);
+        m.acne = 100.0 * ranked.acne;
+        m.leak = 100.0 * ranked.leak;
+        m.error = 100.0 * ranked.error;
+        m.penumbraError = 100.0 * ranked.penumbraError;
+        m.evaluatedPenumbra = ranked.evaluatedPenumbra;
         m.errorNoEdge = 100.0 * pooled.errorNoEdge;
         m.evaluated = pooled.evaluated;
         out[i] = m;

@@ -73,10 +73,12 @@ bool Goal::clearlyBetter(const Measured& choice, const Measured& current) const 
 }
 
 LockstepMeasurer::LockstepMeasurer(int lights, MeasureRound measure, CandidateCheck valid)
-    : measure_(std::move(measure)), valid_(std::move(valid)), measured_(lights), current_(lights) {}
+    : measure_(std::move(measure)), valid_(std::move(valid)), measured_(lights), current_(lights),
+      normalOffsets_(lights, shadowmap::ShadowSettings{}.normalOffset) {}
 
-void LockstepMeasurer::seed(int light, const Measured& current) {
+void LockstepMeasurer::seed(int light, const Measured& current, double normalOffset) {
     current_.at(light) = current.setting;
+    normalOffsets_.at(light) = normalOffset;
     measured_.at(light).push_back(current);
 }
 
@@ -150,7 +152,7 @@ std::vector<LightChoice> searchSettings(LockstepMeasurer& measurer, const std::v
         return best;
     };
 
-    // 4. Fit the offset of each light's best setting that draws with one.
+    // 4. Fit the offsets of each light's best setting that draws with a polygon offset.
     std::vector<std::optional<Candidate>> bases(lights);
     for (int light = 0; light < lights; ++light) {
         if (!isSearched(light)) continue;

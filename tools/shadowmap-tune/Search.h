@@ -13,11 +13,14 @@
 //  2. prune: only the coarse results on the light's Pareto front of error against expected
 //     cost (SearchSpace.h) go on;
 //  3. fine: each survivor at the refined dimensions' other values;
-//  4. offset: the best setting that uses a polygon offset gets its offset fitted (OffsetFit.h);
+//  4. offset: the best setting that uses a polygon offset gets its polygon and normal
+//     offsets fitted (OffsetFit.h);
 //  5. choose by the goal among everything measured, keeping the light's current setting
 //     unless the choice is better by more than measurement noise (so tuning a tuned file
 //     changes nothing).
 #include "SearchSpace.h"
+
+#include "shadowmap/ShadowSettings.h"
 
 #include <cstddef>
 #include <functional>
@@ -31,9 +34,14 @@ struct Measured {
     Candidate setting;
     double ms = 0.0;  // shadow passes' wall time per frame
     // Percent of the evaluation set, pooled over the views (docs/metrics.md): acne, leak and
-    // error against the area truth (the lit fraction of each pixel, what the search ranks
-    // by); errorNoEdge against the one-ray truth, away from its shadow edges.
+    // error against the truth the light is ranked by (evaluation::rankingTruth: the soft
+    // truth for a light with a size, else the area truth), what the search ranks by;
+    // errorNoEdge against the one-ray truth, away from its shadow edges.
     double acne = 0.0, leak = 0.0, error = 0.0, errorNoEdge = 0.0;
+    // Against the soft truth only (0 otherwise): percent mean error over the penumbra, and
+    // the penumbra's pixels over all views.
+    double penumbraError = 0.0;
+    std::size_t evaluatedPenumbra = 0;
     std::size_t evaluated = 0;  // |E| over all views
 };
 
@@ -69,8 +77,11 @@ class LockstepMeasurer {
 public:
     LockstepMeasurer(int lights, MeasureRound measure, CandidateCheck valid);
 
-    // The light's current setting, measured by the caller's first render.
-    void seed(int light, const Measured& current);
+    // The light's current setting, measured by the caller's first render, and its own normal
+    // offset: every candidate without normal_offset is measured with it (the tuner does not
+    // own the key; only the offset fit sets it).
+    void seed(int light, const Measured& current, double normalOffset = shadowmap::ShadowSettings{}.normalOffset);
+    double normalOffset(int light) const { return normalOffsets_.at(light); }
     // Measures every valid, not yet measured candidate of each light's list. A light whose
     // list has run out rides along with its current setting (its result is not kept again).
     void measureLists(const std::vector<std::vector<Candidate>>& lists);
@@ -85,13 +96,16 @@ private:
     CandidateCheck valid_;
     std::vector<std::vector<Measured>> measured_;
     std::vector<Candidate> current_;
+    std::vector<double> normalOffsets_;
     int renders_ = 0;
 };
 
 struct OffsetFitResult {
     Candidate base;           // the setting whose offset was fitted (offset at default)
     Measured atDefault;       // base with the variant's default offset
-    Measured fitted;          // base with the fitted offset
+    Measured fitted;          // base with the fitted offsets
+    double defaultNormalOffset = 0.0;   // the light's own, which the base was measured with
+    std::vector<double> normalOffsets;  // the normal offsets the fit could move through
 };
 
 struct LightChoice {

@@ -2,47 +2,29 @@
 
 #include "shadowmap/ShadowSettings.h"
 
+#include <algorithm>
 #include <cstdio>
 
 namespace shadowmap_tune {
 
-std::vector<SettingDimension> searchSpace(const SearchLimits& limits) {
-    const auto values = [](const auto& list) {
-        std::vector<nlohmann::json> out;
-        for (const auto& item : list) out.emplace_back(item);
-        return out;
-    };
-    // The order is the report's: "standard 1024 d24 pcf".
-    return {
-        {"variant", values(limits.variants), false},
-        {"resolution", values(limits.resolutions), true},
-        {"depth_format", values(limits.depthFormats), false},
-        {"filter", values(limits.filters), false},
-    };
-}
+namespace {
 
-std::vector<std::string> ownedKeys(const std::vector<SettingDimension>& space) {
-    std::vector<std::string> keys;
-    for (const SettingDimension& dimension : space) keys.push_back(dimension.key);
-    keys.push_back("polygon_offset");
-    return keys;
-}
-
-std::vector<Candidate> coarseCandidates(const std::vector<SettingDimension>& space) {
+// The product of the dimensions, each where it applies: every value, or only the first of
+// a refined dimension unless `allValues`.
+std::vector<Candidate> product(const std::vector<SettingDimension>& space, bool allValues) {
     std::vector<Candidate> candidates = {Candidate::object()};
     for (const SettingDimension& dimension : space) {
         if (dimension.values.empty()) continue;
         std::vector<Candidate> next;
         for (const Candidate& partial : candidates) {
-            if (dimension.refined) {
-                Candidate one = partial;
-                one[dimension.key] = dimension.values.front();
-                next.push_back(std::move(one));
+            if (!dimension.appliesTo(partial)) {
+                next.push_back(partial);
                 continue;
             }
-            for (const nlohmann::json& value : dimension.values) {
+            const std::size_t count = dimension.refined && !allValues ? 1 : dimension.values.size();
+            for (std::size_t i = 0; i < count; ++i) {
                 Candidate one = partial;
-                one[dimension.key] = value;
+                one[dimension.key] = dimension.values[i];
                 next.push_back(std::move(one));
             }
         }
@@ -51,10 +33,54 @@ std::vector<Candidate> coarseCandidates(const std::vector<SettingDimension>& spa
     return candidates;
 }
 
+} // namespace
+
+bool SettingDimension::appliesTo(const Candidate& candidate) const {
+    const auto& [key, value] = onlyWith;
+    return key.empty() || (candidate.contains(key) && candidate[key] == value);
+}
+
+std::vector<SettingDimension> searchSpace(const SearchLimits& limits) {
+    const auto values = [](const auto& list) {
+        std::vector<nlohmann::json> out;
+        for (const auto& item : list) out.emplace_back(item);
+        return out;
+    };
+    // The order is the report's: "standard 1024 d24 pcss taps16". filter_taps comes after
+    // the filter it depends on, and is refined: more taps smooth a penumbra more, so the
+    // fewest ranks pcss against the other filters.
+    return {
+        {"variant", values(limits.variants), false, "", {}},
+        {"resolution", values(limits.resolutions), true, "", {}},
+        {"depth_format", values(limits.depthFormats), false, "", {}},
+        {"filter", values(limits.filters), false, "", {}},
+        {"filter_taps", values(limits.filterTaps), true, "taps", {"filter", shadowmap::toString(shadowmap::Filter::Pcss)}},
+    };
+}
+
+std::vector<std::string> ownedKeys(const std::vector<SettingDimension>& space) {
+    std::vector<std::string> keys;
+    for (const SettingDimension& dimension : space)
+        if (dimension.onlyWith.first.empty()) keys.push_back(dimension.key);
+    keys.push_back("polygon_offset");
+    return keys;
+}
+
+Candidate candidateOf(const std::vector<SettingDimension>& space, const nlohmann::json& used) {
+    Candidate candidate = Candidate::object();
+    for (const SettingDimension& dimension : space)
+        if (used.contains(dimension.key) && dimension.appliesTo(candidate)) candidate[dimension.key] = used[dimension.key];
+    return candidate;
+}
+
+std::vector<Candidate> coarseCandidates(const std::vector<SettingDimension>& space) { return product(space, false); }
+
+std::vector<Candidate> fullGrid(const std::vector<SettingDimension>& space) { return product(space, true); }
+
 std::vector<Candidate> refinedCandidates(const std::vector<SettingDimension>& space, const Candidate& kept) {
     std::vector<Candidate> candidates;
     for (const SettingDimension& dimension : space) {
-        if (!dimension.refined) continue;
+        if (!dimension.refined || !dimension.appliesTo(kept)) continue;
         for (const nlohmann::json& value : dimension.values) {
             if (kept.contains(dimension.key) && kept[dimension.key] == value) continue;
             Candidate one = kept;
@@ -70,7 +96,7 @@ std::string describe(const Candidate& candidate, const std::vector<SettingDimens
     for (const SettingDimension& dimension : space) {
         if (!candidate.contains(dimension.key)) continue;
         const nlohmann::json& value = candidate[dimension.key];
-        text += (text.empty() ? "" : " ") + (value.is_string() ? value.get<std::string>() : value.dump());
+        text += (text.empty() ? "" : " ") + dimension.prefix + (value.is_string() ? value.get<std::string>() : value.dump());
     }
     if (candidate.contains("polygon_offset") && candidate["polygon_offset"].is_array() &&
         candidate["polygon_offset"].size() == 2) {
@@ -80,6 +106,11 @@ std::string describe(const Candidate& candidate, const std::vector<SettingDimens
         text += offset;
     } else if (usesPolygonOffset(candidate)) {
         text += " offset default";
+    }
+    if (candidate.contains("normal_offset") && candidate["normal_offset"].is_number()) {
+        char offset[64];
+        std::snprintf(offset, sizeof offset, " normal %g", candidate["normal_offset"].get<double>());
+        text += offset;
     }
     return text;
 }
@@ -95,28 +126,25 @@ bool usesPolygonOffset(const Candidate& candidate) {
 std::array<long, 3> expectedCost(const Candidate& candidate) {
     const shadowmap::ShadowSettings settings = shadowmap::parseSettings(candidate, "shadowmap-tune", "candidate");
     const long passes = settings.variant == shadowmap::Variant::Woo ? 2 : 1;
-    const long texels = static_cast<long>(settings.resolution) * settings.resolution * passes * settings.cascades;
-    const long taps = settings.filter == shadowmap::Filter::Pcf ? 4 : 1;
+    // cascades "auto" (kAutoCascades, 0) is the count the view needs, at least one: counted
+    // as one, or every auto setting's texels would be 0 and resolution would rank nothing.
+    const long cascades = std::max(settings.cascades, 1);
+    const long texels = static_cast<long>(settings.resolution) * settings.resolution * passes * cascades;
+    // A 2x2 bilinear comparison reads 4 texels; pcss's blocker search reads fewer than its
+    // filter and grows with it, so it ranks nothing differently and is left out.
+    constexpr long kBilinearTexels = 4;
+    const bool tapped = settings.filter == shadowmap::Filter::Pcss ||
+                        (settings.filter == shadowmap::Filter::Pcf && settings.filterRadius > 0.0);
+    const long taps = tapped ? kBilinearTexels * settings.filterTaps
+                             : settings.filter == shadowmap::Filter::Pcf ? kBilinearTexels : 1;
     const long bytes = settings.depthFormat == shadowmap::DepthFormat::D16 ? 2 : settings.depthFormat == shadowmap::DepthFormat::D24 ? 3 : 4;
     return {texels, taps, bytes};
 }
 
 long gridSize(const std::vector<SettingDimension>& space, long offsetLatticeSize) {
-    long withOffset = 1, withoutOffset = 1;
-    for (const SettingDimension& dimension : space) {
-        if (dimension.values.empty()) continue;
-        if (dimension.key == "variant") {
-            long offsetVariants = 0;
-            for (const nlohmann::json& value : dimension.values)
-                offsetVariants += usesPolygonOffset({{"variant", value}});
-            withOffset *= offsetVariants;
-            withoutOffset *= static_cast<long>(dimension.values.size()) - offsetVariants;
-        } else {
-            withOffset *= static_cast<long>(dimension.values.size());
-            withoutOffset *= static_cast<long>(dimension.values.size());
-        }
-    }
-    return withOffset * offsetLatticeSize + withoutOffset;
+    long size = 0;
+    for (const Candidate& candidate : fullGrid(space)) size += usesPolygonOffset(candidate) ? offsetLatticeSize : 1;
+    return size;
 }
 
 } // namespace shadowmap_tune

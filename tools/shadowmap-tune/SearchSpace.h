@@ -1,18 +1,21 @@
 #pragma once
 // What shadowmap-tune chooses among: a list of setting dimensions, each a key of a light's
 // extras.shadow with the values worth trying, cheapest first. A new per-light setting (e.g.
-// cascades) is one more entry in searchSpace(). The polygon offset is no grid dimension: it
-// is fitted per light around the best setting that uses one (OffsetFit.h).
+// cascades) is one more entry in searchSpace(). The polygon and normal offsets are no grid
+// dimensions: they are fitted per light around the best setting that uses a polygon offset
+// (OffsetFit.h).
 #include <nlohmann/json.hpp>
 
 #include <array>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace shadowmap_tune {
 
-// One light's setting as the tuner writes it: the dimensions' keys, plus polygon_offset
-// when explicit. A key left out means the default. nlohmann::json keeps keys sorted, so
+// One light's setting as the tuner writes it: the dimensions' keys, plus polygon_offset and
+// normal_offset when explicit (the fit's). A key left out means the default, or the light's
+// own for a key the tuner does not own (ownedKeys). nlohmann::json keeps keys sorted, so
 // dump() is a canonical name for it.
 using Candidate = nlohmann::json;
 
@@ -23,19 +26,38 @@ struct SettingDimension {
     // fine pass the other values for the settings the first pass kept. Resolution is one:
     // its time and error move monotonically enough that the cheapest ranks the others.
     bool refined = false;
+    // How describe() prefixes a value ("taps" in "pcss taps16"); "" where the value says
+    // what it is.
+    std::string prefix;
+    // The dimension applies only where dimension `onlyWith.first` has the value
+    // `onlyWith.second` (filter_taps: pcss); elsewhere its key is left out, since the plugin
+    // ignores it there and the same picture would be measured once per value. Empty: always.
+    std::pair<std::string, nlohmann::json> onlyWith;
+
+    bool appliesTo(const Candidate& candidate) const;
 };
 
-// The values the user allows (--variants, --resolutions, --depth-formats, --filters).
+// The values the user allows (--variants, --resolutions, --depth-formats, --filters,
+// --filter-taps).
 struct SearchLimits {
     std::vector<std::string> variants, depthFormats, filters;
     std::vector<int> resolutions;
+    std::vector<int> filterTaps;  // pcss candidates only
 };
 
 std::vector<SettingDimension> searchSpace(const SearchLimits& limits);
 
-// Every key the tuner owns in extras.shadow: the dimensions' and polygon_offset. Setting a
-// candidate drops these first, so a key the candidate leaves out returns to its default.
+// Every key the tuner owns in extras.shadow: the dimensions' that always apply, and
+// polygon_offset. Setting a candidate drops these first, so a key the candidate leaves out
+// returns to its default. The keys only some candidates set are not owned, so a candidate
+// without one keeps the light's own value: filter_taps (pcss candidates; a light's wide pcf
+// keeps its taps) and normal_offset (the offset fit's, OffsetFit.h).
 std::vector<std::string> ownedKeys(const std::vector<SettingDimension>& space);
+
+// A light's setting as `used` (printSettings of the settings in effect) gives it, in the
+// space's terms: each dimension's key where the dimension applies (not polygon_offset),
+// so that a light's current setting equals the candidate that renders the same picture.
+Candidate candidateOf(const std::vector<SettingDimension>& space, const nlohmann::json& used);
 
 // The cartesian product of the non-refined dimensions, refined ones at their first value.
 std::vector<Candidate> coarseCandidates(const std::vector<SettingDimension>& space);
@@ -43,8 +65,9 @@ std::vector<Candidate> coarseCandidates(const std::vector<SettingDimension>& spa
 // `kept` with each other value of each refined dimension (one dimension at a time).
 std::vector<Candidate> refinedCandidates(const std::vector<SettingDimension>& space, const Candidate& kept);
 
-// "woo 1024 d24 pcf [2, 8]": how the report names a candidate (dimension order, then the
-// offset when explicit, else "offset default" where the variant uses one).
+// "standard 1024 d24 pcss taps16 offset [2, 8] normal 0.5": how the report names a candidate
+// (dimension order, then the polygon offset when explicit, else "offset default" where the
+// variant uses one, then the normal offset when explicit).
 std::string describe(const Candidate& candidate, const std::vector<SettingDimension>& space);
 
 // True when the candidate's variant draws with a polygon offset (the plugin's settings API:
@@ -53,14 +76,18 @@ bool usesPolygonOffset(const Candidate& candidate);
 
 // What a setting is expected to cost, from what it draws and reads rather than from a
 // measurement: compared lexicographically, the depth texels it renders (resolution squared
-// x passes x cascades; woo draws two passes), then the filter's taps, then the depth
+// x passes x cascades; woo draws two passes), then the texels the filter reads (1 nearest,
+// 4 pcf, 4 per tap for pcss and wide pcf), then the depth
 // format's bytes. Measured times cannot rank settings of similar cost (one setting's times
 // scatter by 30 % and more between runs), and a choice that follows noise differs between
 // two runs, or between a shard and the single run; the search ranks by this where errors tie.
 std::array<long, 3> expectedCost(const Candidate& candidate);
 
-// The full grid's size per light: the product of the dimensions, counting each setting that
-// uses a polygon offset once per offset of the fit's lattice (offsetLatticeSize).
+// Every setting of the space: each dimension at each of its values where it applies.
+std::vector<Candidate> fullGrid(const std::vector<SettingDimension>& space);
+
+// The full grid's size per light, counting each setting that uses a polygon offset once per
+// point of the offset fit's lattice (offsetLatticeSize).
 long gridSize(const std::vector<SettingDimension>& space, long offsetLatticeSize);
 
 } // namespace shadowmap_tune

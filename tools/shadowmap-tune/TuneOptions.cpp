@@ -16,6 +16,10 @@ namespace {
 // about 0.001-0.005 % of error, finer than the settings' differences.
 constexpr int kDefaultWidth = 320, kDefaultHeight = 240, kDefaultFrames = 3;
 constexpr int kDefaultOrbitViews = 4;
+// pcss candidates' taps: the plugin's default 16 with half and twice as many (the coarse pass
+// tries the fewest, the fine pass the others; more than 32 costs a lot on a CPU renderer
+// for a penumbra smoothed on a 320x240 view).
+const std::vector<int> kDefaultPcssTaps = {8, 16, 32};
 
 std::vector<std::string> knownVariants() {
     std::vector<std::string> variants = shadowmap::settingKey("variant").choices;
@@ -42,7 +46,8 @@ const char* tuneUsage() {
         "usage: shadowmap-tune --scene SCENE.gltf|.glb (--budget-ms B | --max-error E) --out TUNED.gltf|.glb\n"
         "  [--views cameras|orbit:N] [--config CONFIG.json] [--width W --height H] [--frames N]\n"
         "  [--variants standard,woo,backface] [--resolutions 512,1024,2048]\n"
-        "  [--depth-formats d16,d24,d32f] [--filters nearest,pcf,pcss] [--report REPORT.json]\n"
+        "  [--depth-formats d16,d24,d32f] [--filters nearest,pcf,pcss] [--filter-taps 8,16,32]\n"
+        "  [--report REPORT.json]\n"
         "  [--key-light spot|point|directional]   a scene without lights gets this key light (placed\n"
         "                  from its bounds as engine-render places it), tuned and written into --out\n"
         "  [--shard K/N]   search every N-th light only and write --out as a partial result (JSON)\n"
@@ -51,15 +56,18 @@ const char* tuneUsage() {
         "\n"
         "Chooses each light's shadow setting by measurement: the most accurate within B ms of\n"
         "shadow passes per frame (--budget-ms), or the cheapest whose error is at most E percent\n"
-        "(--max-error), over variant x resolution x depth format x filter, with the polygon offset\n"
-        "fitted per light (acne + leak against ray-traced truth). Error is pooled over the views:\n"
+        "(--max-error), over variant x resolution x depth format x filter (x filter taps for pcss,\n"
+        "which only a light with a size takes), with the polygon and normal offsets fitted per\n"
+        "light. Error is acne + leak against ray-traced truth: the soft truth (the visible share\n"
+        "of the light) for a light with a size, else the area truth; pooled over the views:\n"
         "every glTF camera, or N views around the scene. Writes the scene with each changed\n"
         "light's extras.shadow (every other byte kept; the file keeps its container) and prints\n"
-        "per light: old -> new setting, time and error before and after, the fitted offset beside\n"
-        "the default's, and how many renders the search took against the full grid.\n"
+        "per light: old -> new setting, time and error (soft or area) before and after, the fitted\n"
+        "offsets beside the defaults, and how many renders the search took against the full grid.\n"
         "\n"
         "Defaults: --views cameras (orbit:4 for a scene without cameras) --width 320 --height 240\n"
-        "  --frames 3, every variant but none, resolutions 512,1024,2048, every format and filter.\n";
+        "  --frames 3, every variant but none, resolutions 512,1024,2048, every format and filter,\n"
+        "  filter taps 8,16,32.\n";
     return usage.c_str();
 }
 
@@ -70,9 +78,10 @@ TuneOptions parseTuneOptions(int argc, char** argv) {
     options.frames = kDefaultFrames;
     options.views.count = kDefaultOrbitViews;
     options.limits = {knownVariants(), shadowmap::settingKey("depth_format").choices,
-                      shadowmap::settingKey("filter").choices, {512, 1024, 2048}};
+                      shadowmap::settingKey("filter").choices, {512, 1024, 2048}, kDefaultPcssTaps};
     bool maxError = false;
     const shadowmap::SettingKey& resolution = shadowmap::settingKey("resolution");
+    const shadowmap::SettingKey& taps = shadowmap::settingKey("filter_taps");
     options.help = tools::parseFlags(argc, argv, [&](const std::string& flag, const std::string& value) {
         if (flag == "--config") options.config = value;
         else if (flag == "--scene") options.scene = value;
@@ -99,6 +108,9 @@ TuneOptions parseTuneOptions(int argc, char** argv) {
             options.limits.depthFormats = tools::parseNames(flag, value, shadowmap::settingKey("depth_format").choices);
         else if (flag == "--filters")
             options.limits.filters = tools::parseNames(flag, value, shadowmap::settingKey("filter").choices);
+        else if (flag == "--filter-taps")
+            options.limits.filterTaps = tools::parseIntegerList(flag, value, static_cast<int>(*taps.minimum),
+                                                                static_cast<int>(*taps.maximum));
         else return false;
         return true;
     });

@@ -105,10 +105,11 @@ int run(const TuneOptions& options, std::unique_ptr<engine::GlContext>& context,
     host.loadAll(config);
     engine::Renderer renderer(config.renderer, host.renderPlugins());
     evaluation::SettingTrial trial(renderer, scene, views, options.frames);
-    // Ranked by area error, as the bench ranks: against one ray per pixel a filtered shade
-    // that matches the penumbra a pixel really sees scores worse than a hard edge.
+    // A point light is ranked by its area error (evaluation::rankingTruth): against one ray
+    // per pixel a filtered shade that matches the penumbra a pixel really sees scores worse
+    // than a hard edge. A light with a size is ranked by its soft error, always measured.
     trial.setAreaTruth(true);
-    SceneMeasurer sceneMeasurer(scene, options.scene, trial, ownedKeys(space), configSettings);
+    SceneMeasurer sceneMeasurer(scene, options.scene, trial, space, configSettings);
     sceneMeasurer.measureCurrent();
 
     if (!sceneMeasurer.onlyOpenCasters().empty())
@@ -118,13 +119,14 @@ int run(const TuneOptions& options, std::unique_ptr<engine::GlContext>& context,
     LockstepMeasurer measurer(
         lights, [&](const std::vector<Candidate>& perLight) { return sceneMeasurer.measure(perLight); },
         [&](int light, const Candidate& candidate) { return sceneMeasurer.valid(light, candidate); });
-    for (int light = 0; light < lights; ++light) measurer.seed(light, sceneMeasurer.current()[light]);
+    for (int light = 0; light < lights; ++light)
+        measurer.seed(light, sceneMeasurer.current()[light], sceneMeasurer.normalOffsets()[light]);
     std::vector<bool> searched(lights);
     for (int light = 0; light < lights; ++light) searched[light] = inShard(options.shard, light);
     const std::vector<LightChoice> choices = searchSettings(measurer, space, goal, searched);
 
-    TuneSummary summary{sceneMeasurer.names(), choices, {}, trial.renders(), gridSize(space, kOffsetLatticeSize),
-                        static_cast<int>(views.size()), goal};
+    TuneSummary summary{sceneMeasurer.names(), sceneMeasurer.rankingTruths(), choices, {}, trial.renders(),
+                        gridSize(space, kOffsetLatticeSize), static_cast<int>(views.size()), goal};
     for (int light = 0; light < lights; ++light) summary.measured.push_back(measurer.measured(light));
     std::fputs(reportText(summary, space).c_str(), stdout);
     std::fflush(stdout);  // before stderr's lines

@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <random>
@@ -16,7 +17,7 @@ namespace shadowmap_tune {
 namespace {
 
 SearchLimits fullLimits() {
-    return {{"standard", "woo", "backface"}, {"d16", "d24", "d32f"}, {"nearest", "pcf"}, {512, 1024, 2048, 4096}};
+    return {{"standard", "woo", "backface"}, {"d16", "d24", "d32f"}, {"nearest", "pcf"}, {512, 1024, 2048, 4096}, {}};
 }
 
 // A light whose costs are known in closed form: time grows with texels and with the
@@ -25,6 +26,8 @@ SearchLimits fullLimits() {
 struct FakeLight {
     double variantError[3];  // standard, woo, backface at 512 texels
     std::array<double, 2> offsetOptimum{1.0, 4.0};
+    // The normal offset at which standard's error is lowest; none: it changes nothing.
+    std::optional<double> normalOptimum = std::nullopt;  // initialised: brace lists may leave it out
 
     Measured measure(const Candidate& c) const {
         const std::string variant = c["variant"];
@@ -44,6 +47,8 @@ struct FakeLight {
                                                              : defaultOffset(c);
             const auto distance = [](double a, double b) { return std::abs(std::log2(a + 0.5) - std::log2(b + 0.5)); };
             error += 0.2 * (distance(offset[0], offsetOptimum[0]) + distance(offset[1], offsetOptimum[1]));
+            if (normalOptimum)
+                error += 0.1 * distance(c.value("normal_offset", shadowmap::ShadowSettings{}.normalOffset), *normalOptimum);
         }
         m.error = error;
         m.evaluated = 100000;
@@ -180,6 +185,63 @@ TEST(TuneSearch, OffsetFitFindsTheKnownOptimumAndReportsTheDefault) {
         EXPECT_EQ(fits[0]->atDefault.setting.dump(), kDefault.dump());
         EXPECT_LT(fits[0]->fitted.error, fits[0]->atDefault.error);
     }
+}
+
+TEST(TuneSearch, OffsetFitFindsTheNormalOffsetWithThePolygonOffset) {
+    FakeLight light{{0.3, 0.9, 0.9}};
+    light.offsetOptimum = {4.0, 32.0};
+    light.normalOptimum = 1.0;
+    FakeScene scene{{light}};
+    LockstepMeasurer measurer = scene.measurer({kDefault});
+    const auto fits = fitOffsets(measurer, {kDefault});
+    ASSERT_TRUE(fits[0]);
+    EXPECT_EQ(fits[0]->fitted.setting["polygon_offset"], nlohmann::json({4.0, 32.0}));
+    EXPECT_EQ(fits[0]->fitted.setting["normal_offset"], 1.0);
+    EXPECT_EQ(fits[0]->normalOffsets, std::vector<double>(kNormalOffsets.begin(), kNormalOffsets.end()));
+}
+
+// A light's own normal offset off the lattice joins it, so the fit starts at the picture the
+// light's other candidates were measured with.
+TEST(TuneSearch, OffsetFitStartsAtTheLightsOwnNormalOffset) {
+    EXPECT_EQ(normalOffsetAxis(0.3), (std::vector<double>{0.0, 0.25, 0.3, 0.5, 1.0, 2.0}));
+    EXPECT_EQ(normalOffsetAxis(0.5), std::vector<double>(kNormalOffsets.begin(), kNormalOffsets.end()));
+    FakeLight light{{0.3, 0.9, 0.9}};
+    light.offsetOptimum = defaultOffset(kDefault);
+    light.normalOptimum = 0.3;
+    LockstepMeasurer measurer(
+        1, [&](const std::vector<Candidate>& perLight) { return std::vector<std::optional<Measured>>{light.measure(perLight[0])}; },
+        [](int, const Candidate&) { return true; });
+    measurer.seed(0, light.measure(kDefault), 0.3);
+    const auto fits = fitOffsets(measurer, {kDefault});
+    ASSERT_TRUE(fits[0]);
+    EXPECT_EQ(fits[0]->defaultNormalOffset, 0.3);
+    EXPECT_EQ(fits[0]->fitted.setting["normal_offset"], 0.3);
+}
+
+// filter_taps applies to pcss only: other filters' candidates leave it out (the plugin
+// ignores it there), in the grid, the refinement, the current setting and the grid's size.
+TEST(TuneSearch, FilterTapsAreADimensionOfPcssOnly) {
+    SearchLimits limits{{"standard"}, {"d24"}, {"pcf", "pcss"}, {512, 1024}, {8, 16, 32}};
+    const std::vector<SettingDimension> space = searchSpace(limits);
+    const std::vector<Candidate> coarse = coarseCandidates(space);
+    ASSERT_EQ(coarse.size(), 2u);
+    EXPECT_FALSE(coarse[0].contains("filter_taps"));
+    EXPECT_EQ(coarse[1]["filter_taps"], 8);  // the fewest first
+    EXPECT_EQ(refinedCandidates(space, coarse[0]).size(), 1u);  // 1024
+    EXPECT_EQ(refinedCandidates(space, coarse[1]).size(), 3u);  // 1024; 16, 32 taps
+    // pcf: 2 resolutions; pcss: 2 x 3 taps; each at every point of the offset lattice.
+    EXPECT_EQ(gridSize(space, kOffsetLatticeSize), 8 * kOffsetLatticeSize);
+    EXPECT_EQ(candidateOf(space, {{"variant", "standard"}, {"resolution", 512}, {"depth_format", "d24"},
+                                  {"filter", "pcf"}, {"filter_taps", 16}}),
+              coarse[0]);
+    EXPECT_EQ(describe(coarse[1], space), "standard 512 d24 pcss taps8 offset default");
+    const auto owned = ownedKeys(space);
+    EXPECT_EQ(std::count(owned.begin(), owned.end(), "filter_taps"), 0);
+    // pcss reads 4 texels per tap: dearer than pcf's one 2x2 tap, dearer with more taps.
+    Candidate more = coarse[1];
+    more["filter_taps"] = 16;
+    EXPECT_LT(expectedCost(coarse[0]), expectedCost(coarse[1]));
+    EXPECT_LT(expectedCost(coarse[1]), expectedCost(more));
 }
 
 TEST(TuneSearch, KeepsTheCurrentSettingUnlessClearlyBeaten) {

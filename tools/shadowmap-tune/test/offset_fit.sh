@@ -24,6 +24,6 @@ json "$work/zero.json" "$light['after']['acne'] < 0.4 and $light['after']['leak'
 # The fit is reported, and the fitted offset errs no more than the default it started from.
 json "$work/zero.json" "'offset_fit' in $light and $light['offset_fit']['fitted']['error'] <= $light['offset_fit']['default']['error']" \
   | grep -qx True || fail "no fitted offset reported, or it errs more than the default"
-grep -q 'polygon offset of standard .*: default \[.*\] error .*, fitted \[' "$work/zero.log" \
-  || fail "the fitted offset is not printed beside the default"
+grep -q 'offsets of standard .*: default \[.*\] normal .* error .*, fitted \[.*\] normal ' "$work/zero.log" \
+  || fail "the fitted offsets are not printed beside the defaults"
 echo "ok: zero offset acne $(json "$work/zero.json" "$light['before']['acne']")% -> $(json "$work/zero.json" "$light['after']['acne']")%"
