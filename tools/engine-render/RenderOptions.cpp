@@ -27,6 +27,10 @@ const char* const kRenderUsage =
     "  [--time T]  (pose every animation of the scene at T seconds; default: the rest pose)\n"
     "  [--animate NAME|all [--fps F]]  (play that animation, or all: frame i at T + i/F, F default 30)\n"
     "  [--truth]   (per light: map time, and acne/leak against ray-traced shadows)\n"
+    "  [--truth-mask NAME=TRUTH.png]...  (implies --truth: the truth that light is scored against, as\n"
+    "               --shadow-mask writes its shade: 255 lit, 0 shadowed; for a light with a size the\n"
+    "               share of it each pixel sees; pixels outside the evaluation set 0, as the mask's\n"
+    "               background)\n"
     "  [--warmup N] (untimed frames first: at least N, default 1, then until a frame compiles no\n"
     "               new shader (up to 4 more), so no timed frame pays for compilation; 0: none)\n"
     "  [--set PLUGIN.KEY=JSON]...  (a plugin's config setting, e.g. shadowmap_plugin.cache_maps=false)\n"
@@ -81,6 +85,7 @@ RenderOptions parseRenderOptions(int argc, char** argv) {
         else if (flag == "--shadow-mask") options.shadowMasks.push_back(parsePngAssignment(flag, value));
         else if (flag == "--shadow-map") options.shadowMaps.push_back(parsePngAssignment(flag, value));
         else if (flag == "--shadow-compare") options.comparisons.push_back(parsePngAssignment(flag, value));
+        else if (flag == "--truth-mask") options.truthMasks.push_back(parsePngAssignment(flag, value));
         else if (flag == "--frames") options.frames = tools::parseInteger(flag, value, 1, kMaxFrames);
         else if (flag == "--warmup") options.warmup = tools::parseInteger(flag, value, 0, kMaxWarmup);
         else if (flag == "--set") tools::addSettingOverride(options.pluginSettings, flag, value);
@@ -99,6 +104,9 @@ RenderOptions parseRenderOptions(int argc, char** argv) {
     if (!sawScene) throw std::invalid_argument("--scene is required");
     if (!sawOut && !options.list) throw std::invalid_argument("--out is required");
     if (options.fps && options.animate.empty()) throw std::invalid_argument("--fps needs --animate");
+    // The truth a mask shows is the one the scoring computes: one evaluation gives both, and the
+    // printed errors are then those of the image written.
+    if (!options.truthMasks.empty()) options.truth = true;
     // Two outputs in one file: the later would silently replace the earlier.
     const std::vector<std::string> files = outputFiles(options);
     for (std::size_t i = 0; i < files.size(); ++i)
@@ -113,7 +121,7 @@ RenderOptions parseRenderOptions(int argc, char** argv) {
 std::vector<std::string> outputFiles(const RenderOptions& options) {
     std::vector<std::string> files;
     if (!options.out.empty()) files.push_back(options.out);
-    for (const auto* perLight : {&options.shadowMasks, &options.shadowMaps, &options.comparisons})
+    for (const auto* perLight : {&options.shadowMasks, &options.truthMasks, &options.shadowMaps, &options.comparisons})
         for (const auto& [light, file] : *perLight) files.push_back(file);
     for (const std::string* file : {&options.stats, &options.graphDot})
         if (!file->empty()) files.push_back(*file);

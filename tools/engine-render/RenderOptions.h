@@ -22,6 +22,8 @@ struct RenderOptions {
     std::vector<std::pair<std::string, std::string>> shadowMasks;    // --shadow-mask NAME=FILE
     std::vector<std::pair<std::string, std::string>> shadowMaps;     // --shadow-map NAME=FILE
     std::vector<std::pair<std::string, std::string>> comparisons;    // --shadow-compare NAME=FILE
+    // --truth-mask NAME=FILE: the truth --truth scores that light against (implies --truth)
+    std::vector<std::pair<std::string, std::string>> truthMasks;
     int frames = 1;
     int warmup = 1;  // at least this many untimed frames first (Renderer::warmUp): llvmpipe compiles at first draw
     std::vector<tools::SettingOverride> pluginSettings;  // --set PLUGIN.KEY=JSON, each key once
@@ -46,5 +48,6 @@ extern const char* const kRenderUsage;
 // Throws std::invalid_argument with one line naming the flag and the reason.
 RenderOptions parseRenderOptions(int argc, char** argv);
 
-// Every file the run will write (--out, the masks, maps and comparisons, --stats, --graph-dot).
+// Every file the run will write (--out, the masks, truth masks, maps and comparisons, --stats,
+// --graph-dot).
 std::vector<std::string> outputFiles(const RenderOptions& options);

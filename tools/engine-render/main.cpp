@@ -1,5 +1,5 @@
 // engine-render: renders one glTF scene headless (EGL surfaceless) and writes a PNG,
-// optionally per-light shadow masks, per-pass statistics and the compiled frame graph.
+// optionally per-light shadow masks and truth masks, per-pass statistics and the compiled frame graph.
 #include "Median.h"
 #include "ToolMain.h"
 #include "DepthImage.h"
@@ -23,6 +23,7 @@
 #include "engine/util/ProcessSetup.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <map>
@@ -145,13 +146,11 @@ void printSoftErrors(const evaluation::LightResult& light, nlohmann::json& json)
     json["penumbra_pixels"] = soft.evaluatedPenumbra;
 }
 
-// Per shadowed light: the median time of its map passes and its errors against ray-traced
-// truth (docs/metrics.md, percent of the evaluation set), printed and returned for --stats.
-nlohmann::json printLightErrors(engine::Renderer& renderer, const engine::Scene& scene,
-                                const engine::FrameCamera& camera,
+// Per shadowed light of `view` (ShadowEvaluator::evaluate): the median time of its map passes
+// and its errors against ray-traced truth (docs/metrics.md, percent of the evaluation set),
+// printed and returned for --stats.
+nlohmann::json printLightErrors(const evaluation::ViewResult& view, const engine::Scene& scene,
                                 const MapTimes& mapTimes) {
-    evaluation::ShadowEvaluator evaluator(renderer, scene);
-    const evaluation::ViewResult view = evaluator.evaluate(camera, 0);
     std::printf("  %-20s %-9s %6s %9s %8s %8s %8s %12s\n", "light", "variant", "map", "map ms",
                 "acne %", "leak %", "error %", "error-edge %");
     nlohmann::json lights = nlohmann::json::array();
@@ -179,6 +178,33 @@ nlohmann::json printLightErrors(engine::Renderer& renderer, const engine::Scene&
             std::printf("  %-20s not scored: the light emits nothing (intensity or colour 0)\n",
                         engine::lightInstanceName(scene, static_cast<int>(slot)).c_str());
     return lights;
+}
+
+// A light's truth (LightResult::truth, 1 lit) as an 8-bit mask in --shadow-mask's encoding
+// (255 lit, rounded as the GL writes a [0,1] value to RGBA8); pixels outside the evaluation
+// set get the mask's background, 0 (the lit pass's light views clear to black), so the two
+// PNGs line up pixel for pixel.
+std::vector<std::uint8_t> truthMask8(const evaluation::LightResult& light) {
+    std::vector<std::uint8_t> mask(light.truth.size(), 0);
+    for (std::size_t i = 0; i < mask.size(); ++i)
+        if (light.evaluated[i])
+            mask[i] = static_cast<std::uint8_t>(std::lround(255.0 * std::clamp(light.truth[i], 0.0f, 1.0f)));
+    return mask;
+}
+
+// --truth-mask: each named light's truth, from the evaluation that scored it. A light the
+// evaluation did not score (variant none, or it emits nothing) has no truth to write.
+void writeTruthMasks(const RenderOptions& options, const std::vector<int>& slots,
+                     const evaluation::ViewResult& view) {
+    for (std::size_t i = 0; i < slots.size(); ++i) {
+        const auto found = std::find_if(view.lights.begin(), view.lights.end(),
+                                        [&](const evaluation::LightResult& light) { return light.slot == slots[i]; });
+        if (found == view.lights.end())
+            throw engine::InputError("--truth-mask " + options.truthMasks[i].first +
+                                     ": the light is not scored (variant none, or it emits nothing)");
+        engine::writePngAtomically(options.truthMasks[i].second, options.width, options.height, 1,
+                                   truthMask8(*found));
+    }
 }
 
 // More than this share of saturated pixels is "most of the image".
@@ -274,6 +300,10 @@ int run(const RenderOptions& options, std::unique_ptr<engine::GlContext>& contex
 
     for (const auto& [light, file] : options.shadowMaps)
         request.shadowMapSlots.push_back(lightSlot(scene, options.scene, light));
+    // Resolved before rendering, so a bad name costs no frames.
+    std::vector<int> truthMaskSlots;
+    for (const auto& [light, file] : options.truthMasks)
+        truthMaskSlots.push_back(lightSlot(scene, options.scene, light));
 
     std::vector<double> frameMs;
     std::vector<std::string> order;
@@ -378,7 +408,13 @@ int run(const RenderOptions& options, std::unique_ptr<engine::GlContext>& contex
     stats["renderer_switches"] = {{"shade_cache", switches.shadeCache},
                                   {"light_footprints", switches.lightFootprints},
                                   {"unrolled_light_sum", switches.unrolledLightSum}};
-    if (options.truth) stats["lights"] = printLightErrors(renderer, scene, request.camera, mapTimes);
+    if (options.truth) {
+        evaluation::ShadowEvaluator evaluator(renderer, scene);
+        evaluator.setKeepTruth(!options.truthMasks.empty());
+        const evaluation::ViewResult view = evaluator.evaluate(request.camera, 0);
+        stats["lights"] = printLightErrors(view, scene, mapTimes);
+        writeTruthMasks(options, truthMaskSlots, view);
+    }
     if (!options.stats.empty()) engine::writeFileAtomically(options.stats, stats.dump(2));
     if (!options.graphDot.empty()) engine::writeFileAtomically(options.graphDot, last.graphviz);
     return 0;

@@ -70,10 +70,17 @@ ViewResult ShadowEvaluator::evaluate(const engine::FrameCamera& camera, int fram
             out.areaErrors = truth::areaShadowErrors(camera.width, camera.height,
                                                      visibility_.litFraction(scene_, out.slot, surfaces),
                                                      truthImage, shade, evaluationSet, surfaces.covered);
-        if (const truth::LightExtent extent = lightExtent(view); !extent.isPoint())
-            out.softErrors = truth::softShadowErrors(camera.width, camera.height,
-                                                     visibility_.visibleFraction(scene_, out.slot, surfaces, extent),
-                                                     shade, evaluationSet, surfaces.covered);
+        std::vector<float> softTruth;
+        if (const truth::LightExtent extent = lightExtent(view); !extent.isPoint()) {
+            softTruth = visibility_.visibleFraction(scene_, out.slot, surfaces, extent);
+            out.softErrors = truth::softShadowErrors(camera.width, camera.height, softTruth, shade, evaluationSet,
+                                                     surfaces.covered);
+        }
+        if (keepTruth_) {
+            out.truth = softTruth.empty() ? std::vector<float>(truthImage.begin(), truthImage.end())
+                                          : std::move(softTruth);
+            out.evaluated = evaluationSet;
+        }
         result.lights.push_back(std::move(out));
     }
     return result;

@@ -34,6 +34,12 @@ struct LightResult {
     // truth, the share of the light visible from each pixel's point (truth::softShadowErrors,
     // penumbra figures included), whatever the filter; evaluated == 0 for a point light.
     truth::ShadowErrors softErrors;
+    // With setKeepTruth(true): the truth the light is scored against, per pixel, top row
+    // first (softErrors' visible fraction for a light with a size, else errors' one-ray
+    // visibility as 0 or 1), and the evaluation set (1 = scored); empty otherwise, so the
+    // bench and the tuner hold no images per light.
+    std::vector<float> truth;
+    std::vector<std::uint8_t> evaluated;
     std::size_t nonFinitePixels = 0;  // NaN/Inf anywhere in its shade (must stay 0)
 };
 
@@ -60,6 +66,9 @@ public:
     void setAreaTruth(bool enabled) { areaTruth_ = enabled; }
     // Also score every light on the pixels within `distance` of the camera (0: not).
     void setNearDistance(double distance) { nearDistance_ = distance; }
+    // Keep each light's truth image and evaluation set in its LightResult (engine-render
+    // --truth-mask writes them).
+    void setKeepTruth(bool enabled) { keepTruth_ = enabled; }
 
     // Renders `frames` timed frames of `camera` (0: none, errors only), then evaluates every
     // light that has a shadow (variant other than none).
@@ -87,6 +96,7 @@ private:
     truth::RayTracedVisibility visibility_;
     bool areaTruth_ = false;
     double nearDistance_ = 0.0;
+    bool keepTruth_ = false;
 };
 
 } // namespace evaluation
