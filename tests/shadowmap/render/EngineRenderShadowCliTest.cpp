@@ -92,6 +92,21 @@ protected:
                    extra);
     }
 
+    // The showcase's (or masked scenes') three lights at 480x270 with --truth, sized by
+    // `sizes` (--light-set options) and each given `key`=`value` (none when key is empty):
+    // --stats' per-light entries, three of them, in the lights' order.
+    nlohmann::json everyLightWith(const std::string& sizes, const std::string& key = "", const std::string& value = "") {
+        std::string options = "--width 480 --height 270 --truth " + sizes;
+        if (!key.empty())
+            for (const char* name : {"sun", "spot_light", "point_light"})
+                options += std::string(" --light-set ") + name + "." + key + "=" + value;
+        const CommandResult result = render(options);
+        EXPECT_EQ(result.exitCode, 0) << result.output;
+        nlohmann::json lights = result.exitCode == 0 ? stats()["lights"] : nlohmann::json::array();
+        EXPECT_EQ(lights.size(), 3u) << lights.dump();
+        return lights.size() == 3u ? lights : nlohmann::json();
+    }
+
     nlohmann::json stats() {
         std::ifstream in(dir_ / "stats.json");
         return nlohmann::json::parse(in);
@@ -518,6 +533,11 @@ TEST_F(EngineRenderShadows, TruthScoresASizedLightAgainstItsSizeToo) {
     EXPECT_NE(sized.output.find("against its size (light_radius 0.3)"), std::string::npos) << sized.output;
 }
 
+// The sizes the soft-shadow tests give the showcase's lights (and the masked scenes', which
+// have the same three).
+constexpr const char* kShowcaseSizes = "--light-set sun.angular_diameter=0.05 --light-set spot_light.light_radius=0.15 "
+                                       "--light-set point_light.light_radius=0.1";
+
 // pcss against the area truth of every light type on the showcase (sun 0.05 rad, spot r 0.15,
 // point r 0.1, 480x270), beside pcf on the same sized lights in the same run. Measured on
 // llvmpipe, soft error / penumbra error pcf -> pcss: spot 0.320 / 20.7 % -> 0.084 / 4.7 %,
@@ -526,21 +546,11 @@ TEST_F(EngineRenderShadows, TruthScoresASizedLightAgainstItsSizeToo) {
 // error at most half of pcf's (measured at most 0.30x) and at most 12 % (measured at most
 // 5.8 %).
 TEST_F(EngineRenderShadows, PcssAndWidePcfFollowTheAreaTruthOfEverySizedLight) {
-    const std::string sized =
-        "--width 480 --height 270 --truth --light-set sun.angular_diameter=0.05 "
-        "--light-set spot_light.light_radius=0.15 --light-set point_light.light_radius=0.1";
-    const CommandResult hard = render(sized);
-    ASSERT_EQ(hard.exitCode, 0) << hard.output;
-    const nlohmann::json pcf = stats();
-    const CommandResult soft =
-        render(sized + " --light-set sun.filter=pcss --light-set spot_light.filter=pcss "
-                       "--light-set point_light.filter=pcss");
-    ASSERT_EQ(soft.exitCode, 0) << soft.output;
-    const nlohmann::json pcss = stats();
-    ASSERT_EQ(pcss["lights"].size(), 3u) << pcss.dump();
+    const nlohmann::json pcf = everyLightWith(kShowcaseSizes), pcss = everyLightWith(kShowcaseSizes, "filter", "pcss");
+    ASSERT_FALSE(pcf.is_null() || pcss.is_null());
     for (std::size_t i = 0; i < 3; ++i) {
-        const nlohmann::json& measured = pcss["lights"][i];
-        const nlohmann::json& control = pcf["lights"][i];
+        const nlohmann::json& measured = pcss[i];
+        const nlohmann::json& control = pcf[i];
         SCOPED_TRACE(measured.dump() + "\n" + control.dump());
         EXPECT_GT(measured["penumbra_pixels"].get<int>(), 500);
         EXPECT_LE(measured["soft_error"].get<double>(), 0.5 * control["soft_error"].get<double>());
@@ -550,16 +560,11 @@ TEST_F(EngineRenderShadows, PcssAndWidePcfFollowTheAreaTruthOfEverySizedLight) {
     // Wide pcf (filter_radius 4 texels) buys softer edges without pcss: penumbra error at most
     // 0.85x the one tap's (measured 9.8 / 11.9 / 17.1 % against 20.7 / 18.9 / 22.7 %: at most
     // 0.75x, the point light's, whose cube texels are the widest).
-    const CommandResult wide =
-        render(sized + " --light-set sun.filter_radius=4 --light-set spot_light.filter_radius=4 "
-                       "--light-set point_light.filter_radius=4");
-    ASSERT_EQ(wide.exitCode, 0) << wide.output;
-    const nlohmann::json widePcf = stats();
-    ASSERT_EQ(widePcf["lights"].size(), 3u) << widePcf.dump();
+    const nlohmann::json widePcf = everyLightWith(kShowcaseSizes, "filter_radius", "4");
+    ASSERT_FALSE(widePcf.is_null());
     for (std::size_t i = 0; i < 3; ++i) {
-        const nlohmann::json& measured = widePcf["lights"][i];
-        SCOPED_TRACE(measured.dump());
-        EXPECT_LE(measured["penumbra_error"].get<double>(), 0.85 * pcf["lights"][i]["penumbra_error"].get<double>());
+        SCOPED_TRACE(widePcf[i].dump());
+        EXPECT_LE(widePcf[i]["penumbra_error"].get<double>(), 0.85 * pcf[i]["penumbra_error"].get<double>());
     }
 }
 
@@ -569,21 +574,13 @@ TEST_F(EngineRenderShadows, PcssAndWidePcfFollowTheAreaTruthOfEverySizedLight) {
 // 0.152 -> 0.069 % (with the filter held at least a texel wide: 0.073, 0.068, 0.132 %, up to
 // 1.8x pcf's). Bound: pcss at most 1.05x pcf's (measured at most 0.92x).
 TEST_F(EngineRenderShadows, PcssShadesSmallLightsAtLeastAsWellAsTheHardFilter) {
-    const std::string sized =
-        "--width 480 --height 270 --truth --light-set sun.angular_diameter=0.0093 "
-        "--light-set spot_light.light_radius=0.02 --light-set point_light.light_radius=0.02";
-    const CommandResult hard = render(sized);
-    ASSERT_EQ(hard.exitCode, 0) << hard.output;
-    const nlohmann::json pcf = stats();
-    const CommandResult soft =
-        render(sized + " --light-set sun.filter=pcss --light-set spot_light.filter=pcss "
-                       "--light-set point_light.filter=pcss");
-    ASSERT_EQ(soft.exitCode, 0) << soft.output;
-    const nlohmann::json pcss = stats();
-    ASSERT_EQ(pcss["lights"].size(), 3u) << pcss.dump();
+    const std::string small = "--light-set sun.angular_diameter=0.0093 --light-set spot_light.light_radius=0.02 "
+                              "--light-set point_light.light_radius=0.02";
+    const nlohmann::json pcf = everyLightWith(small), pcss = everyLightWith(small, "filter", "pcss");
+    ASSERT_FALSE(pcf.is_null() || pcss.is_null());
     for (std::size_t i = 0; i < 3; ++i) {
-        SCOPED_TRACE(pcss["lights"][i].dump() + "\n" + pcf["lights"][i].dump());
-        EXPECT_LE(pcss["lights"][i]["soft_error"].get<double>(), 1.05 * pcf["lights"][i]["soft_error"].get<double>());
+        SCOPED_TRACE(pcss[i].dump() + "\n" + pcf[i].dump());
+        EXPECT_LE(pcss[i]["soft_error"].get<double>(), 1.05 * pcf[i]["soft_error"].get<double>());
     }
 }
 
@@ -595,24 +592,13 @@ TEST_F(EngineRenderShadows, PcssShadesSmallLightsAtLeastAsWellAsTheHardFilter) {
 // 0.21x), penumbra error at most 12 % (the target; measured at most 4.6 %).
 TEST_F(EngineRenderShadows, PcssFollowsTheAreaTruthThroughAlphaMaskedCasters) {
     useScene("masked_canopy");
-    const std::string sized =
-        "--width 480 --height 270 --truth --light-set sun.angular_diameter=0.05 "
-        "--light-set spot_light.light_radius=0.15 --light-set point_light.light_radius=0.1";
-    const CommandResult hard = render(sized);
-    ASSERT_EQ(hard.exitCode, 0) << hard.output;
-    const nlohmann::json pcf = stats();
-    const CommandResult soft =
-        render(sized + " --light-set sun.filter=pcss --light-set spot_light.filter=pcss "
-                       "--light-set point_light.filter=pcss");
-    ASSERT_EQ(soft.exitCode, 0) << soft.output;
-    const nlohmann::json pcss = stats();
-    ASSERT_EQ(pcss["lights"].size(), 3u) << pcss.dump();
+    const nlohmann::json pcf = everyLightWith(kShowcaseSizes), pcss = everyLightWith(kShowcaseSizes, "filter", "pcss");
+    ASSERT_FALSE(pcf.is_null() || pcss.is_null());
     for (std::size_t i = 0; i < 3; ++i) {
-        const nlohmann::json& measured = pcss["lights"][i];
-        SCOPED_TRACE(measured.dump() + "\n" + pcf["lights"][i].dump());
-        EXPECT_GT(measured["penumbra_pixels"].get<int>(), 5000);  // measured at least 8694
-        EXPECT_LE(measured["soft_error"].get<double>(), 0.5 * pcf["lights"][i]["soft_error"].get<double>());
-        EXPECT_LE(measured["penumbra_error"].get<double>(), 12.0);
+        SCOPED_TRACE(pcss[i].dump() + "\n" + pcf[i].dump());
+        EXPECT_GT(pcss[i]["penumbra_pixels"].get<int>(), 5000);  // measured at least 8694
+        EXPECT_LE(pcss[i]["soft_error"].get<double>(), 0.5 * pcf[i]["soft_error"].get<double>());
+        EXPECT_LE(pcss[i]["penumbra_error"].get<double>(), 12.0);
     }
 }
 
