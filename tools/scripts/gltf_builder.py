@@ -271,6 +271,12 @@ class GltfBuilder:
         self.doc["scenes"][0]["nodes"].append(len(self.doc["nodes"]) - 1)
         return len(self.doc["nodes"]) - 1
 
+    def box_node(self, name, lo, hi, material):
+        """A node holding an axis-aligned box from corner lo to corner hi (world units)."""
+        size = [h - l for l, h in zip(lo, hi)]
+        centre = [(l + h) / 2 for l, h in zip(lo, hi)]
+        return self.node(name, translation=centre, mesh=self.mesh(name, box(size), material))
+
     def camera(self, name, eye, target, yfov, znear, zfar=None):
         camera = {"type": "perspective", "name": name, "perspective": {"yfov": yfov, "znear": znear}}
         if zfar:

@@ -14,13 +14,7 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(__file__))
-from gltf_builder import GltfBuilder, box  # noqa: E402
-
-
-def add_box(g, name, lo, hi, material):
-    size = [h - l for l, h in zip(lo, hi)]
-    centre = [(l + h) / 2 for l, h in zip(lo, hi)]
-    g.node(name, translation=centre, mesh=g.mesh(name, box(size), material))
+from gltf_builder import GltfBuilder  # noqa: E402
 
 
 def main():
@@ -29,9 +23,9 @@ def main():
     g = GltfBuilder()
     floor = g.material("floor", (0.7, 0.7, 0.7), roughness=0.9)
     slab = g.material("slab", (0.6, 0.45, 0.3), roughness=0.7)
-    add_box(g, "floor", (-8.0, -0.5, -8.0), (8.0, 0.0, 8.0), floor)
-    add_box(g, "low", (-4.5, 0.25, -2.0), (-1.5, 0.35, 1.0), slab)
-    add_box(g, "high", (1.5, 2.5, -2.0), (4.5, 2.6, 1.0), slab)
+    g.box_node("floor", (-8.0, -0.5, -8.0), (8.0, 0.0, 8.0), floor)
+    g.box_node("low", (-4.5, 0.25, -2.0), (-1.5, 0.35, 1.0), slab)
+    g.box_node("high", (1.5, 2.5, -2.0), (4.5, 2.6, 1.0), slab)
     # The test's camera (tests/support/TestScenes.h cameraLooking: yfov 0.9, near 0.1, far 100).
     g.camera("camera", (0.0, 14.0, 6.0), (0.0, 0.0, -0.5), 0.9, 0.1, 100.0)
     # A directional light shines along its node's -Z: placed toward the sun, looking at the origin.

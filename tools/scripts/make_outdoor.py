@@ -12,13 +12,7 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(__file__))
-from gltf_builder import GltfBuilder, box  # noqa: E402
-
-
-def add_box(g, name, lo, hi, material):
-    size = [h - l for l, h in zip(lo, hi)]
-    centre = [(l + h) / 2 for l, h in zip(lo, hi)]
-    g.node(name, translation=centre, mesh=g.mesh(name, box(size), material))
+from gltf_builder import GltfBuilder  # noqa: E402
 
 
 def main():
@@ -27,15 +21,15 @@ def main():
     ground = g.material("ground", (0.55, 0.55, 0.5), roughness=0.95)
     wood = g.material("wood", (0.55, 0.38, 0.2), roughness=0.7)
     stone = g.material("stone", (0.7, 0.68, 0.62), roughness=0.8)
-    add_box(g, "ground", (-500, -0.5, -500), (500, 0, 500), ground)
+    g.box_node("ground", (-500, -0.5, -500), (500, 0, 500), ground)
     for i in range(10):
         for x in (-3.0, 3.0):
             z = -2.0 - 3.0 * i
-            add_box(g, "post_%d_%s" % (i, "left" if x < 0 else "right"), (x - 0.075, 0, z - 0.075),
+            g.box_node("post_%d_%s" % (i, "left" if x < 0 else "right"), (x - 0.075, 0, z - 0.075),
                     (x + 0.075, 2.5, z + 0.075), wood)
     for i in range(4):
         x, z = (25.0 if i % 2 else -25.0), -120.0 - 60.0 * i
-        add_box(g, "building_%d" % i, (x - 8, 0, z - 10), (x + 8, 20 + 5 * i, z + 10), stone)
+        g.box_node("building_%d" % i, (x - 8, 0, z - 10), (x + 8, 20 + 5 * i, z + 10), stone)
     g.camera("street_camera", (0, 1.7, 0), (0, 1.0, -20), 0.9, 0.1, 300.0)
     elevation, azimuth = math.radians(35.0), 0.6
     to_sun = (-math.cos(elevation) * math.sin(azimuth), math.sin(elevation), -math.cos(elevation) * math.cos(azimuth))
