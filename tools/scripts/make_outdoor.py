@@ -26,7 +26,7 @@ def main():
         for x in (-3.0, 3.0):
             z = -2.0 - 3.0 * i
             g.box_node("post_%d_%s" % (i, "left" if x < 0 else "right"), (x - 0.075, 0, z - 0.075),
-                    (x + 0.075, 2.5, z + 0.075), wood)
+                       (x + 0.075, 2.5, z + 0.075), wood)
     for i in range(4):
         x, z = (25.0 if i % 2 else -25.0), -120.0 - 60.0 * i
         g.box_node("building_%d" % i, (x - 8, 0, z - 10), (x + 8, 20 + 5 * i, z + 10), stone)
