@@ -61,7 +61,9 @@ BenchRow makeRow(const BenchScene& scene, const ShadowSetting& setting, double f
     row.areaAcne = 100.0 * light.areaErrors.acne;
     row.areaLeak = 100.0 * light.areaErrors.leak;
     row.areaError = 100.0 * light.areaErrors.error;
-    if (light.softErrors.evaluated > 0) {  // a light with a size
+    // Soft figures on the rows of the lights ranked by them, so that BenchRow::rankedError
+    // (which must also work on rows read back by --merge) follows evaluation::rankingTruth.
+    if (evaluation::rankingTruth(light) == evaluation::RankingTruth::Soft) {
         row.softError = 100.0 * light.softErrors.error;
         row.softErrorNoEdge = 100.0 * light.softErrors.errorNoEdge;
         row.penumbraError = 100.0 * light.softErrors.penumbraError;
