@@ -28,6 +28,8 @@ def main():
     g.box_node("high", (1.5, 2.5, -2.0), (4.5, 2.6, 1.0), slab)
     # The test's camera (tests/support/TestScenes.h cameraLooking: yfov 0.9, near 0.1, far 100).
     g.camera("camera", (0.0, 14.0, 6.0), (0.0, 0.0, -0.5), 0.9, 0.1, 100.0)
+    # From behind the slabs, where the sun throws their shadows: the docs' picture.
+    g.camera("behind", (0.0, 7.0, -11.0), (0.0, 0.0, -1.0), 0.9, 0.1, 100.0)
     # A directional light shines along its node's -Z: placed toward the sun, looking at the origin.
     length = math.hypot(1.0, 0.35)
     to_sun = (0.0, 1.0 / length, 0.35 / length)
