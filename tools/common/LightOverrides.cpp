@@ -4,6 +4,7 @@
 #include "engine/util/Error.h"
 
 #include <algorithm>
+#include <limits>
 #include <set>
 #include <stdexcept>
 
@@ -21,10 +22,35 @@ std::string commandLineName(const engine::Scene& scene, int slot) {
     return plainWord && engine::findLightInstanceByNameOrNumber(scene, name) >= 0 ? name : std::to_string(slot + 1);
 }
 
+constexpr const char* kIntensityKey = "intensity";
+constexpr const char* kColorKey = "color";
+
+// Finite as the lit pass holds it: a float.
+bool finiteNonNegative(const nlohmann::json& value) {
+    return value.is_number() && value.get<double>() >= 0.0 &&
+           value.get<double>() <= static_cast<double>(std::numeric_limits<float>::max());
+}
+
+// Why `value` is no value of the light property `key`, or "" when it is one.
+std::string lightPropertyProblem(const std::string& key, const nlohmann::json& value) {
+    if (key == kIntensityKey)
+        return finiteNonNegative(value) ? "" : "must be a finite number >= 0 (0: the light emits nothing)";
+    const bool rgb = value.is_array() && value.size() == 3 && std::all_of(value.begin(), value.end(), finiteNonNegative);
+    return rgb ? "" : "must be [r, g, b], three finite numbers >= 0 (linear)";
+}
+
 } // namespace
+
+bool isLightPropertyKey(const std::string& key) { return key == kIntensityKey || key == kColorKey; }
 
 LightOverride parseLightSetting(const std::string& flag, const std::string& text) {
     KeyAssignment assignment = parseKeyAssignment(flag, text, "NAME.KEY", true);
+    // A light property's value is checked here, before any file is read: the plugins that
+    // check the shadow keys never see it.
+    if (isLightPropertyKey(assignment.key))
+        if (const std::string problem = lightPropertyProblem(assignment.key, assignment.value); !problem.empty())
+            throw std::invalid_argument(flag + " " + text + ": light \"" + assignment.owner + "\"." + assignment.key +
+                                        " " + problem + ", got " + assignment.value.dump());
     return {std::move(assignment.owner), std::move(assignment.key), std::move(assignment.value), flag + " " + text};
 }
 
@@ -50,6 +76,33 @@ std::vector<LightOverride> resolveLightOverrides(const std::vector<LightOverride
         resolved.push_back(std::move(named));
     }
     return resolved;
+}
+
+std::vector<LightOverride> applyLightProperties(engine::Scene& scene, const std::vector<LightOverride>& resolved,
+                                                std::vector<std::string>& warnings) {
+    std::vector<LightOverride> rest;
+    for (const LightOverride& option : resolved) {
+        if (!isLightPropertyKey(option.key)) {
+            rest.push_back(option);
+            continue;
+        }
+        const int instances = static_cast<int>(scene.lightInstances.size());
+        std::set<int> lights;  // the glTF lights the named instances place
+        for (int slot = 0; slot < instances; ++slot)
+            if (engine::lightInstanceName(scene, slot) == option.light) lights.insert(scene.lightInstances[slot].light);
+        for (const int index : lights) {
+            engine::Light& light = scene.lights[index];
+            if (option.key == kIntensityKey) light.intensity = option.value.get<float>();
+            else light.color = {option.value[0].get<float>(), option.value[1].get<float>(), option.value[2].get<float>()};
+        }
+        for (int slot = 0; slot < instances; ++slot) {
+            const std::string other = engine::lightInstanceName(scene, slot);
+            if (other != option.light && lights.count(scene.lightInstances[slot].light))
+                warnings.push_back(option.text + " also sets light \"" + other + "\": it places the same glTF light (" +
+                                   option.key + " is the light's, shared by every node that places it)");
+        }
+    }
+    return rest;
 }
 
 void applyLightOverrides(const std::vector<LightOverride>& resolved, const std::vector<engine::RenderPlugin*>& plugins,

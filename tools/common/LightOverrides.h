@@ -2,6 +2,8 @@
 // Per-light settings from the command line (engine-render --light-set NAME.KEY=JSON and its
 // shorthand --light NAME=VARIANT): parsed, resolved to the scene's light instances, handed
 // to the plugins, and the warning for a --set that a light's own settings make do nothing.
+// Two keys are the light's own, not its shadow's (isLightPropertyKey): intensity and color
+// go to the scene's engine::Light, which the lit pass reads, and no plugin sees them.
 //
 // Where a light's setting comes from, most specific last (docs/settings.md, "Precedence"):
 // built-in defaults < the engine config's plugin settings (--set edits them) <
@@ -27,8 +29,23 @@ struct LightOverride {
 };
 
 // --light-set NAME.KEY=JSON. The last '.' before the '=' splits (Blender names lights
-// "Light.001"; no key holds a dot). Throws std::invalid_argument naming the flag.
+// "Light.001"; no key holds a dot). Throws std::invalid_argument naming the flag; for a
+// light property (below) also when its value is not one the property takes, naming the
+// light, the key and the value.
 LightOverride parseLightSetting(const std::string& flag, const std::string& text);
+
+// The keys that are properties of the light itself (KHR_lights_punctual), not of its shadow:
+//   intensity  a finite number >= 0, replacing the file's (lux for a directional light,
+//              candela for the others; 0: the light emits nothing);
+//   color      [r, g, b], linear, each finite and >= 0.
+bool isLightPropertyKey(const std::string& key);
+
+// Sets each override of a light property on `scene`'s engine::Light of every instance named
+// option.light, and returns the other overrides, for the plugins (applyLightOverrides). A
+// glTF light that an instance of another name places too changes for that instance as well
+// (the property belongs to the light, not to the node): one warning per such instance.
+std::vector<LightOverride> applyLightProperties(engine::Scene& scene, const std::vector<LightOverride>& resolved,
+                                                std::vector<std::string>& warnings);
 // --light NAME=VARIANT, which is --light-set NAME.variant=VARIANT.
 LightOverride parseLightVariant(const std::string& flag, const std::string& text);
 

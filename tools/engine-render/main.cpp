@@ -267,7 +267,12 @@ int run(const RenderOptions& options, std::unique_ptr<engine::GlContext>& contex
         tools::resolveLightOverrides(options.lightSettings, [&](const std::string& light) {
             return engine::lightInstanceName(scene, lightSlot(scene, options.scene, light, true));
         });
-    tools::applyLightOverrides(lightSettings, plugins, options.config);
+    // A light's intensity and color are the scene's (the lit pass reads them), the rest the plugins'.
+    std::vector<std::string> propertyWarnings;
+    const std::vector<tools::LightOverride> shadowSettings =
+        tools::applyLightProperties(scene, lightSettings, propertyWarnings);
+    for (const std::string& warning : propertyWarnings) std::cerr << "warning: " << warning << "\n";
+    tools::applyLightOverrides(shadowSettings, plugins, options.config);
     for (const std::string& warning : tools::shadowedSettingWarnings(options.pluginSettings, lightSettings, host, scene))
         std::cerr << "warning: " << warning << "\n";
     tools::AnimationPlayback playback;

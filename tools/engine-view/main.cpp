@@ -53,7 +53,9 @@ void saveSettings(const ViewOptions& options, const ViewerState& state, const st
 // number from --list; a shared name sets every instance) and kept where the viewer keeps
 // every edit (the light's extras.shadow), so the keys change them further and S saves them.
 // Each is checked by the plugin now, so a bad one is an error naming it before the loop.
-void applyLightOptions(const ViewOptions& options, const engine::Scene& scene, ViewerState& state,
+// A light's intensity and color go to the scene's light (the lit pass reads them each frame);
+// they are this session's, not shadow settings, so S does not save them.
+void applyLightOptions(const ViewOptions& options, engine::Scene& scene, ViewerState& state,
                        engine::Renderer& renderer) {
     const std::vector<tools::LightOverride> resolved =
         tools::resolveLightOverrides(options.lightSettings, [&](const std::string& light) {
@@ -63,7 +65,10 @@ void applyLightOptions(const ViewOptions& options, const engine::Scene& scene, V
                                         "no such light (" + engine::describeLightInstances(scene) + ")");
             return engine::lightInstanceName(scene, slot);
         });
-    for (const tools::LightOverride& option : resolved) {
+    std::vector<std::string> warnings;
+    const std::vector<tools::LightOverride> shadowSettings = tools::applyLightProperties(scene, resolved, warnings);
+    for (const std::string& warning : warnings) std::cerr << "warning: " << warning << "\n";
+    for (const tools::LightOverride& option : shadowSettings) {
         for (std::size_t i = 0; i < state.lights().size(); ++i)
             if (state.lights()[i].name == option.light) state.set(static_cast<int>(i), option.key, option.value);
         try {

@@ -154,6 +154,63 @@ TEST(LightOverrides, LightIsShortForTheVariantKey) {
     EXPECT_EQ(errorOf([] { tools::parseLightVariant("--light", "sun"); }), "--light: \"sun\" must be NAME=VARIANT");
 }
 
+// intensity and color are the light's own: their values are checked as they are parsed,
+// each refusal naming the option, the light, the key and the value.
+TEST(LightOverrides, LightPropertiesAreCheckedAsTheyAreParsed) {
+    EXPECT_EQ(tools::parseLightSetting("--light-set", "Light.001.intensity=54351").value, 54351);
+    EXPECT_EQ(tools::parseLightSetting("--light-set", "sun.intensity=0").value, 0);  // emits nothing: allowed
+    EXPECT_EQ(tools::parseLightSetting("--light-set", "sun.color=[1,0.5,0]").value, nlohmann::json({1, 0.5, 0}));
+    EXPECT_EQ(errorOf([] { tools::parseLightSetting("--light-set", "sun.intensity=-1"); }),
+              "--light-set sun.intensity=-1: light \"sun\".intensity must be a finite number >= 0 (0: the light "
+              "emits nothing), got -1");
+    for (const char* bad : {"nan", "inf", "bright", "[2]", "1e39", "true"})
+        EXPECT_NE(errorOf([&] { tools::parseLightSetting("--light-set", std::string("sun.intensity=") + bad); })
+                      .find("light \"sun\".intensity must be a finite number >= 0"),
+                  std::string::npos)
+            << bad;
+    for (const char* bad : {"[1,2]", "[1,2,-3]", "[1,2,3,4]", "red", "1", "[1,\"a\",3]"})
+        EXPECT_NE(errorOf([&] { tools::parseLightSetting("--light-set", std::string("lamp.color=") + bad); })
+                      .find("light \"lamp\".color must be [r, g, b], three finite numbers >= 0 (linear), got "),
+                  std::string::npos)
+            << bad;
+    EXPECT_TRUE(tools::isLightPropertyKey("intensity"));
+    EXPECT_TRUE(tools::isLightPropertyKey("color"));
+    EXPECT_FALSE(tools::isLightPropertyKey("resolution"));
+}
+
+// A light property lands on the scene's light, every other key is passed on for the plugins,
+// and a glTF light that another node places too is said to change there as well.
+TEST(LightOverrides, LightPropertiesSetTheScenesLightAndTheRestGoToThePlugins) {
+    engine::Scene scene;
+    scene.lights.resize(2);
+    scene.lights[0].name = "sun";
+    scene.lights[0].intensity = 3.0f;
+    scene.lights[1].intensity = 7.0f;  // unnamed: its instances take their nodes' names
+    scene.nodes.resize(3);
+    scene.nodes[1].name = "lamp_a";
+    scene.nodes[2].name = "lamp_b";
+    scene.lightInstances = {{0, 0}, {1, 1}, {2, 1}};
+    const std::vector<tools::LightOverride> options = {
+        tools::parseLightSetting("--light-set", "sun.intensity=5"),
+        tools::parseLightSetting("--light-set", "sun.resolution=512"),
+        tools::parseLightSetting("--light-set", "sun.color=[1,0.5,0.25]")};
+    std::vector<std::string> warnings;
+    const std::vector<tools::LightOverride> rest = tools::applyLightProperties(scene, options, warnings);
+    ASSERT_EQ(rest.size(), 1u);
+    EXPECT_EQ(rest[0].key, "resolution");
+    EXPECT_EQ(scene.lights[0].intensity, 5.0f);
+    EXPECT_EQ(scene.lights[0].color, glm::vec3(1.0f, 0.5f, 0.25f));
+    EXPECT_EQ(scene.lights[1].intensity, 7.0f);
+    EXPECT_TRUE(warnings.empty());
+
+    tools::applyLightProperties(scene, {tools::parseLightSetting("--light-set", "lamp_a.intensity=0")}, warnings);
+    EXPECT_EQ(scene.lights[1].intensity, 0.0f);
+    EXPECT_FALSE(scene.lights[1].emitsLight());
+    ASSERT_EQ(warnings.size(), 1u);
+    EXPECT_EQ(warnings[0], "--light-set lamp_a.intensity=0 also sets light \"lamp_b\": it places the same glTF light "
+                           "(intensity is the light's, shared by every node that places it)");
+}
+
 // "2" and "sun" are the same light once resolved: the repeat is found however it was typed.
 TEST(LightOverrides, TheSameLightAndKeyTwiceIsAnErrorNamingBoth) {
     const std::map<std::string, std::string> names = {{"sun", "sun"}, {"2", "sun"}, {"spot", "spot"}};
