@@ -1,5 +1,6 @@
-// engine-view without a window: saving settings in place (every other byte kept), the
-// script grammar and its errors, and the per-light edits the keys make.
+// engine-view without a window: saving settings (in place, every other byte kept; elsewhere,
+// with the files the scene refers to; as the other container), the script grammar and its
+// errors, and the per-light edits the keys make.
 #include "Controls.h"
 #include "DebugViews.h"
 #include "DepthImage.h"
@@ -7,6 +8,7 @@
 #include "OverlayText.h"
 #include "Playback.h"
 #include "SaveSettings.h"
+#include "SceneContainers.h"
 #include "Script.h"
 #include "ViewerState.h"
 
@@ -21,6 +23,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <sstream>
 
 #include <unistd.h>
@@ -115,22 +118,6 @@ TEST(SaveSettings, UnknownLightIsAnInputError) {
     EXPECT_THROW(replaceLightShadows(kGltf, {{7, nlohmann::json::object()}}, "test.gltf"), engine::InputError);
 }
 
-TEST(SaveSettings, ExternalFilesKeepTheScenesFolder) {
-    const auto scene = scratch("external.gltf");
-    std::ofstream(scene) << R"({"asset":{"version":"2.0"},"buffers":[{"uri":"external.bin","byteLength":4}],
-      "extensions":{"KHR_lights_punctual":{"lights":[{"type":"point"}]}}})";
-    const std::map<int, nlohmann::json> shadows = {{0, {{"variant", "woo"}}}};
-    try {
-        saveSceneSettings(scene, scratch("other/saved.gltf"), shadows);
-        FAIL() << "saving away from external.bin must fail";
-    } catch (const engine::InputError& error) {
-        EXPECT_NE(std::string(error.what()).find("external.bin"), std::string::npos) << error.what();
-    }
-    saveSceneSettings(scene, scratch("saved.gltf"), shadows);
-    EXPECT_EQ(lightsOf(readAll(scratch("saved.gltf")))[0]["extras"]["shadow"]["variant"], "woo");
-    EXPECT_THROW(saveSceneSettings(scene, scratch("saved.glb"), shadows), engine::InputError);  // container kept
-}
-
 TEST(SaveSettings, GlbKeepsItsBinaryChunk) {
     const std::string json = R"({"asset":{"version":"2.0"},"buffers":[{"byteLength":8}],)"
                              R"("extensions":{"KHR_lights_punctual":{"lights":[{"type":"spot"}]}}})";
@@ -152,6 +139,233 @@ TEST(SaveSettings, GlbKeepsItsBinaryChunk) {
     EXPECT_EQ(jsonLength % 4, 0u);
     EXPECT_EQ(lightsOf(out.substr(20, jsonLength))[0]["extras"]["shadow"]["resolution"], 512);
     EXPECT_EQ(out.substr(20 + jsonLength), glb.substr(20 + padded.size()));  // BIN chunk as it was
+}
+
+namespace {
+
+const std::filesystem::path kScenes = std::filesystem::path(CONTENT_DIR) / "scenes";
+
+// A fresh empty folder under the scratch folder.
+std::filesystem::path freshFolder(const std::string& name) {
+    const auto folder = scratch(name);
+    std::filesystem::remove_all(folder);
+    std::filesystem::create_directories(folder);
+    return folder;
+}
+
+// showcase.gltf and its showcase.bin in a folder of their own.
+std::filesystem::path showcaseIn(const std::string& folderName) {
+    const auto folder = freshFolder(folderName);
+    for (const char* name : {"showcase.gltf", "showcase.bin"})
+        std::filesystem::copy_file(kScenes / name, folder / name);
+    return folder / "showcase.gltf";
+}
+
+std::string base64Decode(const std::string& text) {
+    const std::string alphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    std::string bytes;
+    std::uint32_t bits = 0;
+    int count = 0;
+    for (char c : text) {
+        const std::size_t value = alphabet.find(c);
+        if (value == std::string::npos) break;
+        bits = (bits << 6) | static_cast<std::uint32_t>(value);
+        if ((count += 6) >= 8) {
+            count -= 8;
+            bytes += static_cast<char>((bits >> count) & 0xFF);
+        }
+    }
+    return bytes;
+}
+
+// masked_fence.gltf (a textured scene) with its data-URI image moved to the file
+// "textures/fence mask+1.png": a sub-folder, and a name whose URI needs escapes ('+' would
+// read as a space), so a copy must keep the URI and land at the decoded path.
+std::filesystem::path texturedFenceIn(const std::string& folderName) {
+    const auto folder = freshFolder(folderName);
+    std::filesystem::copy_file(kScenes / "masked_fence.bin", folder / "masked_fence.bin");
+    nlohmann::ordered_json document = nlohmann::ordered_json::parse(readAll(kScenes / "masked_fence.gltf"));
+    const std::string uri = document["images"][0]["uri"];
+    std::filesystem::create_directories(folder / "textures");
+    std::ofstream(folder / "textures" / "fence mask+1.png", std::ios::binary)
+        << base64Decode(uri.substr(uri.find(',') + 1));
+    document["images"][0]["uri"] = "textures/fence%20mask%2B1.png";
+    document["images"][0].erase("mimeType");  // a GLB needs one: taken from the PNG's bytes then
+    std::ofstream(folder / "fence.gltf") << document.dump(2);
+    return folder / "fence.gltf";
+}
+
+// The saved scene loads to the original, light `edited` excepted, whose extras.shadow is
+// `shadow`. Exact comparisons: a save copies or embeds the very bytes the original reads.
+void expectSameScene(const std::filesystem::path& originalPath, const std::filesystem::path& savedPath, int edited,
+                     const nlohmann::json& shadow) {
+    const engine::Scene original = engine::loadGltf(originalPath);
+    const engine::Scene saved = engine::loadGltf(savedPath);
+    ASSERT_EQ(saved.meshes.size(), original.meshes.size());
+    for (std::size_t m = 0; m < original.meshes.size(); ++m) {
+        ASSERT_EQ(saved.meshes[m].primitives.size(), original.meshes[m].primitives.size());
+        for (std::size_t p = 0; p < original.meshes[m].primitives.size(); ++p) {
+            const engine::Primitive& a = original.meshes[m].primitives[p];
+            const engine::Primitive& b = saved.meshes[m].primitives[p];
+            EXPECT_EQ(b.positions.size(), a.positions.size()) << "mesh " << m << " primitive " << p;
+            EXPECT_TRUE(b.positions == a.positions) << "mesh " << m << " primitive " << p;
+            EXPECT_TRUE(b.normals == a.normals) << "mesh " << m << " primitive " << p;
+            EXPECT_TRUE(b.texcoords == a.texcoords) << "mesh " << m << " primitive " << p;
+            EXPECT_EQ(b.indices, a.indices) << "mesh " << m << " primitive " << p;
+        }
+    }
+    EXPECT_EQ(saved.nodes.size(), original.nodes.size());
+    ASSERT_EQ(saved.images.size(), original.images.size());
+    for (std::size_t i = 0; i < original.images.size(); ++i) {
+        EXPECT_EQ(saved.images[i].width, original.images[i].width);
+        EXPECT_EQ(saved.images[i].rgba8, original.images[i].rgba8) << "image " << i;
+    }
+    ASSERT_EQ(saved.lights.size(), original.lights.size());
+    for (std::size_t l = 0; l < original.lights.size(); ++l) {
+        EXPECT_EQ(saved.lights[l].name, original.lights[l].name);
+        EXPECT_EQ(saved.lights[l].type, original.lights[l].type);
+        EXPECT_EQ(saved.lights[l].intensity, original.lights[l].intensity);
+        EXPECT_EQ(saved.lights[l].color, original.lights[l].color);
+        nlohmann::json extras = original.lights[l].extras;
+        if (static_cast<int>(l) == edited) extras["shadow"] = shadow;
+        EXPECT_EQ(saved.lights[l].extras, extras) << "light " << l;
+    }
+}
+
+std::vector<std::string> filesUnder(const std::filesystem::path& folder) {
+    std::vector<std::string> names;
+    for (const auto& entry : std::filesystem::recursive_directory_iterator(folder))
+        names.push_back(std::filesystem::relative(entry.path(), folder).string());
+    std::sort(names.begin(), names.end());
+    return names;
+}
+
+std::string errorOf(const std::function<void()>& action) {
+    try {
+        action();
+    } catch (const engine::InputError& error) {
+        return error.what();
+    }
+    return "no error";
+}
+
+const nlohmann::json kShadow = {{"variant", "woo"}, {"resolution", 512}};
+
+} // namespace
+
+TEST(SaveSettings, GltfSavedElsewhereTakesItsFilesAlong) {
+    const auto scene = showcaseIn("showcase_src");
+    const auto out = freshFolder("showcase_elsewhere") / "saved.gltf";
+    tools::checkSaveTarget(scene, out);
+    saveSceneSettings(scene, out, {{1, kShadow}});
+    EXPECT_EQ(filesUnder(out.parent_path()), (std::vector<std::string>{"saved.gltf", "showcase.bin"}));
+    EXPECT_EQ(readAll(out.parent_path() / "showcase.bin"), readAll(kScenes / "showcase.bin"));
+    expectSameScene(scene, out, 1, kShadow);
+
+    // Images too, into the sub-folder their URI names; the URI itself is kept.
+    const auto fence = texturedFenceIn("fence_src");
+    const auto fenceOut = freshFolder("fence_elsewhere") / "fence.gltf";
+    saveSceneSettings(fence, fenceOut, {{0, kShadow}});
+    EXPECT_EQ(filesUnder(fenceOut.parent_path()),
+              (std::vector<std::string>{"fence.gltf", "masked_fence.bin", "textures", "textures/fence mask+1.png"}));
+    EXPECT_EQ(nlohmann::json::parse(readAll(fenceOut))["images"][0]["uri"], "textures/fence%20mask%2B1.png");
+    expectSameScene(fence, fenceOut, 0, kShadow);
+}
+
+TEST(SaveSettings, GltfSavedAsGlbEmbedsBuffersAndImages) {
+    for (const auto& scene : {showcaseIn("glb_src"), texturedFenceIn("glb_fence_src"), kScenes / "masked_fence.gltf"}) {
+        SCOPED_TRACE(scene.string());
+        const auto out = freshFolder("glb_out") / "saved.glb";
+        saveSceneSettings(scene, out, {{0, kShadow}});
+        EXPECT_EQ(filesUnder(out.parent_path()), (std::vector<std::string>{"saved.glb"}));  // nothing beside it
+        const std::string bytes = readAll(out);
+        const tools::GlbChunks chunks = tools::splitGlb(bytes, out.string());
+        const nlohmann::json document = nlohmann::json::parse(chunks.json);
+        ASSERT_EQ(document["buffers"].size(), 1u);  // merged into the GLB-stored buffer
+        EXPECT_FALSE(document["buffers"][0].contains("uri"));
+        EXPECT_LE(document["buffers"][0]["byteLength"].get<std::size_t>(), chunks.bin.size());
+        for (const nlohmann::json& image : document.value("images", nlohmann::json::array())) {
+            EXPECT_FALSE(image.contains("uri"));
+            EXPECT_EQ(image["mimeType"], "image/png");
+        }
+        for (const nlohmann::json& view : document["bufferViews"]) EXPECT_EQ(view["buffer"], 0);
+        expectSameScene(scene, out, 0, kShadow);
+    }
+}
+
+TEST(SaveSettings, GlbSavedAsGltfWritesItsBinBeside) {
+    const auto glb = freshFolder("glb_made") / "fence model.glb";
+    saveSceneSettings(texturedFenceIn("gltf_fence_src"), glb, {});
+    const auto out = freshFolder("gltf_out") / "fence+model.gltf";
+    saveSceneSettings(glb, out, {{2, kShadow}});
+    EXPECT_EQ(filesUnder(out.parent_path()), (std::vector<std::string>{"fence+model.bin", "fence+model.gltf"}));
+    EXPECT_EQ(nlohmann::json::parse(readAll(out))["buffers"][0]["uri"], "fence%2Bmodel.bin");
+    expectSameScene(glb, out, 2, kShadow);
+    // Saved again over itself: the .bin beside it is the same, so it is left as it is.
+    saveSceneSettings(glb, out, {{2, kShadow}});
+    expectSameScene(glb, out, 2, kShadow);
+}
+
+TEST(SaveSettings, DifferentFileInTheWayIsRefused) {
+    const auto scene = showcaseIn("way_src");
+    const auto folder = freshFolder("way_out");
+    std::ofstream(folder / "showcase.bin") << "the user's own file";
+    const std::string message = errorOf([&] { tools::checkSaveTarget(scene, folder / "saved.gltf"); });
+    EXPECT_NE(message.find((folder / "showcase.bin").string()), std::string::npos) << message;
+    EXPECT_NE(message.find("a different file is already there"), std::string::npos) << message;
+    EXPECT_EQ(errorOf([&] { saveSceneSettings(scene, folder / "saved.gltf", {{0, kShadow}}); }), message);
+    EXPECT_EQ(readAll(folder / "showcase.bin"), "the user's own file");
+    EXPECT_FALSE(std::filesystem::exists(folder / "saved.gltf"));
+    // An identical file is no obstacle.
+    std::filesystem::copy_file(kScenes / "showcase.bin", folder / "showcase.bin",
+                               std::filesystem::copy_options::overwrite_existing);
+    saveSceneSettings(scene, folder / "saved.gltf", {{0, kShadow}});
+    expectSameScene(scene, folder / "saved.gltf", 0, kShadow);
+}
+
+TEST(SaveSettings, FileWhereASubFolderMustGoIsRefusedBeforeWriting) {
+    const auto fence = texturedFenceIn("blocked_src");
+    // A file where the image's sub-folder must go: nobody can write there, root included.
+    const auto blocked = freshFolder("blocked_out");
+    std::ofstream(blocked / "textures") << "in the way";
+    const std::string message = errorOf([&] { saveSceneSettings(fence, blocked / "fence.gltf", {{0, kShadow}}); });
+    EXPECT_NE(message.find("textures/fence mask+1.png"), std::string::npos) << message;
+    EXPECT_NE(message.find("is not a folder"), std::string::npos) << message;
+    EXPECT_EQ(filesUnder(blocked), (std::vector<std::string>{"textures"}));  // not even masked_fence.bin
+    EXPECT_EQ(errorOf([&] { tools::checkSaveTarget(fence, blocked / "fence.gltf"); }), message);  // at start too
+}
+
+TEST(SaveSettings, ReadOnlyDestinationFolderIsRefusedBeforeWriting) {
+    // access(2) grants root every folder, so only another user can see this refusal.
+    if (::geteuid() == 0) GTEST_SKIP() << "root writes into read-only folders: the refusal needs another user";
+    const auto fence = texturedFenceIn("read_only_src");
+    const auto readOnly = freshFolder("read_only_out");
+    std::filesystem::create_directories(readOnly / "textures");
+    std::filesystem::permissions(readOnly / "textures", std::filesystem::perms::owner_read |
+                                                            std::filesystem::perms::owner_exec);
+    const std::string readOnlyMessage = errorOf([&] { saveSceneSettings(fence, readOnly / "fence.gltf", {}); });
+    std::filesystem::permissions(readOnly / "textures", std::filesystem::perms::owner_all);
+    EXPECT_NE(readOnlyMessage.find("is not writable"), std::string::npos) << readOnlyMessage;
+    EXPECT_EQ(filesUnder(readOnly), (std::vector<std::string>{"textures"}));
+}
+
+TEST(SaveSettings, UriTheLoaderRefusesIsNeitherCopiedNorEmbedded) {
+    const auto folder = freshFolder("escape_src");
+    std::filesystem::create_directories(folder / "scene");
+    std::ofstream(folder / "outside.bin") << "1234";
+    const auto scene = folder / "scene" / "escape.gltf";
+    std::ofstream(scene) << R"({"asset":{"version":"2.0"},"buffers":[{"uri":"../outside.bin","byteLength":4}],
+      "extensions":{"KHR_lights_punctual":{"lights":[{"type":"point"}]}}})";
+    const auto out = freshFolder("escape_out");
+    for (const char* name : {"saved.gltf", "saved.glb"}) {
+        const std::string message = errorOf([&] { saveSceneSettings(scene, out / name, {{0, kShadow}}); });
+        EXPECT_NE(message.find("buffers[0]: uri '../outside.bin' climbs out of the scene's folder"), std::string::npos)
+            << message;
+    }
+    EXPECT_TRUE(filesUnder(out).empty());
+    // Saved beside it in the same container nothing is copied: the file keeps its URI as it was.
+    saveSceneSettings(scene, folder / "scene" / "saved.gltf", {{0, kShadow}});
+    EXPECT_EQ(lightsOf(readAll(folder / "scene" / "saved.gltf"))[0]["extras"]["shadow"], kShadow);
 }
 
 TEST(Script, ParsesCommandsAndSkipsComments) {
