@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # The options engine-view shares with engine-render: --light-set / --light give the frame
-# engine-render gives with the same options (and S saves them); --key-light and --ground
-# light a scene that has no light the same way (placement printed, same image); a scene
-# without lights is warned about; a --save-settings path that cannot be written is one
-# error at start, before any window (these runs have no X server at all).
+# engine-render gives with the same options (and S saves them, in any folder, as .gltf or
+# .glb, rendering the same); --key-light and --ground light a scene that has no light the
+# same way (placement printed, same image); a scene without lights is warned about; a
+# --save-settings path that cannot be written is one error at start, before any window
+# (these runs have no X server at all).
 source "$(dirname "$0")/common.sh"
 
 # A bad --save-settings: exit 1, one line naming the path and the reason, no window.
@@ -22,7 +23,11 @@ expect_start_error() {  # PATH EXPECTED_PART
 expect_start_error missing/saved.gltf "missing/saved.gltf: its folder $work/missing does not exist"
 mkdir -p adir.gltf
 expect_start_error adir.gltf "adir.gltf: is a folder, not a file to write"
-expect_start_error saved.glb "saved.glb: the scene is a .gltf: save it as one too"
+# Saved elsewhere, showcase.bin goes along; a different file already there is not replaced.
+mkdir -p other
+echo "not the scene's" > other/showcase.bin
+expect_start_error other/saved.gltf \
+  "other/showcase.bin: buffers[0] (uri 'showcase.bin'): a different file is already there: not replaced"
 
 # --light-set and --light: the same frame as engine-render's, and saved by S.
 cat > save.txt <<'SCRIPT'
@@ -49,6 +54,18 @@ if lights["sun"]["variant"] != "woo" or lights["point_light"]["resolution"] != 5
     sys.exit(f"FAIL: --light/--light-set not saved: {lights}")
 PY
 echo "ok: --light and --light-set give engine-render's frame and are saved"
+
+# Saved in another folder, as .gltf (showcase.bin copied beside it) and as .glb (buffers
+# embedded): engine-render of each gives the frame of the save beside the scene.
+mkdir -p elsewhere
+"$render" --config "$config" --scene saved.gltf --width 160 --height 120 --out render_saved.png > /dev/null
+for saved in elsewhere/saved.gltf elsewhere/saved.glb; do
+  run_view save.txt --light sun=woo --light-set point_light.resolution=512 --save-settings "$saved" > /dev/null
+  "$render" --config "$config" --scene "$saved" --width 160 --height 120 --out render_elsewhere.png > /dev/null
+  same render_saved.png render_elsewhere.png
+done
+cmp elsewhere/showcase.bin showcase.bin
+echo "ok: saved elsewhere as .gltf and as .glb, both render as the save beside the scene"
 
 # A bad --light-set: the plugin's refusal, naming the option, before the first frame (the
 # script's save has its target: a save with none is refused before the window opens too).

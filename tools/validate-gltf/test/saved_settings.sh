@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # saved_settings.sh VIEW RENDER COMPARE CONTENT NODE VALIDATOR_DIR: engine-view's
-# --save-settings output after settings changes on every light has 0 glTF-Validator errors.
-# (The saved file keeps the loaded one's container; content/ has no .glb to start from.)
+# --save-settings output after settings changes on every light has 0 glTF-Validator errors:
+# saved as .gltf beside the scene, as .glb in another folder (buffers embedded), and that
+# .glb saved again as .gltf (its binary chunk written beside it as a .bin).
 here=$(cd "$(dirname "$0")" && pwd)
 node=$5 validator=$6
 # engine-view's test harness: Xvfb, a scratch copy of the showcase, run_view.
@@ -17,4 +18,8 @@ save
 quit
 SCRIPT
 run_view script.txt --save-settings saved.gltf > /dev/null
-"$node" "$here/../validate.mjs" --validator "$validator" saved.gltf
+mkdir -p glb back
+run_view script.txt --save-settings glb/saved.glb > /dev/null
+xvfb "$view" --config "$config" --scene glb/saved.glb --width 160 --height 120 --script script.txt \
+  --save-settings back/saved.gltf > /dev/null
+"$node" "$here/../validate.mjs" --validator "$validator" saved.gltf glb/saved.glb back/saved.gltf
