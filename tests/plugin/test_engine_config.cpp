@@ -114,3 +114,25 @@ TEST(EngineConfig, BadInputNamesFileAndKey) {
     EXPECT_NE(configError(R"({"renderer":{"tone_mapping":"aces"}})").find("renderer.tone_mapping: \"aces\" is not"),
               std::string::npos);
 }
+
+TEST(EngineConfig, MsaaIsOneTwoFourOrEight) {
+    // Left out: 1, today's single-sampled image.
+    EXPECT_EQ(engine::parseEngineConfig("{}", "my/engine.json").renderer.msaa, 1);
+    for (const int samples : engine::kMsaaSampleCounts)
+        EXPECT_EQ(engine::parseEngineConfig(R"({"renderer":{"msaa":)" + std::to_string(samples) + "}}", "my/engine.json")
+                      .renderer.msaa,
+                  samples);
+    for (const char* samples : {"0", "3", "16", "-4", "4.0", "\"4\"", "true", "4294967300"}) {
+        const std::string message = configError(std::string(R"({"renderer":{"msaa":)") + samples + "}}");
+        EXPECT_NE(message.find("my/engine.json: renderer.msaa: must be 1, 2, 4 or 8"), std::string::npos) << message;
+        EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+    }
+    // The shade cache cannot serve a multisampled image: asked for both, the config says so;
+    // left to "auto", multisampling turns it off, whatever the renderer.
+    const std::string both = configError(R"({"renderer":{"msaa":4,"shade_cache":true}})");
+    EXPECT_NE(both.find("renderer.shade_cache: true needs renderer.msaa 1"), std::string::npos) << both;
+    engine::RendererConfig multisampled;
+    multisampled.msaa = 4;
+    EXPECT_FALSE(engine::decideSwitches(multisampled, "llvmpipe (LLVM 15.0.6, 256 bits)").shadeCache);
+    EXPECT_TRUE(engine::decideSwitches(engine::RendererConfig{}, "llvmpipe (LLVM 15.0.6, 256 bits)").shadeCache);
+}

@@ -5,6 +5,8 @@
 #include "engine/util/InstallLayout.h"
 #include "engine/util/JsonRead.h"
 
+#include <algorithm>
+#include <cstdint>
 
 namespace engine {
 
@@ -42,7 +44,7 @@ void readSwitch(const nlohmann::json& node, const char* key, const std::string& 
 
 RendererConfig parseRenderer(const nlohmann::json& node, const std::string& file) {
     json::requireKnownKeys(node,
-                           {"ambient", "clear_color", "exposure", "tone_mapping", "shade_cache", "light_footprints", "unrolled_light_sum",
+                           {"ambient", "clear_color", "exposure", "tone_mapping", "msaa", "shade_cache", "light_footprints", "unrolled_light_sum",
                             "check_gl_errors"},
                            file, "renderer");
     RendererConfig renderer;
@@ -63,7 +65,20 @@ RendererConfig parseRenderer(const nlohmann::json& node, const std::string& file
         else if (mapping == "pbr_neutral") renderer.toneMapping = RendererConfig::ToneMapping::PbrNeutral;
         else throwInputError(file, "renderer.tone_mapping", "\"" + mapping + "\" is not \"none\" or \"pbr_neutral\"");
     }
+    if (node.contains("msaa")) {
+        const nlohmann::json& entry = node["msaa"];
+        // Read wide: a huge integer must not wrap around to an accepted count.
+        if (!entry.is_number_integer() || entry.get<std::int64_t>() != static_cast<int>(entry.get<std::int64_t>()) ||
+            !isMsaaSampleCount(static_cast<int>(entry.get<std::int64_t>())))
+            throwInputError(file, "renderer.msaa", "must be " + msaaSampleCountsText() + " (samples per pixel), not " + entry.dump());
+        renderer.msaa = static_cast<int>(entry.get<std::int64_t>());
+    }
     readSwitch(node, "shade_cache", file, renderer.shadeCache);
+    // Asked for both, the user would silently get one: the shade cache cannot serve a
+    // multisampled lit pass (RendererConfig::msaa).
+    if (renderer.msaa > 1 && renderer.shadeCache.value_or(false))
+        throwInputError(file, "renderer.shade_cache",
+                        "true needs renderer.msaa 1 (a multisampled image has no shade cache); set it to \"auto\" or false");
     readSwitch(node, "light_footprints", file, renderer.lightFootprints);
     readSwitch(node, "unrolled_light_sum", file, renderer.unrolledLightSum);
     if (node.contains("check_gl_errors"))
@@ -79,9 +94,20 @@ bool isSoftwareRasterizer(std::string_view glRenderer) {
     return false;
 }
 
+std::string msaaSampleCountsText() {
+    std::string text;
+    for (std::size_t i = 0; i < kMsaaSampleCounts.size(); ++i)
+        text += (i == 0 ? "" : i + 1 == kMsaaSampleCounts.size() ? " or " : ", ") + std::to_string(kMsaaSampleCounts[i]);
+    return text;
+}
+
+bool isMsaaSampleCount(int samples) {
+    return std::find(kMsaaSampleCounts.begin(), kMsaaSampleCounts.end(), samples) != kMsaaSampleCounts.end();
+}
+
 RendererSwitches decideSwitches(const RendererConfig& config, std::string_view glRenderer) {
     const bool software = isSoftwareRasterizer(glRenderer);
-    return {config.shadeCache.value_or(software), config.lightFootprints.value_or(software),
+    return {config.msaa == 1 && config.shadeCache.value_or(software), config.lightFootprints.value_or(software),
             config.unrolledLightSum.value_or(software)};
 }
 

@@ -38,6 +38,17 @@ Texture Texture::create2DArray(GLenum internalFormat, int width, int height, int
     return texture;
 }
 
+Texture Texture::create2DMultisample(GLenum internalFormat, int width, int height, int samples) {
+    assert(width > 0 && height > 0 && samples > 1 && "Texture: empty or single-sampled multisample texture");
+    GLuint name = 0;
+    glCreateTextures(GL_TEXTURE_2D_MULTISAMPLE, 1, &name);
+    Texture texture(name, Ownership::Adopt,
+                    {GL_TEXTURE_2D_MULTISAMPLE, internalFormat, width, height, 1, 1, samples});
+    // Fixed locations: the colour and depth targets of one pass must sample the same points.
+    glTextureStorage2DMultisample(name, samples, internalFormat, width, height, GL_TRUE);
+    return texture;
+}
+
 Texture Texture::wrap(GLuint name, Ownership ownership) {
     GLint target = 0, levels = 0, internalFormat = 0, width = 0, height = 0;
     glGetTextureParameteriv(name, GL_TEXTURE_TARGET, &target);

@@ -28,6 +28,7 @@ std::string toString(const TextureDesc& desc) {
                        toString(desc.format);
     if (desc.layers != 1) text += " x" + std::to_string(desc.layers) + " layers";
     if (desc.cube) text += " cube";
+    if (desc.samples != 1) text += " " + std::to_string(desc.samples) + " samples";
     return text;
 }
 

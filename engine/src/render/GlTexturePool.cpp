@@ -28,6 +28,12 @@ std::uint32_t GlTexturePool::acquire(const TextureDesc& desc) {
             return entry.texture.id();
         }
     const GLenum format = internalFormatFor(desc.format);
+    if (desc.samples > 1) {
+        // A multisampled target is only drawn into and resolved: it has no sampler state to set.
+        textures_.push_back({desc, gl::Texture::create2DMultisample(format, desc.width, desc.height, desc.samples),
+                             true, frame_});
+        return textures_.back().texture.id();
+    }
     Entry entry{desc,
                 desc.cube        ? gl::Texture::createCube(format, desc.width)
                 : desc.layers > 1 ? gl::Texture::create2DArray(format, desc.width, desc.height, desc.layers)

@@ -12,6 +12,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 
 namespace engine {
@@ -171,15 +172,22 @@ void LitPass::addPass(Frame& frame, const std::string& name, ResourceHandle targ
     auto handles = std::make_shared<Handles>();
     handles->target = target;
     const ShadeCache::Plan* shadePlan = color && shadePlan_.layers > 0 ? &shadePlan_ : nullptr;
+    // Only the shaded image is multisampled: a per-light view's pixels are measured one by one.
+    const int samples = color ? config_.msaa : 1;
+    // The cache's layers are single-sampled outputs of this pass: decideSwitches turns the
+    // cache off with multisampling.
+    assert(samples == 1 || !shadePlan);
     frame.graph().addPass(
         name,
         [&](PassBuilder& builder) {
             if (shading)
                 for (ResourceHandle read : shading->reads) builder.read(read);
-            handles->depth = builder.create(
-                name + "_depth",
-                {frame.camera().width, frame.camera().height, TextureFormat::Depth32F});
-            handles->target = builder.write(target);
+            const int width = frame.camera().width, height = frame.camera().height;
+            handles->depth = builder.create(name + "_depth", {width, height, kLitDepthFormat, 1, false, samples});
+            // Multisampled, the pass draws into a transient of its own, resolved into `target` next.
+            handles->target = samples > 1
+                ? builder.create(name + "_multisampled", {width, height, kLitColorFormat, 1, false, samples})
+                : builder.write(target);
             PassTargets targets;
             const glm::vec4 clear = color ? glm::vec4(config_.clearColor, 1.0f) : glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
             targets.colors.push_back({handles->target, -1, std::array<float, 4>{clear.r, clear.g, clear.b, clear.a}});
@@ -218,6 +226,38 @@ void LitPass::addPass(Frame& frame, const std::string& name, ResourceHandle targ
                 glBindTextureUnit(ShadeCache::kTextureUnit, 0);
                 shadeCache_.commit(*shadePlan);
             }
+        });
+    if (samples > 1) addResolvePass(frame, name + "_resolve", handles->target, target);
+}
+
+void LitPass::addResolvePass(Frame& frame, const std::string& name, ResourceHandle drawn, ResourceHandle target) {
+    struct Handles { ResourceHandle drawn, target; };
+    auto handles = std::make_shared<Handles>();
+    frame.graph().addPass(
+        name,
+        [&](PassBuilder& builder) {
+            handles->drawn = builder.read(drawn);
+            handles->target = builder.write(target);
+            PassTargets targets;
+            targets.colors.push_back({handles->target, -1, std::nullopt});
+            builder.setTargets(targets);
+            PassState state;
+            state.depthTest = PassState::DepthTest::Off;
+            // With sRGB writes on, the GL resolves an sRGB image in linear light: each pixel is
+            // the coverage-weighted mean of its samples' tone-mapped radiance, then encoded.
+            state.srgbWrites = true;
+            builder.setState(state);
+        },
+        [this, handles](PassContext& context) {
+            const TextureDesc& desc = context.desc(handles->drawn);
+            const gl::Framebuffer& source = resolveSources_.get(
+                {{GL_COLOR_ATTACHMENT0, context.texture(handles->drawn), -1}}, "multisampled image of pass \"" +
+                                                                                  context.passName() + "\"");
+            // The pass's declared target, bound by the graph's executor.
+            GLint resolved = 0;
+            glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &resolved);
+            glBlitNamedFramebuffer(source.id(), static_cast<GLuint>(resolved), 0, 0, desc.width, desc.height, 0, 0,
+                                   desc.width, desc.height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
         });
 }
 

@@ -11,6 +11,20 @@
 
 namespace engine {
 
+int maxMsaaSamples() {
+    int most = 0;
+    glGetIntegerv(GL_MAX_SAMPLES, &most);
+    for (const TextureFormat format : {kLitColorFormat, kLitDepthFormat}) {
+        // GL_SAMPLES lists the counts in decreasing order: the first is the format's maximum.
+        GLint counts = 0, first = 0;
+        const GLenum internal = internalFormatFor(format);
+        glGetInternalformativ(GL_TEXTURE_2D_MULTISAMPLE, internal, GL_NUM_SAMPLE_COUNTS, 1, &counts);
+        if (counts > 0) glGetInternalformativ(GL_TEXTURE_2D_MULTISAMPLE, internal, GL_SAMPLES, 1, &first);
+        most = std::min(most, static_cast<int>(first));
+    }
+    return most;
+}
+
 namespace {
 
 // Which lights the shaded image took from the shade cache, which it recomputed (and
@@ -37,10 +51,33 @@ std::string currentGlRenderer() {
     return text ? text : "";
 }
 
+// An error, not a clamp: a user who asks for 8 samples and silently gets 4 gets a different
+// image from the same config on another machine, and cannot tell why; the message names the
+// most this GL offers, so the fix is one edit.
+void requireSupportedMsaa(const RendererConfig& config, const std::string& glRenderer) {
+    if (config.msaa <= 1) return;
+    const int most = maxMsaaSamples();
+    if (config.msaa <= most) return;
+    int allowed = 1;  // the largest count renderer.msaa accepts that this GL offers
+    for (const int samples : kMsaaSampleCounts)
+        if (samples <= most) allowed = std::max(allowed, samples);
+    throwInputError("", "renderer.msaa",
+                    std::to_string(config.msaa) + " samples asked for, but " +
+                        (glRenderer.empty() ? std::string("this GL") : glRenderer) + " offers at most " +
+                        std::to_string(most) + " for the shaded image's targets; use " + std::to_string(allowed) +
+                        " or less");
+}
+
+// The config, checked against the current context.
+const RendererConfig& supportedConfig(const RendererConfig& config) {
+    requireSupportedMsaa(config, currentGlRenderer());
+    return config;
+}
+
 } // namespace
 
 Renderer::Renderer(const RendererConfig& config, std::vector<RenderPlugin*> plugins)
-    : config_(config),
+    : config_(supportedConfig(config)),
       switches_(decideSwitches(config, currentGlRenderer())),
       plugins_(std::move(plugins)),
       litPass_(std::make_unique<LitPass>(config, switches_)) {}
@@ -85,14 +122,14 @@ FrameResult Renderer::renderFrame(const FrameRequest& request) {
     const auto start = std::chrono::steady_clock::now();
     const int width = request.camera.width, height = request.camera.height;
     if (!color_.id() || color_.width() != width || color_.height() != height)
-        color_ = gl::Texture::create2D(GL_SRGB8_ALPHA8, width, height);
+        color_ = gl::Texture::create2D(internalFormatFor(kLitColorFormat), width, height);
 
     // Skinned and morphed instances posed since the last frame (the scene is the caller's).
     gpu_->updateDeformed(*scene_);
     RenderGraph graph;
     Frame frame(*scene_, *gpu_, graph, request.camera, frameIndex_++);
     const ResourceHandle color =
-        graph.importTexture("scene_color", {width, height, TextureFormat::SRGB8_A8}, color_.id());
+        graph.importTexture("scene_color", {width, height, kLitColorFormat}, color_.id());
     for (RenderPlugin* plugin : plugins_) {
         // A plugin's bad pass declaration (unknown resource, second writer...) is the
         // plugin's fault, not the scene's: say which plugin, not only which pass.

@@ -4,14 +4,15 @@
 //   "plugin_dirs": ["relative/or/absolute/dir", ...],     optional; relative to the config
 //   "plugins": [ {"library": "shadowmap_plugin", "settings": {...}} ],
 //   "renderer": {"ambient": [r,g,b], "clear_color": [r,g,b],          optional
-//                "shade_cache": "auto", "light_footprints": "auto", "unrolled_light_sum": "auto",
-//                "check_gl_errors": false}
+//                "msaa": 1, "shade_cache": "auto", "light_footprints": "auto",
+//                "unrolled_light_sum": "auto", "check_gl_errors": false}
 // }
 // Unknown keys are errors (a typo must not silently change nothing). Where plugins are
 // searched: PluginHost::searchDirectories (plugin_dirs first).
 #include <glm/glm.hpp>
 #include <nlohmann/json.hpp>
 
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <optional>
@@ -30,6 +31,13 @@ struct PluginConfig {
 // below): 1 / (1.2 * 2^ev100).
 inline float exposureFromEv100(double ev100) { return static_cast<float>(1.0 / (1.2 * std::exp2(ev100))); }
 
+// The sample counts renderer.msaa accepts: 1 (no multisampling) and the powers of two GPUs
+// offer, up to 8 (GL 4.5 guarantees at least 4; the renderer checks what its GL offers).
+inline constexpr std::array<int, 4> kMsaaSampleCounts{1, 2, 4, 8};
+bool isMsaaSampleCount(int samples);
+// "1, 2, 4 or 8", for messages.
+std::string msaaSampleCountsText();
+
 struct RendererConfig {
     glm::vec3 ambient{0.04f};      // linear ambient light, multiplied by albedo
     glm::vec3 clearColor{0.0f};    // linear background
@@ -44,6 +52,14 @@ struct RendererConfig {
         PbrNeutral,  // Khronos PBR Neutral: keeps base colors up to 0.8 as they are, then rolls off
     };
     ToneMapping toneMapping = ToneMapping::None;
+    // Samples per pixel of the shaded image (kMsaaSampleCounts). Above 1 the lit pass draws
+    // into multisampled colour and depth targets, shading once per pixel and fragment
+    // (not per sample), tone mapping each fragment as it shades it, and resolves them into the
+    // single-sampled image: geometry edges are antialiased, the shade inside a surface is as
+    // at 1. Per-pixel outputs (shadow masks, comparison views, the truth's surface capture)
+    // stay single-sampled. Multisampling turns the shade cache off: its layers are extra
+    // single-sampled outputs of the lit pass, which a multisampled pass cannot have.
+    int msaa = 1;
     // The three switches made for llvmpipe (docs/gpu.md). Unset ("auto" in the config file),
     // each is decided for the GL renderer by decideSwitches: on for a software rasterizer, off
     // on a GPU.
@@ -83,7 +99,8 @@ bool isSoftwareRasterizer(std::string_view glRenderer);
 // The config's switches, each unset one decided for the renderer named by glRenderer
 // (GL_RENDERER): on for a software rasterizer, where each was measured to pay; off on a GPU,
 // where on an NVIDIA H200 (docs/gpu.md) they saved no median frame time and their program
-// variants compiled after warm-up, in frames of 50 to 660 ms.
+// variants compiled after warm-up, in frames of 50 to 660 ms. The shade cache is off with
+// msaa above 1 (RendererConfig::msaa).
 RendererSwitches decideSwitches(const RendererConfig& config, std::string_view glRenderer);
 
 struct EngineConfig {

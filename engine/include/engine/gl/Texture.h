@@ -24,6 +24,7 @@ struct TextureInfo {
     int height = 0;
     int levels = 0;
     int layers = 1;  // array layers (2D arrays); 1 otherwise
+    int samples = 1;  // samples per pixel (GL_TEXTURE_2D_MULTISAMPLE); 1 otherwise
 };
 } // namespace detail
 
@@ -39,6 +40,11 @@ public:
     // peeling, read with texelFetch on a sampler2DArray).
     static Texture create2DArray(GLenum internalFormat, int width, int height, int layers,
                                  int levels = 1);
+
+    // A multisampled render target (GL_TEXTURE_2D_MULTISAMPLE) of `samples` per pixel, at
+    // fixed sample locations: drawn into and resolved with glBlitFramebuffer, never sampled
+    // with filtering (it has no sampler state).
+    static Texture create2DMultisample(GLenum internalFormat, int width, int height, int samples);
 
     // Takes an existing texture object (it must have a target, i.e. have been bound or
     // created with glCreateTextures); target, format and size of level 0 are queried.
@@ -56,6 +62,7 @@ public:
     int height() const { return info().height; }
     int levels() const { return info().levels; }
     int layers() const { return info().layers; }
+    int samples() const { return info().samples; }
 
 private:
     using Handle::Handle;

@@ -3,9 +3,12 @@
 // lit.frag, the plugin's visibility hook inserted. It also draws the shadow-mask views
 // (one light's shade as gray) with the same program, so masks show exactly what shading
 // used.
+// With RendererConfig::msaa above 1 the shaded image is drawn multisampled and resolved by a
+// pass of its own; the per-light views stay single-sampled: their pixels are measured.
 // The pieces it is made of: its programs (LitPrograms.h), its lights' block (LitLights.h),
 // the shade cache (ShadeCache.h) and the split by light footprints (FootprintSplit.h).
 #include "engine/config/EngineConfig.h"
+#include "engine/gl/FramebufferCache.h"
 #include "engine/gl/Program.h"
 #include "engine/render/Frame.h"
 #include "engine/render/LitLights.h"
@@ -20,6 +23,11 @@
 #include <vector>
 
 namespace engine {
+
+// The shaded image's format (8-bit sRGB, as read back and displayed), and the depth format
+// of every lit pass.
+inline constexpr TextureFormat kLitColorFormat = TextureFormat::SRGB8_A8;
+inline constexpr TextureFormat kLitDepthFormat = TextureFormat::Depth32F;
 
 class LitPass {
 public:
@@ -49,6 +57,8 @@ public:
 
 private:
     void addPass(Frame& frame, const std::string& name, ResourceHandle target, LitOutput output, int maskSlot);
+    // A pass resolving the multisampled `drawn` into `target` (glBlitFramebuffer).
+    void addResolvePass(Frame& frame, const std::string& name, ResourceHandle drawn, ResourceHandle target);
     // A pass's programs by material variant; null where no primitive of the scene needs it.
     using Variants = std::array<const gl::Program*, kMaterialFeatureCombinations>;
     // A rectangle of the target drawn with programs of its own: the shaded image's lights
@@ -73,6 +83,7 @@ private:
     std::vector<int> footprintLimitedLights_;
     int shadingRegionCount_ = 1;
     std::uint64_t sceneGeneration_ = 0;
+    gl::FramebufferCache resolveSources_;  // the multisampled images the resolve reads
 };
 
 } // namespace engine

@@ -81,6 +81,11 @@ struct FrameResult {
     PassWork shadowPassWork(const ShadowView& view) const;
 };
 
+// The most samples per pixel renderer.msaa may ask of the current GL context (the lit
+// pass's colour and depth formats both offer that many); a Renderer made with more throws
+// InputError naming renderer.msaa, the request and this maximum.
+int maxMsaaSamples();
+
 class Renderer {
 public:
     Renderer(const RendererConfig& config, std::vector<RenderPlugin*> plugins);
