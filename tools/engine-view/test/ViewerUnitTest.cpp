@@ -293,6 +293,26 @@ TEST(SaveSettings, GltfSavedAsGlbEmbedsBuffersAndImages) {
     }
 }
 
+TEST(SaveSettings, DataUriBuffersAreDecodedIntoTheGlb) {
+    // Two buffers, one a data URI (bytes 1 2 3) and one a file (4 bytes), each with a view:
+    // merged, the second starts at the next multiple of 4 and its view's offset follows.
+    const auto folder = freshFolder("data_uri_src");
+    std::ofstream(folder / "four.bin", std::ios::binary) << "WXYZ";
+    std::ofstream(folder / "data.gltf") << R"({"asset":{"version":"2.0"},
+      "buffers":[{"uri":"data:application/octet-stream;base64,AQID","byteLength":3},{"uri":"four.bin","byteLength":4}],
+      "bufferViews":[{"buffer":0,"byteLength":3},{"buffer":1,"byteOffset":1,"byteLength":3}],
+      "extensions":{"KHR_lights_punctual":{"lights":[{"type":"point"}]}},"extensionsUsed":["KHR_lights_punctual"]})";
+    const auto out = freshFolder("data_uri_out") / "data.glb";
+    saveSceneSettings(folder / "data.gltf", out, {{0, kShadow}});
+    const tools::GlbChunks chunks = tools::splitGlb(readAll(out), out.string());
+    EXPECT_EQ(chunks.bin, std::string("\x01\x02\x03\0WXYZ", 8));
+    const nlohmann::json document = nlohmann::json::parse(chunks.json);
+    EXPECT_EQ(document["buffers"], nlohmann::json::parse(R"([{"byteLength":8}])"));
+    EXPECT_EQ(document["bufferViews"], nlohmann::json::parse(R"([{"buffer":0,"byteLength":3,"byteOffset":0},
+                                                                   {"buffer":0,"byteOffset":5,"byteLength":3}])"));
+    EXPECT_EQ(engine::loadGltf(out).lights.at(0).extras["shadow"], kShadow);
+}
+
 TEST(SaveSettings, GlbSavedAsGltfWritesItsBinBeside) {
     const auto glb = freshFolder("glb_made") / "fence model.glb";
     saveSceneSettings(texturedFenceIn("gltf_fence_src"), glb, {});
