@@ -11,6 +11,12 @@
 
 namespace tools {
 
+// The image size engine-render renders and engine-view opens when none is given. shadowmap-tune
+// measures at it too: a shadow setting's error depends on the size it is seen at (a coarse map
+// scores well on a small image and shows its texels on a large one), so the tuner's default
+// choice holds for the picture the user will look at.
+constexpr int kDefaultImageWidth = 1280, kDefaultImageHeight = 720;
+
 // A decimal integer in [minimum, maximum]: no sign games, no trailing text, no overflow.
 int parseInteger(const std::string& flag, const std::string& text, int minimum, int maximum);
 

@@ -1,5 +1,6 @@
 #include "SaveSettings.h"
 
+#include "AssetExtras.h"
 #include "JsonEdits.h"
 #include "SceneContainers.h"
 
@@ -282,10 +283,13 @@ void checkSaveTarget(const fs::path& scene, const fs::path& out) {
 }
 
 void saveSceneSettings(const fs::path& scene, const fs::path& out, const std::map<int, nlohmann::json>& shadows,
-                       const std::vector<AddedLight>& added) {
+                       const std::vector<AddedLight>& added,
+                       const std::map<std::string, nlohmann::json>& assetExtras) {
     const SceneFile file = readScene(scene);
     const SavePlan plan = planSave(scene, file, out);
-    const std::string edited = addLights(replaceLightShadows(file.json, shadows, scene.string()), added, scene.string());
+    const std::string edited = setAssetExtras(
+        addLights(replaceLightShadows(file.json, shadows, scene.string()), added, scene.string()), assetExtras,
+        scene.string());
 
     std::string result;
     if (plan.glb == file.glb && !file.glb) {

@@ -42,8 +42,10 @@ void checkSaveTarget(const std::filesystem::path& scene, const std::filesystem::
 
 // `shadows`: glTF light index (KHR_lights_punctual.lights[i]) -> its new extras.shadow.
 // `added`: lights the tool added to the scene, written into the file too (AddedLights.h).
+// `assetExtras`: members set in asset.extras (AssetExtras.h), e.g. what the settings were tuned for.
 void saveSceneSettings(const std::filesystem::path& scene, const std::filesystem::path& out,
-                       const std::map<int, nlohmann::json>& shadows, const std::vector<AddedLight>& added = {});
+                       const std::map<int, nlohmann::json>& shadows, const std::vector<AddedLight>& added = {},
+                       const std::map<std::string, nlohmann::json>& assetExtras = {});
 
 // The JSON text with those edits, every other byte kept. Throws InputError naming
 // `fileName` when a light index does not exist, and std::logic_error if the result does

@@ -56,8 +56,12 @@ std::string reportText(const TuneSummary& summary, const std::vector<SettingDime
     for (std::size_t i = 0; i < summary.choices.size(); ++i) {
         const LightChoice& choice = summary.choices[i];
         const evaluation::RankingTruth truth = summary.truths.at(i);
-        text += "light \"" + summary.names[i] + "\": " + describe(choice.before.setting, space) + " -> " +
-                (choice.changed ? describe(choice.chosen.setting, space) : "unchanged") + "\n";
+        // A light that keeps its setting says why: nothing measured beat it at this size.
+        text += "light \"" + summary.names[i] + "\": " + describe(choice.before.setting, space) +
+                (choice.changed ? " -> " + describe(choice.chosen.setting, space)
+                                : " kept: no setting measured beats it at " + std::to_string(summary.width) + "x" +
+                                      std::to_string(summary.height)) +
+                "\n";
         text += format("  shadow time %.2f -> %.2f ms, ", choice.before.ms, choice.chosen.ms) +
                 evaluation::rankedFigure(truth) + format(" %.3f%% -> %.3f%%", choice.before.error, choice.chosen.error) +
                 format(" (acne %.3f%% -> %.3f%%", choice.before.acne, choice.chosen.acne) +
@@ -66,14 +70,20 @@ std::string reportText(const TuneSummary& summary, const std::vector<SettingDime
                                       choice.chosen.penumbraError)
                              : "") +
                 ")\n";
+        if (choice.changed && choice.chosen.error > choice.before.error)
+            text += summary.goal.kind == Goal::Kind::Budget
+                        ? format("  the file's own setting errs less but takes %.2f ms, over the %g ms budget\n",
+                                 choice.before.ms, summary.goal.limit)
+                        : format("  faster within --max-error %g%%; the file's own setting (%.3f%%) errs less\n",
+                                 summary.goal.limit, choice.before.error);
         if (choice.offsetFit) text += offsetFitText(*choice.offsetFit, space);
     }
     const long grid = summary.gridPerLight;
     char line[512];
     std::snprintf(line, sizeof line,
-                  "search: %d renders of %d view(s) for %zu light(s) at once; the full grid is %ld settings per "
-                  "light, as many renders (the search took %.1f%% of it)\n",
-                  summary.renders, summary.views, summary.choices.size(), grid,
+                  "search: %d renders of %d view(s) at %dx%d for %zu light(s) at once; the full grid is %ld "
+                  "settings per light, as many renders (the search took %.1f%% of it)\n",
+                  summary.renders, summary.views, summary.width, summary.height, summary.choices.size(), grid,
                   grid > 0 ? 100.0 * summary.renders / static_cast<double>(grid) : 0.0);
     text += line;
     return text;
@@ -109,6 +119,8 @@ nlohmann::json reportJson(const TuneSummary& summary, const std::vector<SettingD
     return {{"goal", summary.goal.kind == Goal::Kind::Budget ? "budget_ms" : "max_error"},
             {"limit", summary.goal.limit},
             {"views", summary.views},
+            {"width", summary.width},
+            {"height", summary.height},
             {"renders", summary.renders},
             {"grid_per_light", summary.gridPerLight},
             {"lights", lights}};

@@ -23,6 +23,7 @@ struct TuneSummary {
     int renders = 0;                      // trials run, the first (current settings) included
     long gridPerLight = 0;                // settings in the full grid, per light
     int views = 0;
+    int width = 0, height = 0;            // the image size every view was measured at
     Goal goal;
 };
 

@@ -10,6 +10,7 @@
 #include "TuneShards.h"
 #include "TuneViews.h"
 
+#include "AssetExtras.h"
 #include "SaveSettings.h"
 #include "SceneLighting.h"
 #include "SavedShadow.h"
@@ -57,10 +58,10 @@ void refuseInfeasible(const TuneOptions& options, const std::string& name, const
 
 // --merge: every partial result is read and checked before the scene is written.
 int merge(const TuneOptions& options) {
-    const std::map<int, nlohmann::json> shadows = mergePartialResults(options.merge, options.scene);
-    tools::saveSceneSettings(options.scene, options.out, shadows);
+    const MergedResult merged = mergePartialResults(options.merge, options.scene);
+    tools::saveSceneSettings(options.scene, options.out, merged.shadows, {}, {{tools::kTunedForKey, merged.tunedFor}});
     std::fprintf(stderr, "shadowmap-tune: merged %zu partial results; wrote %s (%zu light(s) changed)\n",
-                 options.merge.size(), options.out.c_str(), shadows.size());
+                 options.merge.size(), options.out.c_str(), merged.shadows.size());
     return 0;
 }
 
@@ -126,7 +127,8 @@ int run(const TuneOptions& options, std::unique_ptr<engine::GlContext>& context,
     const std::vector<LightChoice> choices = searchSettings(measurer, space, goal, searched);
 
     TuneSummary summary{sceneMeasurer.names(), sceneMeasurer.rankingTruths(), choices, {}, trial.renders(),
-                        gridSize(space, kOffsetLatticeSize), static_cast<int>(views.size()), goal};
+                        gridSize(space, kOffsetLatticeSize), static_cast<int>(views.size()), options.width,
+                        options.height, goal};
     for (int light = 0; light < lights; ++light) summary.measured.push_back(measurer.measured(light));
     std::fputs(reportText(summary, space).c_str(), stdout);
     std::fflush(stdout);  // before stderr's lines
@@ -149,8 +151,11 @@ int run(const TuneOptions& options, std::unique_ptr<engine::GlContext>& context,
         if (index == keyLight) added.push_back(tools::addedLightOf(scene, keyLightNode, saved));
         else shadows[index] = saved;
     }
-    if (sharded) engine::writeFileAtomically(options.out, partialResult(options.scene, options.shard, shadows));
-    else tools::saveSceneSettings(options.scene, options.out, shadows, added);
+    // What the choice holds for, recorded in the tuned file (AssetExtras.h).
+    const nlohmann::json tunedFor = {{"width", options.width}, {"height", options.height}};
+    if (sharded)
+        engine::writeFileAtomically(options.out, partialResult(options.scene, options.shard, tunedFor, shadows));
+    else tools::saveSceneSettings(options.scene, options.out, shadows, added, {{tools::kTunedForKey, tunedFor}});
     if (!options.report.empty())
         engine::writeFileAtomically(options.report, reportJson(summary, space).dump(2) + "\n");
     std::fprintf(stderr, "shadowmap-tune: wrote %s (%zu light(s) changed%s)\n", options.out.c_str(), shadows.size(),

@@ -1,0 +1,52 @@
+#include "AssetExtras.h"
+
+#include "JsonEdits.h"
+
+#include "engine/util/Error.h"
+
+#include <stdexcept>
+
+namespace tools {
+
+std::string setAssetExtras(const std::string& json, const std::map<std::string, nlohmann::json>& extras,
+                           const std::string& fileName) {
+    if (extras.empty()) return json;
+    nlohmann::json expected = nlohmann::json::parse(json);
+    const JsonSpan root = scanJson(json);
+    const JsonSpan* asset = root.member("asset");
+    // The loader refuses a file without an asset object, so this is a file edited since.
+    if (!asset || asset->kind != '{') engine::throwInputError(fileName, "asset", "is not an object");
+    const JsonSpan* assetExtras = asset->member("extras");
+    if (assetExtras && assetExtras->kind != '{') engine::throwInputError(fileName, "asset.extras", "is not an object");
+    std::vector<JsonEdit> edits;
+    if (!assetExtras) {
+        edits.push_back(appendMember(*asset, "extras", nlohmann::json(extras).dump()));
+    } else {
+        for (const auto& [key, value] : extras) {
+            if (const JsonSpan* old = assetExtras->member(key)) edits.push_back({old->begin, old->end, value.dump()});
+            else edits.push_back(appendMember(*assetExtras, key, value.dump()));
+        }
+    }
+    for (const auto& [key, value] : extras) expected["asset"]["extras"][key] = value;
+    std::string out = applyJsonEdits(json, std::move(edits));
+    if (nlohmann::json::parse(out) != expected)
+        throw std::logic_error("recording asset.extras in " + fileName + " changed more than those members");
+    return out;
+}
+
+std::optional<TunedSize> tunedSize(const nlohmann::json& document) {
+    const auto asset = document.find("asset");
+    if (asset == document.end() || !asset->is_object()) return std::nullopt;
+    const auto extras = asset->find("extras");
+    if (extras == asset->end() || !extras->is_object()) return std::nullopt;
+    const auto tuned = extras->find(kTunedForKey);
+    if (tuned == extras->end() || !tuned->is_object()) return std::nullopt;
+    const auto width = tuned->find("width"), height = tuned->find("height");
+    if (width == tuned->end() || height == tuned->end() || !width->is_number_integer() || !height->is_number_integer())
+        return std::nullopt;
+    const TunedSize size{width->get<int>(), height->get<int>()};
+    if (size.width <= 0 || size.height <= 0) return std::nullopt;
+    return size;
+}
+
+} // namespace tools

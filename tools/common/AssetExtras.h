@@ -1,0 +1,28 @@
+#pragma once
+// A scene file's asset.extras members, edited in place like the lights' settings
+// (SaveSettings.h): the tools record there what a file's settings were made for, e.g.
+// shadowmap-tune's "shadowmap_tune": {"width": 1280, "height": 720, ...}, the image size its
+// choice was measured at, which engine-render compares with the size it renders.
+#include <nlohmann/json.hpp>
+
+#include <map>
+#include <optional>
+#include <string>
+
+namespace tools {
+
+// The JSON text with asset.extras[key] = value for each entry (asset.extras created when
+// missing, an existing member replaced), every other byte kept. Throws InputError naming
+// `fileName` when asset or asset.extras is not an object, and std::logic_error if the result
+// does not parse to the original document with the edits (our bug).
+std::string setAssetExtras(const std::string& json, const std::map<std::string, nlohmann::json>& extras,
+                           const std::string& fileName);
+
+// What shadowmap-tune recorded in a loaded document: the image size it measured at.
+struct TunedSize {
+    int width = 0, height = 0;
+};
+inline constexpr const char* kTunedForKey = "shadowmap_tune";
+std::optional<TunedSize> tunedSize(const nlohmann::json& document);
+
+} // namespace tools
