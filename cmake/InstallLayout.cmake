@@ -1,6 +1,6 @@
 # Where an install puts things (GNUInstallDirs), decided before the targets so libengine can
 # be told where its plugins and data sit relative to its own folder (util/InstallLayout.h).
-#   bin/                                   engine-render, engine-view, shadowmap-bench, -stress
+#   bin/                                   the tools (ENGINE_INSTALLED_TOOLS, ShadowEngineInstall.cmake)
 #   lib[/<multiarch>]/libengine.so*        the engine (+ libshadowmap_settings.a, CMake files)
 #   lib[/<multiarch>]/shadow-engine/plugins/shadowmap_plugin.so
 #                                          private modules only the engine dlopens: out of the

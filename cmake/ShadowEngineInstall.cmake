@@ -3,14 +3,17 @@
 # user's view of both.
 include(CMakePackageConfigHelpers)
 
+# Every program a user runs (the manual's tools); the build's own helpers (microbenchmarks,
+# fuzzers, test programs) stay out. tests/install/check_tools.sh runs each installed one.
+set(ENGINE_INSTALLED_TOOLS engine-render engine-view shadowmap-bench shadowmap-stress shadowmap-tune soak)
+
 # Programs and the plugin find libengine through a RUNPATH relative to themselves ($ORIGIN),
 # so a relocated install (staged, DESTDIR, an unpacked .deb) runs as it is. In the .deb it
 # points at /usr/lib/<multiarch>, where the linker looks anyway.
 file(RELATIVE_PATH _bin_to_lib ${CMAKE_INSTALL_FULL_BINDIR} ${CMAKE_INSTALL_FULL_LIBDIR})
 file(RELATIVE_PATH _plugin_to_lib ${CMAKE_INSTALL_PREFIX}/${ENGINE_INSTALL_PLUGIN_DIR}
      ${CMAKE_INSTALL_FULL_LIBDIR})
-set_target_properties(engine-render engine-view shadowmap-bench shadowmap-stress
-  PROPERTIES INSTALL_RPATH "$ORIGIN/${_bin_to_lib}")
+set_target_properties(${ENGINE_INSTALLED_TOOLS} PROPERTIES INSTALL_RPATH "$ORIGIN/${_bin_to_lib}")
 set_target_properties(shadowmap_plugin PROPERTIES INSTALL_RPATH "$ORIGIN/${_plugin_to_lib}")
 
 install(TARGETS engine shadowmap_settings EXPORT ShadowEngineTargets
@@ -18,8 +21,7 @@ install(TARGETS engine shadowmap_settings EXPORT ShadowEngineTargets
   ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT development
   INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 install(TARGETS shadowmap_plugin LIBRARY DESTINATION ${ENGINE_INSTALL_PLUGIN_DIR} COMPONENT runtime)
-install(TARGETS engine-render engine-view shadowmap-bench shadowmap-stress
-  RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT runtime)
+install(TARGETS ${ENGINE_INSTALLED_TOOLS} RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT runtime)
 
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/engine/include/ ${PROJECT_SOURCE_DIR}/plugins/include/
                   ${PROJECT_SOURCE_DIR}/shadowmap_plugin/include/
