@@ -1,8 +1,10 @@
 #include "AssetExtras.h"
 
 #include "JsonEdits.h"
+#include "SceneContainers.h"
 
 #include "engine/util/Error.h"
+#include "engine/util/InputFile.h"
 
 #include <stdexcept>
 
@@ -47,6 +49,22 @@ std::optional<TunedSize> tunedSize(const nlohmann::json& document) {
     const TunedSize size{width->get<int>(), height->get<int>()};
     if (size.width <= 0 || size.height <= 0) return std::nullopt;
     return size;
+}
+
+std::optional<TunedSize> readTunedSize(const std::filesystem::path& scene) {
+    try {
+        std::string json = engine::readWholeFile(scene, "the scene");
+        if (json.size() >= 20 && json.compare(0, 4, "glTF") == 0) json = splitGlb(json, scene.string()).json;
+        const nlohmann::json document = nlohmann::json::parse(json, nullptr, false);
+        return document.is_discarded() ? std::nullopt : tunedSize(document);
+    } catch (const engine::InputError&) {
+        return std::nullopt;
+    }
+}
+
+bool farFromTunedSize(const TunedSize& tuned, int width, int height) {
+    const double ratio = (static_cast<double>(width) * height) / (static_cast<double>(tuned.width) * tuned.height);
+    return ratio > 2.0 || ratio < 0.5;
 }
 
 } // namespace tools

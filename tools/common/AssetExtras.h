@@ -5,6 +5,7 @@
 // choice was measured at, which engine-render compares with the size it renders.
 #include <nlohmann/json.hpp>
 
+#include <filesystem>
 #include <map>
 #include <optional>
 #include <string>
@@ -24,5 +25,13 @@ struct TunedSize {
 };
 inline constexpr const char* kTunedForKey = "shadowmap_tune";
 std::optional<TunedSize> tunedSize(const nlohmann::json& document);
+// The same read from a scene file (.gltf or .glb: only its JSON is read); nullopt when the
+// file has no such record or cannot be read (the loader has its own, clear errors).
+std::optional<TunedSize> readTunedSize(const std::filesystem::path& scene);
+
+// Whether a picture of `width` x `height` is far from the size the settings were tuned at:
+// more than twice or less than half its pixels, where a map's texels on screen grow or shrink
+// by more than a factor √2 on each axis and the tuner's ranking may no longer hold.
+bool farFromTunedSize(const TunedSize& tuned, int width, int height);
 
 } // namespace tools
