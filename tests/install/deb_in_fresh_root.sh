@@ -61,6 +61,9 @@ chroot "$root" /usr/bin/env -i HOME=/root PATH=/usr/local/sbin:/usr/local/bin:/u
     ls -l x.png default-config.png t.png
     shadowmap-bench --scene \$data/scenes/showcase.gltf --variants standard --resolutions 512 --depth-formats d24 --filters pcf --frames 1 --width 160 --height 120 --out bench
     head -3 bench/results.csv
+    cp \$data/scenes/showcase.gltf \$data/scenes/showcase.bin .
+    shadowmap-tune --scene showcase.gltf --budget-ms 100000 --out tuned.gltf --width 160 --height 120 --frames 1 --views orbit:1 --variants standard --resolutions 512 --depth-formats d24 --filters pcf
+    test -s tuned.gltf
     echo '{\"plugins\": [{\"library\": \"no_such_plugin\"}]}' > missing.json
     if ENGINE_PLUGIN_PATH=/opt/a:/opt/b engine-render --config missing.json --scene \$data/scenes/showcase.gltf --out y.png; then exit 1; fi
   "
