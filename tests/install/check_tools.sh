@@ -37,6 +37,7 @@ cp "$data/scenes/showcase.gltf" "$data/scenes/showcase.bin" .
 [[ -s render.png ]] || fail "engine-render wrote no image"
 
 # engine-view needs a window: a virtual X server, as its own tests run it.
+command -v xvfb-run > /dev/null || fail "xvfb-run not found (Debian xvfb and xauth; tools/install-deps.sh installs them)"
 xvfb-run -a -s "-screen 0 640x480x24 -noreset" "$bin/engine-view" --scene showcase.gltf --width 64 --height 48 \
   --screenshot view.png > view.txt 2>&1 || { cat view.txt; fail "engine-view with the installed config exited $?"; }
 [[ -s view.png ]] || fail "engine-view wrote no screenshot"
