@@ -53,8 +53,11 @@ const char* tuneUsage() {
         "  [--variants standard,woo,backface] [--resolutions 512,1024,2048]\n"
         "  [--depth-formats d16,d24,d32f] [--filters nearest,pcf,pcss] [--filter-taps 8,16,32]\n"
         "  [--report REPORT.json]\n"
-        "  [--key-light spot|point|directional]   a scene without lights gets this key light (placed\n"
-        "                  from its bounds as engine-render places it), tuned and written into --out\n"
+        "  [--key-light spot|point|directional] [--key-light-angles AZIMUTH,ELEVATION]   a scene\n"
+        "                  without lights gets this key light (placed from its bounds as\n"
+        "                  engine-render places it), tuned and written into --out\n"
+        "  [--ground]      a ground under the model receives the shadows while measuring, as\n"
+        "                  engine-render --ground shows them (not written into --out)\n"
         "  [--shard K/N]   search every N-th light only and write --out as a partial result (JSON)\n"
         "usage: shadowmap-tune --scene SCENE --merge PART.json... --out TUNED.gltf|.glb\n"
         "                  write the scene from shards 1..N's partial results (renders nothing)\n"
@@ -88,7 +91,7 @@ TuneOptions parseTuneOptions(int argc, char** argv) {
     bool maxError = false;
     const shadowmap::SettingKey& resolution = shadowmap::settingKey("resolution");
     const shadowmap::SettingKey& taps = shadowmap::settingKey("filter_taps");
-    options.help = tools::parseFlags(argc, argv, [&](const std::string& flag, const std::string& value) {
+    options.help = tools::parseFlags(argc, argv, {tools::kGroundFlag}, [&](const std::string& flag, const std::string& value) {
         if (flag == "--config") options.config = value;
         else if (flag == "--scene") options.scene = value;
         else if (flag == "--out") options.out = value;
@@ -102,7 +105,6 @@ TuneOptions parseTuneOptions(int argc, char** argv) {
         } else if (flag == "--shard") options.shard = tools::parseShard(flag, value);
         else if (flag == "--merge") options.merge.push_back(value);
         else if (flag == "--views") options.views = parseViewSpec(flag, value);
-        else if (flag == "--key-light") options.keyLight = tools::parseLightType(flag, value);
         else if (flag == "--width") options.width = tools::parseInteger(flag, value, 1, 16384);
         else if (flag == "--height") options.height = tools::parseInteger(flag, value, 1, 16384);
         else if (flag == "--frames") options.frames = tools::parseInteger(flag, value, 1, 10000);
@@ -117,13 +119,14 @@ TuneOptions parseTuneOptions(int argc, char** argv) {
         else if (flag == "--filter-taps")
             options.limits.filterTaps = tools::parseIntegerList(flag, value, static_cast<int>(*taps.minimum),
                                                                 static_cast<int>(*taps.maximum));
+        else if (tools::parseSceneLightingFlag(options.lighting, flag, value)) {}
         else return false;
         return true;
     });
     if (options.help) return options;
     if (options.scene.empty()) throw std::invalid_argument("--scene is required");
     if (options.out.empty()) throw std::invalid_argument("--out is required");
-    if (options.keyLight && (options.shard.count > 1 || !options.merge.empty()))
+    if (options.lighting.keyLight && (options.shard.count > 1 || !options.merge.empty()))
         throw std::invalid_argument(std::string("--key-light and ") + (options.merge.empty() ? "--shard" : "--merge") +
                                     " exclude each other: the key light is the scene's only light, nothing to split");
     if (!options.merge.empty()) {

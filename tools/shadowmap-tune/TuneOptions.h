@@ -2,6 +2,7 @@
 // shadowmap-tune's command line. Parsing checks every value and throws
 // std::invalid_argument with one line naming the flag and the value.
 #include "OptionValues.h"
+#include "SceneLighting.h"
 #include "SearchSpace.h"
 
 #include "engine/scene/Scene.h"
@@ -29,9 +30,11 @@ struct TuneOptions {
     ViewSpec views;
     int width = 0, height = 0, frames = 0;
     SearchLimits limits;
-    // --key-light: a scene without lights gets this key light (placed as engine-render and the
-    // bench place it), which is tuned and written into --out with its setting.
-    std::optional<engine::Light::Type> keyLight;
+    // --key-light (and --key-light-angles): a scene without lights gets this key light (placed
+    // as engine-render and the bench place it), which is tuned and written into --out with its
+    // setting. --ground: a ground under the model receives the shadows while measuring, as
+    // engine-render --ground shows them; it is not written into --out.
+    tools::SceneLighting lighting;
     tools::Shard shard;               // --shard K/N: --out is then a partial result (JSON)
     std::vector<std::string> merge;   // --merge PART.json...: write --out from these, render nothing
     bool help = false;

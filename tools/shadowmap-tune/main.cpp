@@ -76,17 +76,17 @@ int run(const TuneOptions& options, std::unique_ptr<engine::GlContext>& context,
     std::vector<std::string> warnings;
     engine::Scene scene = engine::loadGltf(options.scene, &warnings);
     for (const std::string& warning : warnings) std::cerr << "warning: " << warning << "\n";
-    // The key light only where the scene has none, as the bench adds it.
-    int keyLightNode = -1;
-    if (scene.lightInstances.empty() && options.keyLight) {
-        tools::SceneLighting lighting;
-        lighting.keyLight = options.keyLight;
+    // The key light only where the scene has none, as the bench adds it; the ground either way.
+    tools::SceneLighting lighting = options.lighting;
+    if (!scene.lightInstances.empty() && lighting.keyLight) {
+        std::fprintf(stderr, "shadowmap-tune: %s has lights: --key-light ignored\n", options.scene.c_str());
+        lighting.keyLight.reset();
+    }
+    const bool addsKeyLight = lighting.keyLight.has_value();
+    if (addsKeyLight || lighting.ground)
         for (const std::string& note : tools::stageScene(scene, options.scene, lighting).notes)
             std::fprintf(stderr, "shadowmap-tune: %s\n", note.c_str());
-        keyLightNode = scene.lightInstances.at(0).node;
-    } else if (options.keyLight) {
-        std::fprintf(stderr, "shadowmap-tune: %s has lights: --key-light ignored\n", options.scene.c_str());
-    }
+    const int keyLightNode = addsKeyLight ? scene.lightInstances.at(0).node : -1;
     if (scene.lightInstances.empty())
         engine::throwInputError(options.scene, "", "the scene has no lights: nothing to tune (add one with --key-light)");
     const bool sharded = options.shard.count > 1;
