@@ -1,6 +1,7 @@
 #include "RenderOptions.h"
 
 #include "AnimationPlayback.h"
+#include "AutoExposure.h"
 #include "CommandLine.h"
 #include "OptionValues.h"
 
@@ -36,8 +37,10 @@ const char* const kRenderUsage =
     "  [--warmup N] (untimed frames first: at least N, default 1, then until a frame compiles no\n"
     "               new shader (up to 4 more), so no timed frame pays for compilation; 0: none)\n"
     "  [--set PLUGIN.KEY=JSON]...  (a plugin's config setting, e.g. shadowmap_plugin.cache_maps=false)\n"
-    "  [--exposure EV100]  (for lights in physical units, candela and lux: a sunlit scene 15, an office 8;\n"
-    "                       replaces the config's renderer.exposure with 1 / (1.2 * 2^EV100))\n"
+    "  [--exposure EV100|auto]  (for lights in physical units, candela and lux: a sunlit scene 15, an\n"
+    "                       office 8; replaces the config's renderer.exposure with 1 / (1.2 * 2^EV100);\n"
+    "                       auto: the EV100 that maps the first frame's log-average luminance to middle\n"
+    "                       grey 0.18, measured from probe renders of it, printed, kept for every frame)\n"
     "  a light's setting: defaults < config and --set < the light's glTF extras < --light-set\n"
     "  without --config: the installed or build tree's engine.json; --version: the version\n";
 
@@ -45,8 +48,6 @@ namespace {
 
 // Bounds of typos, not of the GL: the renderer checks what it can allocate.
 constexpr int kMaxSize = 16384, kMaxFrames = 100000, kMaxWarmup = 1000;
-// EV100 from a moonless night to well past the sun (15): a bound on typos, not on scenes.
-constexpr double kMinEv100 = -10.0, kMaxEv100 = 30.0;
 constexpr double kMinFps = 1e-3, kMaxFps = 1e4;
 
 // Every image engine-render writes is PNG (lossless: masks and maps are measured): a file
@@ -91,7 +92,8 @@ RenderOptions parseRenderOptions(int argc, char** argv) {
         else if (flag == "--frames") options.frames = tools::parseInteger(flag, value, 1, kMaxFrames);
         else if (flag == "--warmup") options.warmup = tools::parseInteger(flag, value, 0, kMaxWarmup);
         else if (flag == "--set") tools::addSettingOverride(options.pluginSettings, flag, value);
-        else if (flag == "--exposure") options.exposureEv100 = tools::parseNumber(flag, value, kMinEv100, kMaxEv100);
+        else if (flag == "--exposure" && value == tools::kAutoExposureWord) options.autoExposure = true;
+        else if (flag == "--exposure") options.exposureEv100 = tools::parseNumber(flag, value, tools::kMinEv100, tools::kMaxEv100);
         else if (flag == "--stats") options.stats = value;
         else if (flag == "--graph-dot") options.graphDot = value;
         else if (tools::parseSceneLightingFlag(options.lighting, flag, value)) {}
@@ -106,6 +108,8 @@ RenderOptions parseRenderOptions(int argc, char** argv) {
     if (!sawScene) throw std::invalid_argument("--scene is required");
     if (!sawOut && !options.list) throw std::invalid_argument("--out is required");
     if (options.fps && options.animate.empty()) throw std::invalid_argument("--fps needs --animate");
+    if (options.autoExposure && options.exposureEv100)
+        throw std::invalid_argument("--exposure: given both as auto and as an EV100; give one");
     // The truth a mask shows is the one the scoring computes: one evaluation gives both, and the
     // printed errors are then those of the image written.
     if (!options.truthMasks.empty()) options.truth = true;

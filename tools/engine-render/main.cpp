@@ -7,6 +7,7 @@
 #include "RenderOptions.h"
 #include "SceneLighting.h"
 #include "AnimationPlayback.h"
+#include "AutoExposure.h"
 
 #include "ShadowEvaluation.h"
 
@@ -290,13 +291,20 @@ int run(const RenderOptions& options, std::unique_ptr<engine::GlContext>& contex
     const glm::dvec3 orbitCenter = scene.worldBounds.empty() ? glm::dvec3(0.0) : scene.worldBounds.center();
     constexpr double kOrbitStep = 0.034906585039886591;  // 2 degrees per frame: deterministic
 
-    engine::Renderer renderer(config.renderer, plugins);
-    renderer.setScene(scene);
-
     engine::FrameRequest request;
     const int cameraInstance = engine::chooseCameraInstance(scene, options.camera, options.scene);
     request.camera = cameraInstance < 0 ? engine::framingCamera(scene, options.width, options.height)
                                         : engine::cameraFromScene(scene, cameraInstance, options.width, options.height);
+    // --exposure auto: metered once, on the first frame, before the renderer that draws every
+    // frame is made with it. One exposure for the whole run: frames of an orbit or an
+    // animation compare as they are (no flicker, nothing adapting behind the numbers).
+    if (options.autoExposure) {
+        const tools::AutoExposure chosen = tools::chooseAutoExposure(config.renderer, plugins, scene, request.camera);
+        config.renderer.exposure = chosen.exposure;
+        std::printf("%s\n", tools::describe(chosen).c_str());
+    }
+    engine::Renderer renderer(config.renderer, plugins);
+    renderer.setScene(scene);
     request.timing = true;
     for (const auto& [light, file] : options.shadowMasks)
         request.shadowMaskSlots.push_back(lightSlot(scene, options.scene, light));
@@ -360,7 +368,7 @@ int run(const RenderOptions& options, std::unique_ptr<engine::GlContext>& contex
     if (const double saturated = saturatedFraction(image); saturated > kMostlySaturated)
         std::fprintf(stderr,
                      "warning: %.0f%% of the image is saturated: the lights may be in physical units (candela, "
-                     "lux); try --exposure EV100 (a sunlit scene 15, an office 8)\n",
+                     "lux); try --exposure auto, or --exposure EV100 (a sunlit scene 15, an office 8)\n",
                      100.0 * saturated);
     engine::writePngAtomically(options.out, options.width, options.height, 4, image);
     for (std::size_t i = 0; i < options.shadowMasks.size(); ++i)

@@ -1,5 +1,6 @@
 #include "ViewOptions.h"
 
+#include "AutoExposure.h"
 #include "CommandLine.h"
 #include "OptionValues.h"
 
@@ -25,6 +26,10 @@ const char* const kViewUsage =
     "                            printed; a ground under the model to receive its shadow)\n"
     "  [--key-light-angles AZIMUTH,ELEVATION]  (degrees from the framing view: azimuth toward\n"
     "                            its right, elevation above the horizon; default: to the side)\n"
+    "  [--exposure EV100|auto]  (for lights in physical units: the config's renderer.exposure\n"
+    "                            replaced with 1 / (1.2 * 2^EV100); auto: the EV100 that maps the\n"
+    "                            first frame's log-average luminance to middle grey 0.18, printed,\n"
+    "                            kept while the viewer runs)\n"
     "  [--time T]               (the scene posed at T seconds; default: at rest)\n"
     "  [--animate NAME|all]     (play that animation, or all, from T; Space plays all)\n"
     "keys: Tab light, V variant, R resolution, F depth format, P filter, C cascades,\n"
@@ -53,6 +58,8 @@ ViewOptions parseViewOptions(int argc, char** argv) {
         else if (flag == "--stay") options.stay = true;
         else if (flag == "--screenshot") options.screenshot = value;
         else if (flag == "--save-settings") options.saveSettings = value;
+        else if (flag == "--exposure" && value == tools::kAutoExposureWord) options.autoExposure = true;
+        else if (flag == "--exposure") options.exposureEv100 = tools::parseNumber(flag, value, tools::kMinEv100, tools::kMaxEv100);
         else if (flag == "--light") options.lightSettings.push_back(tools::parseLightVariant(flag, value));
         else if (flag == "--light-set") options.lightSettings.push_back(tools::parseLightSetting(flag, value));
         else if (tools::parseSceneLightingFlag(options.lighting, flag, value)) {}
@@ -61,6 +68,8 @@ ViewOptions parseViewOptions(int argc, char** argv) {
     });
     if (options.help) return options;
     if (!sawScene) throw std::invalid_argument("--scene is required");
+    if (options.autoExposure && options.exposureEv100)
+        throw std::invalid_argument("--exposure: given both as auto and as an EV100; give one");
     if (options.config.empty()) options.config = tools::defaultConfigPath();
     return options;
 }

@@ -22,6 +22,8 @@ struct ViewOptions {
     tools::SceneLighting lighting;  // --key-light spot|point|directional, --ground
     std::optional<double> time;  // --time T: the scene posed at T seconds (Playback.h)
     std::string animate;         // --animate NAME|all: what plays, playing from the start
+    std::optional<double> exposureEv100;  // --exposure EV100: the config's exposure replaced
+    bool autoExposure = false;            // --exposure auto: metered on the first frame (AutoExposure.h)
     bool help = false;
 };
 

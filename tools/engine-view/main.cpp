@@ -3,6 +3,7 @@
 // Kilgard's GDC 2000 slides, an on-screen line per light), scriptable (--script) and saving
 // the choice back into the glTF (--save-settings).
 #include "ToolMain.h"
+#include "AutoExposure.h"
 #include "Controls.h"
 #include "DebugViews.h"
 #include "OrbitCamera.h"
@@ -31,9 +32,11 @@
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <iostream>
+#include <memory>
 #include <optional>
 
 namespace engine_view {
@@ -122,14 +125,29 @@ int run(const ViewOptions& options, std::unique_ptr<engine::GlContext>& context,
     // GlContext does not expose its window; GLFW knows it as the current context.
     GLFWwindow* window = glfwGetCurrentContext();
     host.loadAll(config);
-    engine::Renderer renderer(config.renderer, host.renderPlugins());
-    renderer.setScene(scene);
+    engine::RendererConfig rendererConfig = config.renderer;
+    if (options.exposureEv100) rendererConfig.exposure = engine::exposureFromEv100(*options.exposureEv100);
+    auto ownedRenderer = std::make_unique<engine::Renderer>(rendererConfig, host.renderPlugins());
+    ownedRenderer->setScene(scene);
     std::printf("engine-view: %s on %s\n", options.scene.c_str(), context->rendererString().c_str());
 
     ViewerState state(scene, tools::shadowPluginSettings(config));
-    applyLightOptions(options, scene, state, renderer);
+    applyLightOptions(options, scene, state, *ownedRenderer);
     OrbitCamera camera(scene, options.scene, options.camera);
     Playback playback = startPlayback(options, scene);
+    // --exposure auto: metered on the first frame as it will be shown (lights, settings, pose
+    // and camera as set above), then kept: orbiting, switching lights or views never changes
+    // the brightness behind the author's back (no flicker, no adaptation lag).
+    if (options.autoExposure) {
+        const glm::ivec2 size = context->framebufferSize();
+        const tools::AutoExposure chosen = tools::chooseAutoExposure(
+            rendererConfig, host.renderPlugins(), scene, camera.frameCamera(std::max(size.x, 1), std::max(size.y, 1)));
+        std::printf("engine-view: %s\n", tools::describe(chosen).c_str());
+        rendererConfig.exposure = chosen.exposure;
+        ownedRenderer = std::make_unique<engine::Renderer>(rendererConfig, host.renderPlugins());
+        ownedRenderer->setScene(scene);
+    }
+    engine::Renderer& renderer = *ownedRenderer;
     LoopRequests requests;
     Controls controls(state, camera, playback, requests);
     controls.attach(window);
