@@ -1,6 +1,7 @@
 #pragma once
 // engine-render's command line (the contract the README's "Rendering a scene" documents).
 #include "LightOverrides.h"
+#include "OptionValues.h"
 #include "SceneLighting.h"
 #include "SettingOverrides.h"
 
@@ -15,7 +16,7 @@ struct RenderOptions {
     std::string config;  // empty: tools::defaultConfigPath()
     std::string scene;
     std::string out;
-    int width = 1280, height = 720;
+    int width = tools::kDefaultImageWidth, height = tools::kDefaultImageHeight;
     std::string camera;  // a name, else a number from --list; empty: first glTF camera
     // --light-set NAME.KEY=JSON and --light NAME=VARIANT, in the order given
     std::vector<tools::LightOverride> lightSettings;

@@ -1,5 +1,6 @@
 // engine-render: renders one glTF scene headless (EGL surfaceless) and writes a PNG,
 // optionally per-light shadow masks and truth masks, per-pass statistics and the compiled frame graph.
+#include "AssetExtras.h"
 #include "Median.h"
 #include "ToolMain.h"
 #include "DepthImage.h"
@@ -252,6 +253,13 @@ int run(const RenderOptions& options, std::unique_ptr<engine::GlContext>& contex
         return 0;
     }
     for (const std::string& note : staged.notes) std::printf("%s\n", note.c_str());
+    // Settings the tuner chose for a picture of another size may not be the best for this one.
+    if (const auto tuned = tools::readTunedSize(options.scene);
+        tuned && tools::farFromTunedSize(*tuned, options.width, options.height))
+        std::cerr << "note: " << options.scene << "'s shadow settings were tuned at " << tuned->width << "x"
+                  << tuned->height << " (asset.extras.shadowmap_tune), this picture is " << options.width << "x"
+                  << options.height << ": shadowmap-tune --width " << options.width << " --height " << options.height
+                  << " chooses for it\n";
     for (const std::string& warning : staged.warnings) std::cerr << "warning: " << warning << "\n";
 
     engine::EngineConfig config = engine::loadEngineConfig(options.config);

@@ -1,6 +1,7 @@
 #pragma once
 // engine-view's command line.
 #include "LightOverrides.h"
+#include "OptionValues.h"
 #include "SceneLighting.h"
 
 #include <optional>
@@ -13,7 +14,7 @@ struct ViewOptions {
     std::string config;  // empty: tools::defaultConfigPath()
     std::string scene;
     std::string camera;          // empty: first glTF camera, else a framing one
-    int width = 1280, height = 720;  // the window's initial size (the image follows resizes)
+    int width = tools::kDefaultImageWidth, height = tools::kDefaultImageHeight;  // the window's initial size (the image follows resizes)
     std::string script;          // --script FILE: one command per frame (Script.h)
     bool stay = false;           // --stay: after the script, stay interactive (else quit)
     std::string screenshot;      // --screenshot OUT.png: the first frame's window, then quit

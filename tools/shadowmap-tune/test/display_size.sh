@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The tuner measures at the size the user will look at: by default engine-render's default
 # image size (a setting's error depends on the size it is seen at), else the size given; the
-# report and the tuned file record it.
+# report and the tuned file record it, and engine-render notes a picture far from it.
 #   display_size.sh TUNE_BINARY CONTENT_DIR ENGINE_RENDER_BINARY
 source "$(dirname "$0")/common.sh" "$@"
 engine_render=$3
@@ -32,4 +32,13 @@ json "$work/default_size.gltf" "r['asset'].get('extras', {}).get('shadowmap_tune
 [[ $(json "$work/small.json" "r['width'], r['height']") == "200 100" ]] || fail "--width 200 --height 100 not measured"
 json "$work/small.gltf" "r['asset']['extras'].get('shadowmap_tune') == {'width': 200, 'height': 100}" | grep -qx True \
   || fail "the record is not replaced: $(json "$work/small.gltf" "r['asset']")"
+# engine-render says when it renders a tuned file far from the size it was tuned at.
+"$engine_render" --config "$content/engine.json" --scene "$work/small.gltf" --out "$work/large.png" \
+  2> "$work/large.log" > /dev/null
+grep -q "small.gltf's shadow settings were tuned at 200x100 (asset.extras.shadowmap_tune), this picture is \
+${render_width}x${render_height}: shadowmap-tune --width $render_width --height $render_height chooses for it" \
+  "$work/large.log" || fail "no note at ${render_width}x${render_height}: $(cat "$work/large.log")"
+"$engine_render" --config "$content/engine.json" --scene "$work/small.gltf" --out "$work/small.png" --width 200 \
+  --height 100 2> "$work/small.log" > /dev/null
+grep -q "tuned at" "$work/small.log" && fail "a note at the tuned size: $(cat "$work/small.log")"
 echo "ok: measured and recorded at ${render_width}x${render_height} by default, and at the size given"
