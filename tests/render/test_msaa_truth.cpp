@@ -13,6 +13,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -92,6 +93,40 @@ TEST(MsaaTruth, ShadowEvaluationAndMasksAreUnchanged) {
     // from the single-sampled value (measured: 1). A shade changed by multisampling (per-sample
     // shadow lookups, a lost shade term) would move whole regions by far more.
     EXPECT_LE(worst, kSmooth);
+}
+
+// engine-render --msaa N replaces the config's renderer.msaa: the same image as the config
+// asking for it; a count outside 1, 2, 4, 8 is refused in one line naming the flag.
+TEST(MsaaTruth, MsaaFlagReplacesTheConfigsSetting) {
+    namespace fs = std::filesystem;
+    const fs::path dir = fs::temp_directory_path() / "engine_msaa_flag";
+    fs::create_directories(dir);
+    const fs::path scene = fs::path(CONTENT_DIR) / "scenes" / "showcase.gltf";
+    constexpr int kWidth = 160, kHeight = 90;
+    nlohmann::json multisampled;
+    std::ifstream(fs::path(CONTENT_DIR) / "engine.json") >> multisampled;
+    multisampled["renderer"]["msaa"] = 4;
+    const fs::path multisampledConfig = dir / "engine_msaa4.json";
+    std::ofstream(multisampledConfig) << multisampled.dump();
+    engine_render_test::renderWithStats(scene, dir / "config", kWidth, kHeight,
+                                        "--config '" + multisampledConfig.string() + "'");
+    engine_render_test::renderWithStats(scene, dir / "flag", kWidth, kHeight, "--msaa 4");
+    engine_render_test::renderWithStats(scene, dir / "single", kWidth, kHeight, "--msaa 1");
+    int width = 0, height = 0;
+    const std::vector<std::uint8_t> config = engine::readPng(dir / "config.png", 4, width, height);
+    EXPECT_EQ(engine::readPng(dir / "flag.png", 4, width, height), config);
+    EXPECT_NE(engine::readPng(dir / "single.png", 4, width, height), config);
+    for (const char* samples : {"3", "16", "0", "four"}) {
+        const fs::path log = dir / "refused.log";
+        const int status = engine_render_test::runQuietly(std::string(ENGINE_RENDER_BIN) + " --scene '" + scene.string() +
+                                                              "' --out '" + (dir / "refused.png").string() + "' --msaa " +
+                                                              samples,
+                                                          log);
+        std::ifstream in(log);
+        const std::string message((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        EXPECT_EQ(status, 1) << samples << ": " << message;
+        EXPECT_NE(message.find("--msaa"), std::string::npos) << message;
+    }
 }
 
 } // namespace

@@ -5,6 +5,8 @@
 #include "CommandLine.h"
 #include "OptionValues.h"
 
+#include "engine/config/EngineConfig.h"
+
 #include <cctype>
 #include <filesystem>
 #include <stdexcept>
@@ -41,6 +43,8 @@ const char* const kRenderUsage =
     "                       office 8; replaces the config's renderer.exposure with 1 / (1.2 * 2^EV100);\n"
     "                       auto: the EV100 that maps the first frame's log-average luminance to middle\n"
     "                       grey 0.18, measured from probe renders of it, printed, kept for every frame)\n"
+    "  [--msaa 1|2|4|8]  (samples per pixel of the image, antialiasing its edges: replaces the config's\n"
+    "                       renderer.msaa; masks and --truth stay per pixel)\n"
     "  a light's setting: defaults < config and --set < the light's glTF extras < --light-set\n"
     "  without --config: the installed or build tree's engine.json; --version: the version\n";
 
@@ -49,6 +53,15 @@ namespace {
 // Bounds of typos, not of the GL: the renderer checks what it can allocate.
 constexpr int kMaxSize = 16384, kMaxFrames = 100000, kMaxWarmup = 1000;
 constexpr double kMinFps = 1e-3, kMaxFps = 1e4;
+
+// One of the sample counts renderer.msaa accepts.
+int parseMsaa(const std::string& flag, const std::string& value) {
+    const int samples =
+        tools::parseInteger(flag, value, engine::kMsaaSampleCounts.front(), engine::kMsaaSampleCounts.back());
+    if (!engine::isMsaaSampleCount(samples))
+        throw std::invalid_argument(flag + " " + value + ": must be " + engine::msaaSampleCountsText());
+    return samples;
+}
 
 // Every image engine-render writes is PNG (lossless: masks and maps are measured): a file
 // named otherwise would hold PNG bytes under a name that says something else.
@@ -94,6 +107,7 @@ RenderOptions parseRenderOptions(int argc, char** argv) {
         else if (flag == "--set") tools::addSettingOverride(options.pluginSettings, flag, value);
         else if (flag == "--exposure" && value == tools::kAutoExposureWord) options.autoExposure = true;
         else if (flag == "--exposure") options.exposureEv100 = tools::parseNumber(flag, value, tools::kMinEv100, tools::kMaxEv100);
+        else if (flag == "--msaa") options.msaa = parseMsaa(flag, value);
         else if (flag == "--stats") options.stats = value;
         else if (flag == "--graph-dot") options.graphDot = value;
         else if (tools::parseSceneLightingFlag(options.lighting, flag, value)) {}

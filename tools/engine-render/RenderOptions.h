@@ -39,6 +39,7 @@ struct RenderOptions {
     bool truth = false;       // --truth: per-light error against ray-traced shadows
     std::optional<double> exposureEv100;  // --exposure EV100: the config's exposure replaced
     bool autoExposure = false;            // --exposure auto: metered on the first frame (AutoExposure.h)
+    std::optional<int> msaa;              // --msaa N: the config's renderer.msaa replaced
     bool list = false;        // --list: print the scene's cameras and lights, render nothing
     std::string stats;      // JSON
     std::string graphDot;   // graphviz of the last frame's compiled graph

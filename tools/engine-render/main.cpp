@@ -265,6 +265,7 @@ int run(const RenderOptions& options, std::unique_ptr<engine::GlContext>& contex
     engine::EngineConfig config = engine::loadEngineConfig(options.config);
     tools::applySettingOverrides(config, options.pluginSettings);
     if (options.exposureEv100) config.renderer.exposure = engine::exposureFromEv100(*options.exposureEv100);
+    if (options.msaa) config.renderer.msaa = *options.msaa;
     context = engine::createEglContext();
     context->makeCurrent();
 
