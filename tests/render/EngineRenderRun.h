@@ -7,6 +7,8 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <array>
+#include <cstdio>
 #include <cstdint>
 #include <cstdlib>
 #include <filesystem>
@@ -18,6 +20,25 @@
 #include <sys/wait.h>
 
 namespace engine_render_test {
+
+struct CommandResult {
+    int exitCode = -1;
+    std::string output;  // stdout + stderr
+};
+
+// engine-render ARGUMENTS as a user runs it, started in `folder` if one is given: its exit
+// status and everything it printed.
+inline CommandResult runEngineRender(const std::string& arguments, const std::filesystem::path& folder = {}) {
+    const std::string command = (folder.empty() ? std::string() : "cd '" + folder.string() + "' && ") +
+                                std::string(ENGINE_RENDER_BIN) + " " + arguments + " 2>&1";
+    CommandResult result;
+    FILE* pipe = popen(command.c_str(), "r");
+    std::array<char, 4096> buffer{};
+    while (pipe && fgets(buffer.data(), buffer.size(), pipe)) result.output += buffer.data();
+    const int status = pipe ? pclose(pipe) : -1;
+    result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return result;
+}
 
 // Runs a shell command with its standard output discarded and its error output written to
 // `errorLog` (discarded too when empty); its exit status, -1 if it did not exit.

@@ -3,6 +3,7 @@
 // that frame. Lights in physical units (Blender 4 writes a 1000 W spot as 54,351 cd) no
 // longer blow the picture to white; what is measured is checked on the image written.
 // Every image is rendered in this run: nothing is compared with a stored picture.
+#include "EngineRenderRun.h"
 #include "engine/util/OutputFile.h"
 
 #include <gtest/gtest.h>
@@ -23,20 +24,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct CommandResult {
-    int exitCode = -1;
-    std::string output;  // stdout + stderr
-};
-
-CommandResult runEngineRender(const std::string& arguments) {
-    CommandResult result;
-    FILE* pipe = popen((std::string(ENGINE_RENDER_BIN) + " " + arguments + " 2>&1").c_str(), "r");
-    std::array<char, 4096> buffer{};
-    while (pipe && fgets(buffer.data(), buffer.size(), pipe)) result.output += buffer.data();
-    const int status = pipe ? pclose(pipe) : -1;
-    result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return result;
-}
+using engine_render_test::CommandResult;
+using engine_render_test::runEngineRender;
 
 // Blender 4's glTF exporter writes a 1000 W spot light as 54,351 cd (W / (4 pi) * 683 lm/W):
 // the showcase's lights are scaled so that its spot has that intensity, the others by the

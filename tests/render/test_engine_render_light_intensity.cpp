@@ -21,20 +21,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct CommandResult {
-    int exitCode = -1;
-    std::string output;  // stdout + stderr
-};
-
-CommandResult runEngineRender(const std::string& arguments) {
-    CommandResult result;
-    FILE* pipe = popen((std::string(ENGINE_RENDER_BIN) + " " + arguments + " 2>&1").c_str(), "r");
-    std::array<char, 4096> buffer{};
-    while (pipe && fgets(buffer.data(), buffer.size(), pipe)) result.output += buffer.data();
-    const int status = pipe ? pclose(pipe) : -1;
-    result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return result;
-}
+using engine_render_test::CommandResult;
+using engine_render_test::runEngineRender;
 
 // The showcase's three lights by name, as its file gives them.
 const char* const kLights[] = {"spot_light", "sun", "point_light"};

@@ -1,5 +1,6 @@
 // engine-render with the shadow plugin, end to end: per-light choices from glTF, config and
 // command line; bad settings end in exit code 1 and one line naming the light and the key.
+#include "../../render/EngineRenderRun.h"
 #include "engine/util/OutputFile.h"
 #include "engine/util/Version.h"
 
@@ -26,23 +27,8 @@ std::vector<std::uint8_t> readImage(const std::filesystem::path& file) {
 
 namespace fs = std::filesystem;
 
-struct CommandResult {
-    int exitCode = -1;
-    std::string output;  // stdout + stderr
-};
-
-// engine-render ARGUMENTS, started in `folder` if one is given.
-CommandResult runEngineRender(const std::string& arguments, const fs::path& folder = {}) {
-    const std::string command = (folder.empty() ? std::string() : "cd '" + folder.string() + "' && ") +
-                                std::string(ENGINE_RENDER_BIN) + " " + arguments + " 2>&1";
-    CommandResult result;
-    FILE* pipe = popen(command.c_str(), "r");
-    std::array<char, 4096> buffer{};
-    while (pipe && fgets(buffer.data(), buffer.size(), pipe)) result.output += buffer.data();
-    const int status = pipe ? pclose(pipe) : -1;
-    result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return result;
-}
+using engine_render_test::CommandResult;
+using engine_render_test::runEngineRender;
 
 class EngineRenderShadows : public ::testing::Test {
 protected:
