@@ -14,6 +14,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -87,6 +88,22 @@ inline int differingPixels(const std::vector<std::uint8_t>& a, const std::vector
     int count = 0;
     for (std::size_t i = 0; i < std::min(a.size(), b.size()); ++i) count += (a[i] > 127) != (b[i] > 127);
     return count;
+}
+
+// content/scenes/NAME.gltf's JSON, with its NAME.bin copied into `folder`, for a test to edit
+// and write there as engine-render's scene.
+inline nlohmann::json copyContentScene(const std::filesystem::path& folder, const std::string& name) {
+    std::filesystem::copy_file(std::filesystem::path(CONTENT_DIR) / "scenes" / (name + ".bin"),
+                               folder / (name + ".bin"), std::filesystem::copy_options::overwrite_existing);
+    std::ifstream in(std::filesystem::path(CONTENT_DIR) / "scenes" / (name + ".gltf"));
+    return nlohmann::json::parse(in);
+}
+
+// The KHR_lights_punctual light called `name` in a scene's JSON; throws when there is none.
+inline nlohmann::json& lightNamed(nlohmann::json& scene, const std::string& name) {
+    for (auto& light : scene["extensions"]["KHR_lights_punctual"]["lights"])
+        if (light["name"] == name) return light;
+    throw std::runtime_error("no light " + name);
 }
 
 } // namespace engine_render_test

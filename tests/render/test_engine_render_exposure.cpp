@@ -79,10 +79,7 @@ protected:
                ("engine_render_auto_exposure_" +
                 std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
         fs::create_directories(dir_);
-        fs::copy_file(fs::path(CONTENT_DIR) / "scenes" / "showcase.bin", dir_ / "showcase.bin",
-                      fs::copy_options::overwrite_existing);
-        std::ifstream in(fs::path(CONTENT_DIR) / "scenes" / "showcase.gltf");
-        scene_ = nlohmann::json::parse(in);
+        scene_ = engine_render_test::copyContentScene(dir_, "showcase");
         // The repository's config with a black background: the background is no radiance of
         // the scene, and black pixels are what the meter (and figures()) leave out.
         std::ifstream configIn(fs::path(CONTENT_DIR) / "engine.json");
@@ -97,11 +94,7 @@ protected:
         for (auto& light : scene_["extensions"]["KHR_lights_punctual"]["lights"])
             light["intensity"] = light.value("intensity", 1.0) * factor;
     }
-    double spotIntensity() {
-        for (auto& light : scene_["extensions"]["KHR_lights_punctual"]["lights"])
-            if (light["name"] == "spot_light") return light["intensity"].get<double>();
-        throw std::runtime_error("no spot_light");
-    }
+    double spotIntensity() { return engine_render_test::lightNamed(scene_, "spot_light")["intensity"].get<double>(); }
 
     // The (edited) scene at 320x180 (under the probes' 512-pixel side: they render these pixels).
     CommandResult render(const std::string& extra = "") {

@@ -34,18 +34,11 @@ protected:
                ("engine_render_light_intensity_" +
                 std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
         fs::create_directories(dir_);
-        fs::copy_file(fs::path(CONTENT_DIR) / "scenes" / "showcase.bin", dir_ / "showcase.bin",
-                      fs::copy_options::overwrite_existing);
-        std::ifstream in(fs::path(CONTENT_DIR) / "scenes" / "showcase.gltf");
-        scene_ = nlohmann::json::parse(in);
+        scene_ = engine_render_test::copyContentScene(dir_, "showcase");
     }
     void TearDown() override { fs::remove_all(dir_); }
 
-    nlohmann::json& light(const std::string& name) {
-        for (auto& light : scene_["extensions"]["KHR_lights_punctual"]["lights"])
-            if (light["name"] == name) return light;
-        throw std::runtime_error("no light " + name);
-    }
+    nlohmann::json& light(const std::string& name) { return engine_render_test::lightNamed(scene_, name); }
     double fileIntensity(const std::string& name) { return light(name)["intensity"].get<double>(); }
 
     // The (edited) scene rendered small into `stem`.png (and its stats), with `extra` flags.

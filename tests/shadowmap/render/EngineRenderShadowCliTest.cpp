@@ -40,19 +40,10 @@ protected:
     }
 
     // Renders content/scenes/NAME.gltf (with its .bin) from now on; the showcase by default.
-    void useScene(const std::string& name) {
-        fs::copy_file(fs::path(CONTENT_DIR) / "scenes" / (name + ".bin"), dir_ / (name + ".bin"),
-                      fs::copy_options::overwrite_existing);
-        std::ifstream in(fs::path(CONTENT_DIR) / "scenes" / (name + ".gltf"));
-        scene_ = nlohmann::json::parse(in);
-    }
+    void useScene(const std::string& name) { scene_ = engine_render_test::copyContentScene(dir_, name); }
     void TearDown() override { fs::remove_all(dir_); }
 
-    nlohmann::json& light(const std::string& name) {
-        for (auto& light : scene_["extensions"]["KHR_lights_punctual"]["lights"])
-            if (light["name"] == name) return light;
-        throw std::runtime_error("no light " + name);
-    }
+    nlohmann::json& light(const std::string& name) { return engine_render_test::lightNamed(scene_, name); }
 
     // The node that places the light (camera) called `name`.
     nlohmann::json& nodeNamed(const std::string& name) {
