@@ -36,6 +36,8 @@ std::string setAssetExtras(const std::string& json, const std::map<std::string, 
     return out;
 }
 
+nlohmann::json tunedSizeRecord(const TunedSize& size) { return {{"width", size.width}, {"height", size.height}}; }
+
 std::optional<TunedSize> tunedSize(const nlohmann::json& document) {
     const auto asset = document.find("asset");
     if (asset == document.end() || !asset->is_object()) return std::nullopt;

@@ -24,6 +24,8 @@ struct TunedSize {
     int width = 0, height = 0;
 };
 inline constexpr const char* kTunedForKey = "shadowmap_tune";
+// The record as written ({"width": W, "height": H}) and read back from a document.
+nlohmann::json tunedSizeRecord(const TunedSize& size);
 std::optional<TunedSize> tunedSize(const nlohmann::json& document);
 // The same read from a scene file (.gltf or .glb: only its JSON is read); nullopt when the
 // file has no such record or cannot be read (the loader has its own, clear errors).

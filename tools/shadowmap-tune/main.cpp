@@ -152,7 +152,7 @@ int run(const TuneOptions& options, std::unique_ptr<engine::GlContext>& context,
         else shadows[index] = saved;
     }
     // What the choice holds for, recorded in the tuned file (AssetExtras.h).
-    const nlohmann::json tunedFor = {{"width", options.width}, {"height", options.height}};
+    const nlohmann::json tunedFor = tools::tunedSizeRecord({options.width, options.height});
     if (sharded)
         engine::writeFileAtomically(options.out, partialResult(options.scene, options.shard, tunedFor, shadows));
     else tools::saveSceneSettings(options.scene, options.out, shadows, added, {{tools::kTunedForKey, tunedFor}});

@@ -15,7 +15,7 @@
 
 namespace {
 
-const nlohmann::json kTuned = {{"width", 640}, {"height", 360}};
+const nlohmann::json kTuned = tools::tunedSizeRecord({640, 360});
 
 std::string withRecord(const std::string& text) {
     return tools::setAssetExtras(text, {{tools::kTunedForKey, kTuned}}, "test.gltf");
