@@ -20,10 +20,12 @@
 # --table-only skips the tests; --build names the build tree (default build/).
 # The same table on llvmpipe, for comparison: ENGINE_EGL_DEVICE=0 tools/gpu-check.sh
 # --table-only REPORT_DIR on a machine without a GPU.
-set -euo pipefail
+set -eEuo pipefail
+# A command that stops the check under set -e says which, instead of exiting silently.
+trap 'echo "gpu-check: line $LINENO: \"$BASH_COMMAND\" exited with status $?" >&2' ERR
 cd "$(dirname "$0")/.."
 source_dir=$PWD
-usage() { sed -n '2,/^set -euo/p' "$0" | sed '$d; s/^# \{0,1\}//'; exit "${1:-1}"; }
+usage() { sed -n '2,/^set -e/p' "$0" | sed '$d; s/^# \{0,1\}//'; exit "${1:-1}"; }
 
 frames=60
 width=1280 height=720

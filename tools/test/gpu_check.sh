@@ -9,10 +9,18 @@ source_dir=$1 build=$2
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
 check=("$source_dir/tools/gpu-check.sh" --table-only --build "$build")
-fail() { echo "FAIL: $*" >&2; exit 1; }
+fail() {
+  echo "FAIL: $*" >&2
+  # What the engine-render runs of the table printed on stderr, where a row says "failed".
+  if [ -s "$out/report/table-errors.txt" ]; then echo "their errors:" >&2; tail -n 40 "$out/report/table-errors.txt" >&2; fi
+  exit 1
+}
+# A command that stops the script under set -e says which, instead of exiting silently.
+trap 'echo "FAIL: line $LINENO: \"$BASH_COMMAND\" exited with status $?" >&2' ERR
 
 listing=$(ENGINE_EGL_DEVICE=list "$build/bin/engine-render" --config "$source_dir/content/engine.json" \
-            --scene "$source_dir/content/scenes/showcase.gltf" --out "$out/list.png" --width 8 --height 8 2>&1 >/dev/null)
+            --scene "$source_dir/content/scenes/showcase.gltf" --out "$out/list.png" --width 8 --height 8 2>&1 >/dev/null) ||
+  fail "engine-render with ENGINE_EGL_DEVICE=list: $listing"
 if ! echo "$listing" | grep '^EGL device' | grep -vq '\[software\]'; then
   if (unset ENGINE_EGL_DEVICE; "${check[@]}" "$out/refused") 2> "$out/refused.err"; then
     fail "gpu-check ran with only a software device"
@@ -32,7 +40,7 @@ engine_glb=/usr/share/assimp/models/glTF2/2CylinderEngine-glTF-Binary/2CylinderE
 scenes=3
 [ -f "$engine_glb" ] && scenes=4
 # Per scene: still and camera with three configs each (unshadowed, on, off), light with two.
-rows=$(grep -c '^| [A-Za-z0-9]* | \(still\|light\|camera\) | \(unshadowed\|on\|off\) | [0-9.]* | [0-9.]* | [0-9.]* |$' "$report")
+rows=$(grep -c '^| [A-Za-z0-9]* | \(still\|light\|camera\) | \(unshadowed\|on\|off\) | [0-9.]* | [0-9.]* | [0-9.]* |$' "$report" || true)
 [ "$rows" -eq $((scenes * 8)) ] || fail "expected $((scenes * 8)) table rows with three times each, got $rows: $(cat "$report")"
 # Against truth: every scene's lights, each with its error figures.
 for light in spot_light lamp_0 sun; do
