@@ -83,6 +83,9 @@
 //                   unclamped slope term, while a clamp puts acne on grazing receivers
 //                   (spot at 0.5 deg: 0.30% error unclamped, 0.61% with S = 10, 19% with
 //                   S = 3; tools/shadowmap-stress elevation).
+//   cull_unseen_casters  true: a caster whose shadow can fall on   true
+//                   no receiver the camera sees is left out of the depth passes (same
+//                   image; technique/UnseenShadows.h). woo maps keep every caster
 // Cascades (directional lights only; spot and point lights ignore them):
 //   cascades        auto, or 1 .. 4 slices of the camera's view  auto
 //                   depth, one array layer (and depth pass) each; 1: one map fitted to
@@ -182,6 +185,7 @@ struct ShadowSettings {
     double cascadeLambda = 0.75;
     double cascadeBlend = 0.0;
     bool stable = true;
+    bool cullUnseenCasters = true;  // leave out casters whose shadow no visible receiver can show
     double shadowDistance = 0.0;  // directional lights, world units; 0: no limit
     double shadowFade = 0.1;      // fraction of shadowDistance
     // The light's size (see the table above): what the area truth samples and what a

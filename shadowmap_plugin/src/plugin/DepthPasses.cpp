@@ -2,6 +2,7 @@
 
 #include "technique/DepthFormatGl.h"
 #include "technique/Techniques.h"
+#include "technique/UnseenShadows.h"
 
 #include <cmath>
 
@@ -29,6 +30,7 @@ void addCounts(LightShadowFrame& plan, const DepthDrawCounts& counts) {
     plan.draws += counts.draws;
     plan.triangles += counts.triangles;
     plan.castersCulled += counts.castersCulled;
+    plan.castersUnseen += counts.castersUnseen;
 }
 
 } // namespace
@@ -57,9 +59,18 @@ void addDepthPasses(LightShadow& light, engine::Frame& frame, engine::ResourceHa
         recorded = 0;
         std::uint64_t* target = &recorded;
         const std::uint64_t key = layer.keyWhenDone;
-        technique.addLayerPasses({frame.graph(), light, map, layer, style, draw,
-                                  [target, key] {
+        const std::size_t index = layerIndex(layer.layer);
+        DepthPassStyle layerStyle = style;
+        const bool culls = index < light.frame.unseenCasters.size() && !light.frame.unseenCasters[index].empty();
+        if (culls) layerStyle.unseenCasters = &light.frame.unseenCasters[index];
+        if (light.renderedUnseen.size() <= index) light.renderedUnseen.resize(index + 1);
+        technique.addLayerPasses({frame.graph(), light, map, layer, layerStyle, draw,
+                                  [target, key, &light, index] {
                                       if (key) *target = key;
+                                      // What the layer now lacks (a later hit must not need it).
+                                      light.renderedUnseen[index] = index < light.frame.unseenCasters.size()
+                                                                        ? light.frame.unseenCasters[index]
+                                                                        : std::vector<bool>{};
                                   },
                                   light.frame.passes});
     }

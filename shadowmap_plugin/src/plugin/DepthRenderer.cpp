@@ -80,10 +80,16 @@ DepthDrawCounts DepthRenderer::draw(const engine::Frame& frame, engine::PassCont
     const auto drawn = [&style](bool casts, bool receives) {
         return casts || (style.drawsNonCastingReceivers && receives);
     };
-    for (const engine::MeshInstance& instance : scene.meshInstances) {
+    for (std::size_t index = 0; index < scene.meshInstances.size(); ++index) {
+        const engine::MeshInstance& instance = scene.meshInstances[index];
         if (!drawn(instance.castShadows, instance.receiveShadows)) continue;
         if (!engine::boxIntersectsFrustum(viewProjection, instance.worldBounds)) {
             ++counts.castersCulled;
+            context.countCulledDraw();
+            continue;
+        }
+        if (style.unseenCasters && index < style.unseenCasters->size() && (*style.unseenCasters)[index]) {
+            ++counts.castersUnseen;
             context.countCulledDraw();
             continue;
         }

@@ -18,7 +18,7 @@
 namespace shadowmap {
 
 struct DepthDrawCounts {
-    std::uint64_t draws = 0, triangles = 0, castersCulled = 0;
+    std::uint64_t draws = 0, triangles = 0, castersCulled = 0, castersUnseen = 0;
 };
 
 class DepthRenderer {

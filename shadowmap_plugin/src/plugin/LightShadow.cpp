@@ -56,7 +56,8 @@ nlohmann::json LightShadow::stats() const {
                 {"faces_skipped", frame.facesSkipped},
                 {"draws", frame.draws},
                 {"triangles", frame.triangles},
-                {"casters_culled", frame.castersCulled}});
+                {"casters_culled", frame.castersCulled},
+                {"casters_unseen", frame.castersUnseen}});
     if (!frame.skipReason.empty()) out["skip_reason"] = frame.skipReason;
     if (const DepthTechnique* technique = depthTechnique(settings.variant)) technique->addStats(*this, out);
     if (frame.kind != MapKind::None) out["cache"] = frame.cacheHit ? "hit" : "miss";

@@ -4,6 +4,7 @@
 #include "technique/DepthFormatGl.h"
 #include "technique/LightPlanner.h"
 #include "technique/Techniques.h"
+#include "technique/UnseenShadows.h"
 
 #include "engine/render/Frame.h"
 #include "engine/scene/Scene.h"
@@ -81,7 +82,9 @@ void ShadowMapPlugin::addPasses(engine::Frame& frame) {
             planLight(light, context, engine::kFirstPluginTextureUnit + light.slot, maxTextureUnits_);
         if (shadowed) {
             light.ensureMap();
+            planUnseenShadows(light, context);
             decideCache(light, frame.scene(), sceneGeneration_, cacheMaps_);
+            keepCachedMapsThatHoldTheNeededCasters(light);
             const MapShape shape = mapProjection(light.frame.kind)->shape(light);
             const int size = light.settings.resolution;
             const engine::TextureDesc desc{size, size, graphFormat(light.settings.depthFormat),

@@ -30,6 +30,7 @@ nlohmann::json printSettings(const ShadowSettings& settings) {
                           {"cascade_lambda", settings.cascadeLambda},
                           {"cascade_blend", settings.cascadeBlend},
                           {"stable", settings.stable},
+                          {"cull_unseen_casters", settings.cullUnseenCasters},
                           {"shadow_distance", settings.shadowDistance},
                           {"shadow_fade", settings.shadowFade},
                           {"light_radius", settings.lightRadius},

@@ -201,6 +201,13 @@ std::vector<SettingKey> makeKeys() {
                           "about 0.0093; 0: one direction); the area truth samples it";
     keys.push_back(angular);
 
+    SettingKey unseen = makeKey("cull_unseen_casters", SettingKind::Boolean);
+    unseen.values = "`true`, `false`";
+    unseen.description = "leave out of the depth passes the casters whose shadow can fall on no receiver the camera "
+                         "sees (the same image; a map drawn without one is drawn again when the view needs it); "
+                         "`woo` keeps every caster";
+    keys.push_back(unseen);
+
     const nlohmann::json defaults = printSettings(ShadowSettings{});
     for (SettingKey& key : keys) {
         if (defaults.contains(key.name)) key.defaultValue = defaults[key.name];

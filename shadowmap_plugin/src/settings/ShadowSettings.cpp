@@ -175,6 +175,8 @@ void applySettings(ShadowSettings& settings, const nlohmann::json& json, const s
         settings.cascadeLambda = lambda;
     }
     if (json.contains("stable")) settings.stable = json_read::readBool(json["stable"], source, key("stable"));
+    if (json.contains("cull_unseen_casters"))
+        settings.cullUnseenCasters = json_read::readBool(json["cull_unseen_casters"], source, key("cull_unseen_casters"));
     if (json.contains("shadow_distance")) {
         const double distance = json_read::readNumber(json["shadow_distance"], source, key("shadow_distance"));
         if (!(distance >= 0.0) || !std::isfinite(distance))

@@ -42,6 +42,9 @@ struct DepthPassStyle {
     // > 0: glPolygonOffsetClamp's clamp, in window depth (ShadowSettings
     // polygon_offset_clamp converted per light); 0: plain glPolygonOffset.
     float offsetClamp = 0.0f;
+    // Per Scene::meshInstances: casters this layer leaves out, their shadow reaching no visible
+    // receiver (UnseenShadows.h); null: none.
+    const std::vector<bool>* unseenCasters = nullptr;
 };
 
 // The state a depth pass of this style declares (engine/graph/PassState.h): depth test and

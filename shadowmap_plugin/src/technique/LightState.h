@@ -35,6 +35,10 @@ struct LightShadowFrame {
     std::vector<std::string> warnings;
     int facesRendered = 0, facesSkipped = 0;
     std::uint64_t draws = 0, triangles = 0, castersCulled = 0;
+    // Casters left out because their shadow reaches no visible receiver (UnseenShadows.h),
+    // counted per layer drawn; and per map layer (layerIndex), which ones: empty when none is.
+    std::uint64_t castersUnseen = 0;
+    std::vector<std::vector<bool>> unseenCasters;
     std::vector<std::string> openCasters;  // backface: casters drawn two-sided
     bool cacheHit = false;                 // the map was still right: no depth pass
     std::vector<std::uint64_t> cascadeKeys;  // cascades: each layer's key (MapCacheKey.h)
@@ -54,6 +58,8 @@ struct LightState {
     std::uint64_t renderedKey = 0;
     // Cascades: the key each layer was last rendered from; 0 = none.
     std::vector<std::uint64_t> renderedCascadeKeys;
+    // Per map layer (layerIndex): the casters its passes left out when last rendered.
+    std::vector<std::vector<bool>> renderedUnseen;
     // cascades: auto: the count chosen last frame (0: none yet), which a small change keeps,
     // and what was weighed for it, with the hash of its inputs (reused while they hold).
     int autoCascadeCount = 0;

@@ -27,6 +27,9 @@ public:
     // writes the map shapes' functions once per name in use (shaders/visibility.glsl), so
     // lookups that differ only in sampler state share one name and one program.
     virtual const char* glslName() const = 0;
+    // How many texels from the looked-up point the lookup may read with these settings (the
+    // receiver-aware caster culling widens each receiver by it: UnseenShadows.h).
+    virtual double reachTexels(const ShadowSettings&) const { return 1.0; }
     virtual const char* glsl() const = 0;
 };
 

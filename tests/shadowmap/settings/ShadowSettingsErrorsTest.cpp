@@ -53,7 +53,7 @@ TEST(ShadowSettingsErrors, UnknownKeyListsTheKnownOnes) {
     for (const shadowmap::SettingKey& key : shadowmap::settingKeys()) known += (known.empty() ? "" : ", ") + key.name;
     EXPECT_EQ(known, "variant, resolution, depth_format, filter, filter_taps, filter_radius, normal_offset, polygon_offset, dimming, near_plane, far_plane, "
                      "reversed_z, polygon_offset_clamp, cascades, cascade_lambda, cascade_blend, stable, shadow_distance, shadow_fade, "
-                     "light_radius, angular_diameter");
+                     "light_radius, angular_diameter, cull_unseen_casters");
     expectNamed({"unknown key", {{"colour", "red"}}, "colour", "unknown key (known: " + known + ")"});
 }
 

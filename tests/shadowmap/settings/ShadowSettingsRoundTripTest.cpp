@@ -48,6 +48,7 @@ std::vector<KeyChange> oneChangePerKey() {
         {"shadow_fade", [](ShadowSettings& s) { s.shadowFade = 0.27; }},
         {"light_radius", [](ShadowSettings& s) { s.lightRadius = 0.35; }},
         {"angular_diameter", [](ShadowSettings& s) { s.angularDiameter = 0.0093; }},
+        {"cull_unseen_casters", [](ShadowSettings& s) { s.cullUnseenCasters = false; }},
     };
 }
 
@@ -64,14 +65,14 @@ TEST(ShadowSettingsRoundTrip, EveryKeyHasAChangeBelow) {
 TEST(ShadowSettingsRoundTrip, DefaultsPrintAsDocumented) {
     // README's table and DESIGN.md: standard, 2048, d24, pcf, dimming 0.4; no forced
     // planes, no explicit offset, no reversal, no clamp, no shadow distance, a light without
-    // a size.
+    // a size, casters whose shadow nobody sees left out.
     const nlohmann::json expected = {{"variant", "standard"}, {"resolution", 2048}, {"depth_format", "d24"},
                                      {"filter", "pcf"},       {"filter_taps", 16},      {"filter_radius", 0.0},   {"normal_offset", 0.25},   {"dimming", 0.4},     {"reversed_z", false},
                                      {"polygon_offset_clamp", 0.0}, {"cascades", "auto"},
                                      {"cascade_lambda", 0.75},     {"cascade_blend", 0.0},
                                      {"stable", true},             {"shadow_distance", 0.0},
                                      {"shadow_fade", 0.1},         {"light_radius", 0.0},
-                                     {"angular_diameter", 0.0}};
+                                     {"angular_diameter", 0.0},    {"cull_unseen_casters", true}};
     EXPECT_EQ(shadowmap::printSettings(ShadowSettings{}), expected);
     EXPECT_EQ(roundTrip(ShadowSettings{}), ShadowSettings{});
     // The float 0.4 prints as the decimal it was written as, not 0.4000000059604645.

@@ -28,6 +28,8 @@ public:
     bool bilinearCompare() const override { return false; }
     bool comparesInHardware() const override { return false; }
     const char* glslName() const override { return "pcss"; }
+    // Its blocker search and filter reach at most kMaxRadiusTexels.
+    double reachTexels(const ShadowSettings&) const override { return kMaxRadiusTexels + 1.0; }
     const char* glsl() const override;  // shaders/lookup/pcss.glsl
 };
 

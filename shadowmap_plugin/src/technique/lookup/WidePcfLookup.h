@@ -12,6 +12,7 @@ public:
     Filter filter() const override { return Filter::Pcf; }
     bool bilinearCompare() const override { return true; }
     const char* glslName() const override { return "widePcf"; }
+    double reachTexels(const ShadowSettings& settings) const override { return settings.filterRadius + 1.0; }
     const char* glsl() const override;  // shaders/lookup/widePcf.glsl
 };
 

@@ -1,0 +1,208 @@
+#include "technique/UnseenShadows.h"
+
+#include "technique/Techniques.h"
+
+#include "engine/scene/FrustumCull.h"
+
+#include <array>
+#include <cmath>
+#include <limits>
+
+namespace shadowmap {
+
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+// A box as one view of the map sees it: its rectangle and depth range in clip space (x, y,
+// z over w), unclipped; everything when a corner is at or behind a perspective light's plane.
+struct ClipBox {
+    glm::dvec3 min{kInfinity}, max{-kInfinity};
+
+    static ClipBox of(const glm::dmat4& viewProjection, const engine::Aabb& box) {
+        ClipBox out;
+        for (int corner = 0; corner < 8; ++corner) {
+            const glm::dvec3 point((corner & 1) ? box.max.x : box.min.x, (corner & 2) ? box.max.y : box.min.y,
+                                   (corner & 4) ? box.max.z : box.min.z);
+            const glm::dvec4 clip = viewProjection * glm::dvec4(point, 1.0);
+            if (!(clip.w > 0.0)) return {glm::dvec3(-kInfinity), glm::dvec3(kInfinity)};
+            const glm::dvec3 ndc = glm::dvec3(clip) / clip.w;
+            out.min = glm::min(out.min, ndc);
+            out.max = glm::max(out.max, ndc);
+        }
+        return out;
+    }
+};
+
+// Whether a caster at `caster` can darken some texel a lookup for `receiver` reads. Depth
+// grows away from the light in both projections (perspective and orthographic, GL's
+// convention; reversed Z is applied in the depth pass, not in this matrix).
+bool canShade(const ClipBox& caster, const ClipBox& receiver, double reachNdc) {
+    return caster.min.x <= receiver.max.x + reachNdc && caster.max.x >= receiver.min.x - reachNdc &&
+           caster.min.y <= receiver.max.y + reachNdc && caster.max.y >= receiver.min.y - reachNdc &&
+           caster.min.z <= receiver.max.z;
+}
+
+// The texels around its centre a lookup of this light may read: its filter's reach, the
+// normal offset's shift of the receiver, and one for the bilinear footprint's rounding.
+double reachTexels(const ShadowSettings& settings) {
+    return mapLookupFor(settings).reachTexels(settings) + settings.normalOffset + 1.0;
+}
+
+// Whether every caster left out of `rendered` is left out of `now` too.
+bool holdsEveryNeededCaster(const std::vector<bool>& rendered, const std::vector<bool>& now) {
+    for (std::size_t i = 0; i < rendered.size(); ++i)
+        if (rendered[i] && !(i < now.size() && now[i])) return false;
+    return true;
+}
+
+// The camera's frustum in world space: its six planes (inside: dot(plane, (p, 1)) >= 0)
+// and eight corners; false when it has no finite far corner (an infinite far plane).
+struct WorldFrustum {
+    std::array<glm::dvec4, 6> planes;
+    std::array<glm::dvec3, 8> corners;
+};
+
+bool worldFrustum(const engine::FrameCamera& camera, WorldFrustum& out) {
+    const glm::dmat4 viewProjection = camera.projection * glm::inverse(camera.eyeToWorld);
+    const glm::dmat4 rows = glm::transpose(viewProjection);  // rows[i]: row i of the matrix
+    for (int axis = 0; axis < 3; ++axis) {
+        out.planes[2 * axis] = rows[3] + rows[axis];
+        out.planes[2 * axis + 1] = rows[3] - rows[axis];
+    }
+    const glm::dmat4 clipToWorld = glm::inverse(viewProjection);
+    for (int corner = 0; corner < 8; ++corner) {
+        const glm::dvec4 world =
+            clipToWorld * glm::dvec4((corner & 1) ? 1.0 : -1.0, (corner & 2) ? 1.0 : -1.0, (corner & 4) ? 1.0 : -1.0, 1.0);
+        const glm::dvec3 point = glm::dvec3(world) / world.w;
+        if (!(std::abs(world.w) > 0.0) || !std::isfinite(point.x) || !std::isfinite(point.y) || !std::isfinite(point.z))
+            return false;
+        out.corners[corner] = point;
+    }
+    return true;
+}
+
+// The 12 edges of a box (or frustum) by the indices of their corners (bit 0: x, 1: y, 2: z).
+constexpr std::array<std::array<int, 2>, 12> kEdges{{{0, 1}, {2, 3}, {4, 5}, {6, 7}, {0, 2}, {1, 3},
+                                                     {4, 6}, {5, 7}, {0, 4}, {1, 5}, {2, 6}, {3, 7}}};
+
+// The box around `box` cut by the frustum: the corners of each inside the other and where
+// the edges of each cross the faces of the other. Empty when they do not meet. Inside
+// tests allow a relative tolerance, so a point on a face counts.
+engine::Aabb cutToFrustum(const engine::Aabb& box, const WorldFrustum& frustum) {
+    const double tolerance = 1e-9 * (1.0 + glm::length(box.max - box.min));
+    const auto inFrustum = [&](const glm::dvec3& p) {
+        for (const glm::dvec4& plane : frustum.planes)
+            if (glm::dot(plane, glm::dvec4(p, 1.0)) < -tolerance * glm::length(glm::dvec3(plane))) return false;
+        return true;
+    };
+    const auto inBox = [&](const glm::dvec3& p) {
+        return glm::all(glm::greaterThanEqual(p, box.min - tolerance)) && glm::all(glm::lessThanEqual(p, box.max + tolerance));
+    };
+    std::array<glm::dvec3, 8> boxCorners;
+    for (int corner = 0; corner < 8; ++corner)
+        boxCorners[corner] = {(corner & 1) ? box.max.x : box.min.x, (corner & 2) ? box.max.y : box.min.y,
+                              (corner & 4) ? box.max.z : box.min.z};
+    engine::Aabb cut;
+    const auto keep = [&](const glm::dvec3& p) {
+        if (inFrustum(p) && inBox(p)) cut.extend(p);
+    };
+    for (const glm::dvec3& corner : boxCorners) keep(corner);
+    for (const glm::dvec3& corner : frustum.corners) keep(corner);
+    // The box's edges against the frustum's planes.
+    for (const auto& edge : kEdges) {
+        const glm::dvec3 a = boxCorners[edge[0]], b = boxCorners[edge[1]];
+        for (const glm::dvec4& plane : frustum.planes) {
+            const double da = glm::dot(plane, glm::dvec4(a, 1.0)), db = glm::dot(plane, glm::dvec4(b, 1.0));
+            if ((da < 0.0) != (db < 0.0)) keep(a + (b - a) * (da / (da - db)));
+        }
+    }
+    // The frustum's edges against the box's faces.
+    for (const auto& edge : kEdges) {
+        const glm::dvec3 a = frustum.corners[edge[0]], b = frustum.corners[edge[1]];
+        for (int axis = 0; axis < 3; ++axis)
+            for (const double face : {box.min[axis], box.max[axis]}) {
+                const double da = a[axis] - face, db = b[axis] - face;
+                if ((da < 0.0) != (db < 0.0)) keep(a + (b - a) * (da / (da - db)));
+            }
+    }
+    return cut;
+}
+
+} // namespace
+
+std::vector<engine::Aabb> visibleReceiverParts(const std::vector<engine::Aabb>& visibleReceivers,
+                                               const engine::FrameCamera& camera) {
+    WorldFrustum frustum;
+    if (!worldFrustum(camera, frustum)) return visibleReceivers;
+    std::vector<engine::Aabb> parts;
+    for (const engine::Aabb& box : visibleReceivers) {
+        const engine::Aabb part = cutToFrustum(box, frustum);
+        // The frustum test let the box through: where the cut finds nothing (rounding at a
+        // grazing face), the whole box stands in.
+        parts.push_back(part.empty() ? box : part);
+    }
+    return parts;
+}
+
+std::vector<bool> castersWithUnseenShadows(const glm::dmat4& viewProjection,
+                                           std::span<const engine::Aabb> visibleReceivers,
+                                           const engine::Scene& scene, double reachNdc,
+                                           bool withNonCastingReceivers) {
+    std::vector<ClipBox> receivers;
+    receivers.reserve(visibleReceivers.size());
+    for (const engine::Aabb& box : visibleReceivers) receivers.push_back(ClipBox::of(viewProjection, box));
+    std::vector<bool> unseen(scene.meshInstances.size(), false);
+    for (std::size_t i = 0; i < scene.meshInstances.size(); ++i) {
+        const engine::MeshInstance& instance = scene.meshInstances[i];
+        if (!instance.castShadows && !(withNonCastingReceivers && instance.receiveShadows)) continue;
+        if (!engine::boxIntersectsFrustum(viewProjection, instance.worldBounds)) continue;  // culled anyway
+        const ClipBox caster = ClipBox::of(viewProjection, instance.worldBounds);
+        bool seen = false;
+        for (const ClipBox& receiver : receivers) seen = seen || canShade(caster, receiver, reachNdc);
+        unseen[i] = !seen;
+    }
+    return unseen;
+}
+
+void planUnseenShadows(LightState& light, const PlanContext& context) {
+    LightShadowFrame& plan = light.frame;
+    plan.unseenCasters.clear();
+    if (!light.settings.cullUnseenCasters || light.settings.variant == Variant::Woo) return;
+    const MapProjection& projection = *mapProjection(plan.kind);
+    const DepthTechnique* technique = depthTechnique(light.settings.variant);
+    const bool withReceivers = technique && technique->drawsNonCastingReceivers();
+    const double reachNdc = 2.0 * reachTexels(light.settings) / light.settings.resolution;
+    const std::vector<engine::Aabb> receivers = visibleReceiverParts(context.bounds.receivers, context.camera);
+    for (const MapLayer& layer : projection.layers(light)) {
+        const std::size_t index = layerIndex(layer.layer);
+        if (plan.unseenCasters.size() <= index) plan.unseenCasters.resize(index + 1);
+        if (!layer.drawsCasters) continue;
+        plan.unseenCasters[index] = castersWithUnseenShadows(layer.viewProjection, receivers,
+                                                             context.scene, reachNdc, withReceivers);
+    }
+}
+
+void keepCachedMapsThatHoldTheNeededCasters(LightState& light) {
+    LightShadowFrame& plan = light.frame;
+    static const std::vector<bool> none;
+    auto holds = [&](std::size_t index) {
+        const std::vector<bool>& rendered = index < light.renderedUnseen.size() ? light.renderedUnseen[index] : none;
+        const std::vector<bool>& now = index < plan.unseenCasters.size() ? plan.unseenCasters[index] : none;
+        return holdsEveryNeededCaster(rendered, now);
+    };
+    if (plan.kind == MapKind::Cascades) {
+        bool all = true;
+        for (std::size_t c = 0; c < plan.cascadeHits.size(); ++c) {
+            if (plan.cascadeHits[c] && !holds(c)) plan.cascadeHits[c] = false;
+            all = all && plan.cascadeHits[c];
+        }
+        plan.cacheHit = all;
+        return;
+    }
+    if (!plan.cacheHit) return;
+    for (std::size_t index = 0; index < light.renderedUnseen.size(); ++index)
+        if (!holds(index)) plan.cacheHit = false;
+}
+
+} // namespace shadowmap
