@@ -29,6 +29,7 @@
 #include <cstdio>
 #include <iostream>
 #include <map>
+#include <numeric>
 
 namespace {
 
@@ -335,10 +336,13 @@ int run(const RenderOptions& options, std::unique_ptr<engine::GlContext>& contex
     nlohmann::json shadeCacheFrames = nlohmann::json::array();  // per timed frame
     int framesComputingShade = 0;  // timed frames whose lit pass recomputed a cacheable light
     int framesLimitingLookups = 0;  // timed frames that looked some light up only in its footprint
+    std::vector<int> programsLinked;  // per timed frame: each one waited for the shader compiler
     // Untimed: at least --warmup frames, then until a frame compiles nothing new (the shade
     // cache's fetching programs appear in the second frame), so the first timed frame times
     // rendering, not shader compilation. --warmup 0 times the cold start.
-    if (options.warmup > 0) renderer.warmUp(request, options.warmup, options.warmup + kExtraWarmupFrames);
+    // With something to move, warm-up also compiles what the first moving frames need.
+    const bool moves = options.orbitCamera || orbitingLight >= 0 || playback.animating;
+    if (options.warmup > 0) renderer.warmUp(request, options.warmup, options.warmup + kExtraWarmupFrames, moves);
     for (int frame = 0; frame < options.frames; ++frame) {
         if (frame > 0 && playback.animating) {
             tools::poseScene(scene, playback, playback.secondsAtFrame(frame));
@@ -351,6 +355,7 @@ int run(const RenderOptions& options, std::unique_ptr<engine::GlContext>& contex
             request.camera.eyeToWorld = engine::orbitTransform(request.camera.eyeToWorld, orbitCenter, kOrbitStep);
         last = renderer.renderFrame(request);
         frameMs.push_back(last.frameMs);
+        programsLinked.push_back(last.programsLinked);
         shadeCacheFrames.push_back(last.shadeCache.toJson());
         framesLimitingLookups += last.footprintLimitedLights.empty() ? 0 : 1;
         framesComputingShade += last.shadeCache.recomputed() ? 1 : 0;
@@ -424,8 +429,16 @@ int run(const RenderOptions& options, std::unique_ptr<engine::GlContext>& contex
                     "%d regions); lookups limited in %d of %d frames\n",
                     nlohmann::json(last.footprintLimitedLights).dump().c_str(), last.shadingRegions,
                     framesLimitingLookups, options.frames);
+    const int linkedAfterWarmUp = std::accumulate(programsLinked.begin(), programsLinked.end(), 0);
+    if (linkedAfterWarmUp > 0) {
+        int framesLinking = 0;
+        for (const int linked : programsLinked) framesLinking += linked > 0 ? 1 : 0;
+        std::printf("  shader programs: %d linked after warm-up, in %d of %d timed frames\n", linkedAfterWarmUp,
+                    framesLinking, options.frames);
+    }
     nlohmann::json stats = statsJson(options, frameMs, order, passes, mapTimes, last);
     stats["shade_cache"] = shadeCacheFrames;
+    stats["programs_linked"] = programsLinked;
     const engine::RendererSwitches& switches = renderer.switches();
     stats["renderer_switches"] = {{"shade_cache", switches.shadeCache},
                                   {"light_footprints", switches.lightFootprints},

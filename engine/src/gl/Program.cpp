@@ -5,6 +5,7 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include <atomic>
 #include <type_traits>
 
 namespace engine::gl {
@@ -46,7 +47,14 @@ public:
 
 } // namespace
 
+namespace {
+std::atomic<std::uint64_t> linkedPrograms{0};
+}
+
+std::uint64_t Program::linkedCount() { return linkedPrograms.load(); }
+
 Program Program::compile(const std::string& name, const std::vector<Stage>& stages) {
+    ++linkedPrograms;
     Program program(glCreateProgram(), Ownership::Adopt, {name, {}});
     std::vector<Shader> shaders;
     shaders.reserve(stages.size());

@@ -97,6 +97,23 @@ std::vector<LimitCandidate> lightsWorthLimiting(std::vector<LimitCandidate> cand
 
 } // namespace
 
+ShadeCache::Plan withoutLookups(ShadeCache::Plan plan, const std::vector<int>& slots) {
+    for (const int slot : slots) {
+        plan.sources[slot] = ShadeCache::Source::Constant;
+        plan.constants[slot] = 1.0f;
+    }
+    return plan;
+}
+
+std::vector<int> footprintLimitableLights(const Scene& scene, const ShadeCache::Plan& plan) {
+    std::vector<int> slots;
+    for (int slot = 0; slot < static_cast<int>(plan.sources.size()); ++slot)
+        if (evaluatedUnstored(plan, slot) &&
+            scene.lights[scene.lightInstances[slot].light].type != Light::Type::Directional)
+            slots.push_back(slot);
+    return slots;
+}
+
 FootprintSplit splitByLightFootprints(const Frame& frame, const ShadeCache::Plan& shadePlan) {
     const FrameCamera& camera = frame.camera();
     FootprintSplit result;
@@ -118,13 +135,10 @@ FootprintSplit splitByLightFootprints(const Frame& frame, const ShadeCache::Plan
     if (limited.empty()) return result;
     result.regions.clear();
     for (const ShadingRegion& region : split) {
-        ShadeCache::Plan plan = shadePlan;
+        std::vector<int> outside;
         for (std::size_t i = 0; i < limited.size(); ++i)
-            if (!(region.footprints & (1u << i))) {
-                plan.sources[limited[i].slot] = ShadeCache::Source::Constant;
-                plan.constants[limited[i].slot] = 1.0f;
-            }
-        result.regions.emplace_back(region.rect, std::move(plan));
+            if (!(region.footprints & (1u << i))) outside.push_back(limited[i].slot);
+        result.regions.emplace_back(region.rect, withoutLookups(shadePlan, outside));
     }
     for (const LimitCandidate& light : limited) result.limitedLights.push_back(light.slot);
     std::sort(result.limitedLights.begin(), result.limitedLights.end());

@@ -46,10 +46,150 @@ std::uint64_t shadeViewKey(const Frame& frame, std::uint64_t sceneGeneration) {
     return hasher.value();
 }
 
+// Warm-up for motion compiles a region's programs for every subset of the lights a split may
+// limit, up to this many lights (2^4 = 16 plans per material variant); with more, only the
+// regions of the warm-up's view. Measured on llvmpipe at 1280x720, a one-frame engine-render
+// run, still against --orbit-camera: lamps (four spots) 0.75 -> 4.16 s, showcase 0.67 ->
+// 1.32 s; in return no frame of a 90-frame orbit compiles (max frame 1448 -> 46 ms, lamps).
+constexpr std::size_t kMaxWarmedUpSplitLights = 4;
+
+// Each light's dimming as the hook gives it (0 without a hook), for uLightDimming.
+std::vector<float> lightDimming(const Frame& frame) {
+    std::vector<float> dimming(kMaxLights, 0.0f);
+    if (const auto& hook = frame.lightVisibility())
+        std::copy_n(hook->dimming.begin(), std::min<std::size_t>(hook->dimming.size(), kMaxLights), dimming.begin());
+    return dimming;
+}
+
+// The plan of a frame in which every cached light's shade changes again: each evaluated and
+// none stored (ShadeCache's Moving source), as a camera or light in motion asks for it.
+ShadeCache::Plan movingPlan(ShadeCache::Plan plan) {
+    for (std::size_t slot = 0; slot < plan.sources.size(); ++slot)
+        if (plan.channels[slot] >= 0) plan.sources[slot] = ShadeCache::Source::Moving;
+    plan.readArray = 0;
+    plan.writeArray = 0;
+    return plan;
+}
+
 } // namespace
 
 LitPass::LitPass(const RendererConfig& config, const RendererSwitches& switches)
     : config_(config), switches_(switches), programs_(config) {}
+
+void LitPass::setWarmingUp(bool warmingUp, bool forMotion) {
+    warmingUp_ = warmingUp;
+    warmingUpForMotion_ = warmingUp && forMotion;
+}
+
+const LightVisibilityHook* LitPass::hookFor(const Frame& frame, const ShadeCache::Plan& plan, LitOutput output) const {
+    const auto& hook = frame.lightVisibility();
+    // A shaded image that takes every light's shade from the cache needs none of the hook's
+    // code: leaving it out spares llvmpipe its interpolated inputs and uniforms (measured:
+    // 16.8 -> 15.7 ms for the showcase at 1280x720, whose unshadowed frame takes 14.0).
+    return hook && (output != LitOutput::Color || plan.evaluatesHook()) ? &*hook : nullptr;
+}
+
+bool LitPass::compiledFor(const Frame& frame, const ShadeCache::Plan& plan, LitOutput output, const std::string& lights,
+                          const std::vector<unsigned>& variants) const {
+    const LightVisibilityHook* hook = hookFor(frame, plan, output);
+    const std::string loadShades = plan.glsl();
+    return std::all_of(variants.begin(), variants.end(), [&](unsigned variant) {
+        return programs_.compiled(hook, lights, output, loadShades, variant) != nullptr;
+    });
+}
+
+void LitPass::compileFor(const Frame& frame, const ShadeCache::Plan& plan, LitOutput output, const std::string& lights,
+                         const std::vector<unsigned>& variants) {
+    const LightVisibilityHook* hook = hookFor(frame, plan, output);
+    const std::string loadShades = plan.glsl();
+    for (const unsigned variant : variants) programs_.programFor(hook, lights, output, loadShades, variant);
+}
+
+std::vector<LitPass::WarmUpDraw> LitPass::compileForMotion(const Frame& frame, const std::string& lights,
+                                                           const std::vector<unsigned>& variants) {
+    // Nothing cached: a moving frame's plan is this frame's.
+    const ShadeCache::Plan moving = shadePlan_.layers > 0 ? movingPlan(shadePlan_) : shadePlan_;
+    std::vector<ShadeCache::Plan> plans{moving};
+    if (switches_.lightFootprints) {
+        // Which lights a moving camera's split leaves out of a region changes as it moves:
+        // every subset of the lights it may limit, while they are few; else this view's.
+        const std::vector<int> limitable = footprintLimitableLights(frame.scene(), moving);
+        if (limitable.size() <= kMaxWarmedUpSplitLights) {
+            for (unsigned subset = 1; subset < (1u << limitable.size()); ++subset) {
+                std::vector<int> outside;
+                for (std::size_t i = 0; i < limitable.size(); ++i)
+                    if (subset & (1u << i)) outside.push_back(limitable[i]);
+                plans.push_back(withoutLookups(moving, outside));
+            }
+        } else {
+            for (const auto& [rect, plan] : splitByLightFootprints(frame, moving).regions) plans.push_back(plan);
+        }
+    }
+    std::vector<WarmUpDraw> draws;
+    for (const ShadeCache::Plan& plan : plans) {
+        const LightVisibilityHook* hook = hookFor(frame, plan, LitOutput::Color);
+        const std::string loadShades = plan.glsl();
+        for (const unsigned variant : variants)
+            draws.push_back({&programs_.programFor(hook, lights, LitOutput::Color, loadShades, variant), variant,
+                             hook != nullptr});
+    }
+    return draws;
+}
+
+void LitPass::addWarmUpPass(Frame& frame, std::vector<WarmUpDraw> draws) {
+    const auto& hook = frame.lightVisibility();
+    const std::vector<float> dimming = lightDimming(frame);
+    frame.graph().addPass(
+        "lit_warm_up",
+        [&](PassBuilder& builder) {
+            if (hook)
+                for (ResourceHandle read : hook->reads) builder.read(read);
+            const int samples = config_.msaa;
+            PassTargets targets;
+            targets.colors.push_back(
+                {builder.create("lit_warm_up_color", {1, 1, kLitColorFormat, 1, false, samples}), -1, std::nullopt});
+            targets.depth = DepthTarget{builder.create("lit_warm_up_depth", {1, 1, kLitDepthFormat, 1, false, samples}),
+                                        -1, 1.0f};
+            builder.setTargets(targets);
+            PassState state;  // as the lit pass's
+            state.srgbWrites = true;
+            builder.setState(state);
+            builder.sideEffect();  // what it draws is thrown away: it is drawn for the compiling
+        },
+        [this, &frame, draws = std::move(draws), dimming](PassContext& context) {
+            const auto& hook = frame.lightVisibility();
+            lights_.upload(frame.scene(), frame.camera());
+            glBindBufferBase(GL_UNIFORM_BUFFER, kLightsUniformBinding, lights_.buffer());
+            const Scene& scene = frame.scene();
+            const glm::dmat4 view = glm::inverse(frame.camera().eyeToWorld);
+            for (const WarmUpDraw& draw : draws) {
+                draw.program->use();
+                draw.program->set("uProjection", glm::mat4(frame.camera().projection));
+                draw.program->set("uAmbient", config_.ambient);
+                draw.program->set("uExposure", config_.exposure);
+                draw.program->set("uMaskLight", -1);
+                draw.program->set("uLightDimming", dimming);
+                if (draw.evaluatesHook && hook && hook->bind) hook->bind(*draw.program, context);
+                // The first primitive of the program's material variant, drawn as the lit pass draws it.
+                for (const MeshInstance& instance : scene.meshInstances) {
+                    const SceneGpu::Primitive* found = nullptr;
+                    for (const SceneGpu::Primitive& primitive : frame.gpu().primitives(instance))
+                        if (materialFeatures(scene, frame.gpu(), primitive, MaterialUse::Shading) == draw.variant) {
+                            found = &primitive;
+                            break;
+                        }
+                    if (!found) continue;
+                    const glm::dmat4 modelView = view * frame.gpu().modelMatrix(instance);
+                    draw.program->set("uModelView", glm::mat4(modelView));
+                    draw.program->set("uNormalMatrix", glm::mat3(glm::transpose(glm::inverse(glm::dmat3(modelView)))));
+                    draw.program->set("uReceiveShadows", 1);
+                    applyMaterial(*draw.program, scene, frame.gpu(), *found, draw.variant, MaterialUse::Shading);
+                    context.countDraw(frame.gpu().draw(*found));
+                    break;
+                }
+            }
+        });
+}
 
 void LitPass::drawScene(const Frame& frame, const std::vector<Region>& regions, PassContext& context) {
     const Scene& scene = frame.scene();
@@ -131,6 +271,8 @@ void LitPass::addPass(Frame& frame, const std::string& name, ResourceHandle targ
                                : ShadeCache::uncached(lightCount);
     }
     const bool color = output == LitOutput::Color;
+    const std::string lights = lightDefines(frame.scene(), lightCount, switches_.unrolledLightSum);
+    const std::vector<unsigned> variants = variantsInUse(frame.scene(), frame.gpu());
     // The shaded image may be split by light footprints, each region with a shade plan of its
     // own; the per-light views always ask the hook, everywhere.
     std::vector<std::pair<PixelRect, ShadeCache::Plan>> plans{
@@ -138,34 +280,37 @@ void LitPass::addPass(Frame& frame, const std::string& name, ResourceHandle targ
          color ? shadePlan_ : ShadeCache::uncached(lightCount)}};
     if (color) {
         footprintLimitedLights_.clear();
+        // A frame waits for the compiler only while warming up or when the whole target's
+        // programs are new anyway: a split whose regions would need new programs is left out
+        // otherwise (measured on the lamps' orbit: 1.1-1.5 s frames, each compiling 6).
+        const bool mayCompile = warmingUp_ || !compiledFor(frame, shadePlan_, output, lights, variants);
+        if (warmingUpForMotion_) addWarmUpPass(frame, compileForMotion(frame, lights, variants));
         if (switches_.lightFootprints) {
             FootprintSplit split = splitByLightFootprints(frame, shadePlan_);
-            plans = std::move(split.regions);
-            footprintLimitedLights_ = std::move(split.limitedLights);
+            const bool ready = mayCompile || std::all_of(split.regions.begin(), split.regions.end(), [&](const auto& region) {
+                                   return compiledFor(frame, region.second, output, lights, variants);
+                               });
+            if (ready) {
+                plans = std::move(split.regions);
+                footprintLimitedLights_ = std::move(split.limitedLights);
+            }
         }
         shadingRegionCount_ = static_cast<int>(plans.size());
     }
-    const std::string lights = lightDefines(frame.scene(), lightCount, switches_.unrolledLightSum);
-    const std::vector<unsigned> variants = variantsInUse(frame.scene(), frame.gpu());
     std::vector<Region> regions;
     bool evaluatesHook = false;
     for (const auto& [rect, plan] : plans) {
         Region& region = regions.emplace_back();
         region.rect = rect;
-        // A shaded image that takes every light's shade from the cache needs none of the hook's
-        // code: leaving it out spares llvmpipe its interpolated inputs and uniforms (measured:
-        // 16.8 -> 15.7 ms for the showcase at 1280x720, whose unshadowed frame takes 14.0).
-        region.evaluatesHook = hook && (!color || plan.evaluatesHook());
+        const LightVisibilityHook* regionHook = hookFor(frame, plan, output);
+        region.evaluatesHook = regionHook != nullptr;
         evaluatesHook = evaluatesHook || region.evaluatesHook;
         const std::string loadShadesGlsl = plan.glsl();
         for (const unsigned variant : variants)
-            region.programs[variant] =
-                &programs_.programFor(region.evaluatesHook ? &*hook : nullptr, lights, output, loadShadesGlsl, variant);
+            region.programs[variant] = &programs_.programFor(regionHook, lights, output, loadShadesGlsl, variant);
     }
     const LightVisibilityHook* shading = evaluatesHook ? &*hook : nullptr;
-    std::vector<float> dimming(kMaxLights, 0.0f);
-    if (hook)
-        std::copy_n(hook->dimming.begin(), std::min<std::size_t>(hook->dimming.size(), kMaxLights), dimming.begin());
+    const std::vector<float> dimming = lightDimming(frame);
     // Setup runs inside addPass, after both callbacks were built: share the handles it
     // declares with the execute callback through one small heap object.
     struct Handles { ResourceHandle target, depth; };

@@ -31,13 +31,23 @@ constexpr const char* kNoTexgenGlsl = "void lightTexgen(vec3 eyePosition) {}\n";
 
 } // namespace
 
-const gl::Program& LitPrograms::programFor(const LightVisibilityHook* hook, const std::string& lightDefinesGlsl,
-                                           LitOutput output, const std::string& loadShadesGlsl, unsigned variant) {
+LitPrograms::ProgramKey LitPrograms::keyFor(const LightVisibilityHook* hook, const std::string& lightDefinesGlsl,
+                                            LitOutput output, const std::string& loadShadesGlsl, unsigned variant) {
     // A hook without a version is known by its text (Frame.h).
     std::string hookIdentity;
     if (hook) hookIdentity = hook->glslVersion ? hook->owner : hook->owner + '\0' + hook->glsl + '\0' + hook->vertexGlsl;
-    ProgramKey key{std::move(hookIdentity), hook ? hook->glslVersion : 0, lightDefinesGlsl, loadShadesGlsl, output,
-                   variant};
+    return {std::move(hookIdentity), hook ? hook->glslVersion : 0, lightDefinesGlsl, loadShadesGlsl, output, variant};
+}
+
+const gl::Program* LitPrograms::compiled(const LightVisibilityHook* hook, const std::string& lightDefinesGlsl,
+                                         LitOutput output, const std::string& loadShadesGlsl, unsigned variant) const {
+    const auto found = programs_.find(keyFor(hook, lightDefinesGlsl, output, loadShadesGlsl, variant));
+    return found == programs_.end() ? nullptr : found->second.get();
+}
+
+const gl::Program& LitPrograms::programFor(const LightVisibilityHook* hook, const std::string& lightDefinesGlsl,
+                                           LitOutput output, const std::string& loadShadesGlsl, unsigned variant) {
+    ProgramKey key = keyFor(hook, lightDefinesGlsl, output, loadShadesGlsl, variant);
     auto found = programs_.find(key);
     if (found != programs_.end()) return *found->second;
     const std::string visibilityGlsl = hook ? hook->glsl : kNoShadowsGlsl;

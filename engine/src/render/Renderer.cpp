@@ -102,16 +102,17 @@ void Renderer::reloadSettings() {
     for (RenderPlugin* plugin : plugins_) plugin->reloadSettings(*scene_);
 }
 
-int Renderer::warmUp(const FrameRequest& request, int minFrames, int maxFrames) {
+int Renderer::warmUp(const FrameRequest& request, int minFrames, int maxFrames, bool forMotion) {
     FrameRequest untimed = request;
     untimed.timing = false;
     int frames = 0;
+    litPass_->setWarmingUp(true, forMotion);
     while (frames < maxFrames) {
-        const std::size_t compiled = litPass_->programCount();
-        renderFrame(untimed);
+        const FrameResult result = renderFrame(untimed);
         ++frames;
-        if (frames >= minFrames && litPass_->programCount() == compiled) break;
+        if (frames >= minFrames && result.programsLinked == 0) break;
     }
+    litPass_->setWarmingUp(false, false);
     // Untimed frames are not waited for: without this the first timed pass's glFinish would
     // wait for the warm-up frames' rasterizing still queued (llvmpipe runs it in threads).
     glFinish();
@@ -120,6 +121,7 @@ int Renderer::warmUp(const FrameRequest& request, int minFrames, int maxFrames) 
 
 FrameResult Renderer::renderFrame(const FrameRequest& request) {
     const auto start = std::chrono::steady_clock::now();
+    const std::uint64_t linkedBefore = gl::Program::linkedCount();
     const int width = request.camera.width, height = request.camera.height;
     if (!color_.id() || color_.width() != width || color_.height() != height)
         color_ = gl::Texture::create2D(internalFormatFor(kLitColorFormat), width, height);
@@ -204,6 +206,7 @@ FrameResult Renderer::renderFrame(const FrameRequest& request) {
     result.footprintLimitedLights = litPass_->footprintLimitedLights();
     result.shadingRegions = litPass_->shadingRegionCount();
     for (RenderPlugin* plugin : plugins_) result.pluginStats[plugin->name()] = plugin->frameStats();
+    result.programsLinked = static_cast<int>(gl::Program::linkedCount() - linkedBefore);
     result.frameMs =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     return result;

@@ -41,7 +41,7 @@ protected:
     // limited renderer's frame.
     static engine::FrameResult expectSameFrame(Pair& pair, engine::FrameRequest request, int lightCount,
                                                const std::string& what) {
-        for (int slot = 0; slot < lightCount; ++slot) request.shadowMaskSlots.push_back(slot);
+        request = withMasks(request, lightCount);
         const engine::FrameResult result = pair.limited.renderFrame(request);
         const engine::FrameResult reference = pair.everywhere.renderFrame(request);
         EXPECT_TRUE(reference.footprintLimitedLights.empty()) << what;
@@ -60,6 +60,12 @@ protected:
         return differing;
     }
 
+    // `request` also asking for the masks of lights 0 .. lightCount-1 (as expectSameFrame does).
+    static engine::FrameRequest withMasks(engine::FrameRequest request, int lightCount) {
+        for (int slot = 0; slot < lightCount; ++slot) request.shadowMaskSlots.push_back(slot);
+        return request;
+    }
+
     static engine::Scene contentScene(const char* name) {
         return engine::loadGltf(std::filesystem::path(CONTENT_DIR) / "scenes" / name);
     }
@@ -74,6 +80,9 @@ TEST_F(LightFootprintTest, TheShowcaseOrbitedShadesAsWithEveryLookup) {
     Pair pair(scene, true);
     engine::FrameRequest request;
     request.camera = engine::cameraFromScene(scene, 0, 320, 180);
+    // After warm-up a frame compiles no region's programs (it draws unsplit instead): warmed
+    // up for motion, the split's programs exist from the start.
+    pair.limited.warmUp(request, 1, 4, true);
     int framesLimited = 0;
     for (int frame = 0; frame < 6; ++frame) {
         const engine::FrameResult result = expectSameFrame(pair, request, 3, "frame " + std::to_string(frame));
@@ -84,9 +93,53 @@ TEST_F(LightFootprintTest, TheShowcaseOrbitedShadesAsWithEveryLookup) {
         }
         request.camera.eyeToWorld = engine::orbitTransform(request.camera.eyeToWorld, {0, 0.6, 0.5}, 0.5);
     }
-    // Frames 0 and 1 compute and store every shade (not limited); from frame 2 on the lights
-    // are moving.
+    // Frame 0 fetches what warm-up stored, frame 1 computes and stores every shade (neither
+    // limited); from frame 2 on the lights are moving.
     EXPECT_GE(framesLimited, 3);
+}
+
+TEST_F(LightFootprintTest, AfterWarmUpNoFrameOfAnOrbitCompilesAndEachShadesAsWithEveryLookup) {
+    // The lamps, orbited: warmed up for motion, no frame links a program (each would be a
+    // frame of 0.3-1.5 s on llvmpipe), the split still limits lamps, and every frame is the
+    // image of a renderer that looks every lamp up everywhere.
+    const engine::Scene scene = contentScene("lamps.gltf");
+    Pair pair(scene, true);
+    engine::FrameRequest request;
+    request.camera = engine::cameraFromScene(scene, 0, 160, 90);
+    pair.limited.warmUp(withMasks(request, 4), 1, 4, true);
+    int framesLimited = 0;
+    for (int frame = 0; frame < 12; ++frame) {
+        const std::string what = "frame " + std::to_string(frame);
+        const engine::FrameResult result = expectSameFrame(pair, request, 4, what);
+        EXPECT_EQ(result.programsLinked, 0) << what;
+        framesLimited += result.footprintLimitedLights.empty() ? 0 : 1;
+        request.camera.eyeToWorld = engine::orbitTransform(request.camera.eyeToWorld, {0, 0, 0}, 0.3);
+    }
+    // Measured: 5 of the 12 (frames 0 and 1 fetch and compute; from frame 2 the split limits
+    // lamps where the view makes it pay). Without its programs it would limit none.
+    EXPECT_GE(framesLimited, 4);
+}
+
+TEST_F(LightFootprintTest, WithoutWarmUpForMotionARegionWithoutProgramsIsDrawnUnsplit) {
+    // Warmed up for a still view only: the first moving frame compiles what it must (its
+    // whole target's programs, and its split's), later frames compile nothing and draw a
+    // region whose programs are missing unsplit: still the image with every lookup.
+    const engine::Scene scene = contentScene("lamps.gltf");
+    Pair pair(scene, true);
+    engine::FrameRequest request;
+    request.camera = engine::cameraFromScene(scene, 0, 160, 90);
+    pair.limited.warmUp(withMasks(request, 4), 1, 4, false);
+    int framesUnsplit = 0;
+    for (int frame = 0; frame < 12; ++frame) {
+        const std::string what = "frame " + std::to_string(frame);
+        const engine::FrameResult result = expectSameFrame(pair, request, 4, what);
+        // Frame 0 fetches, 1 computes (warm-up's programs), 2 is the first moving frame.
+        if (frame != 2) EXPECT_EQ(result.programsLinked, 0) << what;
+        if (frame > 2) framesUnsplit += result.shadingRegions == 1 ? 1 : 0;
+        request.camera.eyeToWorld = engine::orbitTransform(request.camera.eyeToWorld, {0, 0, 0}, 0.3);
+    }
+    // The orbit asks for regions the first moving frame did not compile.
+    EXPECT_GT(framesUnsplit, 0);
 }
 
 TEST_F(LightFootprintTest, ASpotPartlyOffScreenShadesAsWithEveryLookup) {

@@ -7,6 +7,7 @@
 
 #include <glm/glm.hpp>
 
+#include <cstdint>
 #include <string>
 #include <unordered_map>
 #include <utility>
@@ -36,6 +37,10 @@ public:
     // and quoting each source line the driver complains about (see ShaderLog.h).
     // The name also labels the program in GL debug output.
     static Program compile(const std::string& name, const std::vector<Stage>& stages);
+    // How many programs compile() has linked in this process: a frame that links one pays
+    // for it (llvmpipe also JIT-compiles at a program's first draw), so the renderer counts
+    // them per frame (FrameResult::programsLinked).
+    static std::uint64_t linkedCount();
 
     static Program wrap(GLuint name, std::string label = "wrapped",
                         Ownership ownership = Ownership::Adopt);

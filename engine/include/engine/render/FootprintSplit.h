@@ -22,4 +22,12 @@ struct FootprintSplit {
 
 FootprintSplit splitByLightFootprints(const Frame& frame, const ShadeCache::Plan& plan);
 
+// `plan` for a region outside the footprints of the lights `slots`: their shade is the
+// constant 1 (their light adds nothing there), so the region's programs look none of them up.
+ShadeCache::Plan withoutLookups(ShadeCache::Plan plan, const std::vector<int>& slots);
+
+// The lights a split may limit under `plan`: evaluated and not stored this frame, and not
+// directional (whose footprint is everything the camera sees).
+std::vector<int> footprintLimitableLights(const Scene& scene, const ShadeCache::Plan& plan);
+
 } // namespace engine

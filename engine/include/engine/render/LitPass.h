@@ -52,8 +52,13 @@ public:
     // Adds a pass drawing light `slot`'s view into `target` (an imported RGBA8 texture).
     void addLightViewTo(Frame& frame, int slot, LightView view, ResourceHandle target);
 
-    // How many lit programs have been compiled so far (Renderer::warmUp waits for it to stop growing).
-    std::size_t programCount() const { return programs_.count(); }
+    // While warming up (Renderer::warmUp), a frame compiles every program it could use; after
+    // it, a frame compiles only what it cannot draw without: a region of the footprint split
+    // whose programs are missing is drawn unsplit instead (the same image: outside its
+    // footprint a light adds exactly nothing). forMotion: the warm-up also compiles the
+    // programs a moving camera or light asks for next (ShadeCache's Moving source, whole
+    // target and split), so that the first moving frames compile nothing.
+    void setWarmingUp(bool warmingUp, bool forMotion);
 
 private:
     void addPass(Frame& frame, const std::string& name, ResourceHandle target, LitOutput output, int maskSlot);
@@ -69,6 +74,27 @@ private:
         bool evaluatesHook = false;  // its programs hold the visibility hook's code
     };
     void drawScene(const Frame& frame, const std::vector<Region>& regions, PassContext& context);
+    // The hook a region drawn with `plan` needs in its programs (null: none of its code).
+    const LightVisibilityHook* hookFor(const Frame& frame, const ShadeCache::Plan& plan, LitOutput output) const;
+    // Whether every material variant's program for `plan` is compiled.
+    bool compiledFor(const Frame& frame, const ShadeCache::Plan& plan, LitOutput output, const std::string& lights,
+                     const std::vector<unsigned>& variants) const;
+    void compileFor(const Frame& frame, const ShadeCache::Plan& plan, LitOutput output, const std::string& lights,
+                    const std::vector<unsigned>& variants);
+    // A program to draw once during warm-up, with the material variant it draws.
+    struct WarmUpDraw {
+        const gl::Program* program;
+        unsigned variant;
+        bool evaluatesHook;
+    };
+    // The shaded image's programs once every cached light moves (setWarmingUp's forMotion):
+    // the whole target's and every region's a split may cut (up to kMaxWarmedUpSplitLights).
+    std::vector<WarmUpDraw> compileForMotion(const Frame& frame, const std::string& lights,
+                                             const std::vector<unsigned>& variants);
+    // A pass drawing each of `draws` once into a one-pixel image of the shaded image's
+    // formats and state: a driver that compiles a program's code at its first draw (llvmpipe
+    // does) compiles it here, not in the first frame that moves.
+    void addWarmUpPass(Frame& frame, std::vector<WarmUpDraw> draws);
     // One mesh instance's primitives with `programs`; `current` is the program in use.
     void drawInstance(const Frame& frame, int index, const glm::dmat4& view, const Variants& programs,
                       const gl::Program*& current, PassContext& context);
@@ -82,6 +108,7 @@ private:
     ShadeCache::Plan shadePlan_;  // of this frame's shaded image
     std::vector<int> footprintLimitedLights_;
     int shadingRegionCount_ = 1;
+    bool warmingUp_ = false, warmingUpForMotion_ = false;
     std::uint64_t sceneGeneration_ = 0;
     gl::FramebufferCache resolveSources_;  // the multisampled images the resolve reads
 };

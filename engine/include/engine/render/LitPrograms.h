@@ -26,7 +26,9 @@ public:
     // hook null: every light fully visible (no plugin, or none of its code needed).
     const gl::Program& programFor(const LightVisibilityHook* hook, const std::string& lightDefinesGlsl, LitOutput output,
                                   const std::string& loadShadesGlsl, unsigned variant);
-    std::size_t count() const { return programs_.size(); }
+    // The program programFor would return if it is compiled already; null if not.
+    const gl::Program* compiled(const LightVisibilityHook* hook, const std::string& lightDefinesGlsl, LitOutput output,
+                                const std::string& loadShadesGlsl, unsigned variant) const;
 
 private:
     // What a lit program is compiled from, without its text: the hook by owner and version
@@ -39,6 +41,9 @@ private:
         unsigned variant = 0;
         auto operator<=>(const ProgramKey&) const = default;
     };
+
+    static ProgramKey keyFor(const LightVisibilityHook* hook, const std::string& lightDefinesGlsl, LitOutput output,
+                             const std::string& loadShadesGlsl, unsigned variant);
 
     RendererConfig config_;
     std::map<ProgramKey, std::unique_ptr<gl::Program>> programs_;

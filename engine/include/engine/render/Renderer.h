@@ -66,6 +66,9 @@ struct FrameResult {
     // footprint, and the regions that split the lit pass into (1: not split).
     std::vector<int> footprintLimitedLights;
     int shadingRegions = 1;
+    // GL programs linked while rendering this frame (the lit pass's and the plugins'):
+    // after warm-up, each is a frame that waited for the shader compiler.
+    int programsLinked = 0;
     std::map<int, DepthReadback> shadowMaps;  // by light slot (FrameRequest::shadowMapSlots)
     // Every light instance's shadow as the shadow plugin published it (ShadowView.h), by slot.
     std::vector<ShadowView> shadowViews;
@@ -112,7 +115,9 @@ public:
     // views; the second, once the shade cache holds still lights' shade, the programs that
     // fetch it instead of computing it; a cached shadow map is cached from then on. Ends with
     // glFinish, so no timed frame waits for warm-up work still queued.
-    int warmUp(const FrameRequest& request, int minFrames, int maxFrames);
+    // forMotion: the camera or a light will move after it (LitPass::setWarmingUp): the
+    // programs their first moving frames need are compiled too.
+    int warmUp(const FrameRequest& request, int minFrames, int maxFrames, bool forMotion = false);
 
     // The scene's GPU copy (for tools that draw it their own way, e.g. a surface capture).
     const SceneGpu& gpu() const { return *gpu_; }
