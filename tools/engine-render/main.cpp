@@ -296,8 +296,8 @@ int run(const RenderOptions& options, std::unique_ptr<engine::GlContext>& contex
         if (playback.animations.empty()) std::cerr << "warning: --time: " << options.scene << " has no animations\n";
         tools::poseScene(scene, playback, playback.secondsAtFrame(0));
     }
-    const int orbitingLight =
-        options.orbitLight.empty() ? -1 : scene.lightInstances[lightSlot(scene, options.scene, options.orbitLight)].node;
+    const int orbitingSlot = options.orbitLight.empty() ? -1 : lightSlot(scene, options.scene, options.orbitLight);
+    const int orbitingLight = orbitingSlot < 0 ? -1 : scene.lightInstances[orbitingSlot].node;
     const glm::dvec3 orbitCenter = scene.worldBounds.empty() ? glm::dvec3(0.0) : scene.worldBounds.center();
     constexpr double kOrbitStep = 0.034906585039886591;  // 2 degrees per frame: deterministic
 
@@ -340,9 +340,14 @@ int run(const RenderOptions& options, std::unique_ptr<engine::GlContext>& contex
     // Untimed: at least --warmup frames, then until a frame compiles nothing new (the shade
     // cache's fetching programs appear in the second frame), so the first timed frame times
     // rendering, not shader compilation. --warmup 0 times the cold start.
-    // With something to move, warm-up also compiles what the first moving frames need.
-    const bool moves = options.orbitCamera || orbitingLight >= 0 || playback.animating;
-    if (options.warmup > 0) renderer.warmUp(request, options.warmup, options.warmup + kExtraWarmupFrames, moves);
+    // With something to move, warm-up also compiles what the first moving frames need. An
+    // animation may move the casters (every light's shade changes) and any light.
+    engine::ExpectedMotion motion;
+    motion.cameraOrGeometry = options.orbitCamera || playback.animating;
+    if (orbitingSlot >= 0) motion.lights.push_back(orbitingSlot);
+    if (playback.animating)
+        for (int slot = 0; slot < static_cast<int>(scene.lightInstances.size()); ++slot) motion.lights.push_back(slot);
+    if (options.warmup > 0) renderer.warmUp(request, options.warmup, options.warmup + kExtraWarmupFrames, motion);
     for (int frame = 0; frame < options.frames; ++frame) {
         if (frame > 0 && playback.animating) {
             tools::poseScene(scene, playback, playback.secondsAtFrame(frame));

@@ -26,7 +26,7 @@ bool isDepthFormat(TextureFormat format) {
 std::string toString(const TextureDesc& desc) {
     std::string text = std::to_string(desc.width) + "x" + std::to_string(desc.height) + " " +
                        toString(desc.format);
-    if (desc.layers != 1) text += " x" + std::to_string(desc.layers) + " layers";
+    if (desc.layers != 1 || desc.array) text += " x" + std::to_string(desc.layers) + " layers";
     if (desc.cube) text += " cube";
     if (desc.samples != 1) text += " " + std::to_string(desc.samples) + " samples";
     return text;

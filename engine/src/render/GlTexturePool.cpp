@@ -36,7 +36,7 @@ std::uint32_t GlTexturePool::acquire(const TextureDesc& desc) {
     }
     Entry entry{desc,
                 desc.cube        ? gl::Texture::createCube(format, desc.width)
-                : desc.layers > 1 ? gl::Texture::create2DArray(format, desc.width, desc.height, desc.layers)
+                : desc.layers > 1 || desc.array ? gl::Texture::create2DArray(format, desc.width, desc.height, desc.layers)
                                   : gl::Texture::create2D(format, desc.width, desc.height),
                 true, frame_};
     // Complete for sampling without mipmaps; shadow lookups override this with samplers.

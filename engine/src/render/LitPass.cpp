@@ -49,8 +49,9 @@ std::uint64_t shadeViewKey(const Frame& frame, std::uint64_t sceneGeneration) {
 // Warm-up for motion compiles a region's programs for every subset of the lights a split may
 // limit, up to this many lights (2^4 = 16 plans per material variant); with more, only the
 // regions of the warm-up's view. Measured on llvmpipe at 1280x720, a one-frame engine-render
-// run, still against --orbit-camera: lamps (four spots) 0.75 -> 4.16 s, showcase 0.67 ->
-// 1.32 s; in return no frame of a 90-frame orbit compiles (max frame 1448 -> 46 ms, lamps).
+// run, still / --orbit-camera / --orbit-light: lamps (four spots) 0.74 / 4.24 / 1.47 s,
+// showcase 0.74 / 1.48 / 0.99 s; in return no frame of a 90-frame orbit compiles (the lamps'
+// camera orbit: max frame 1448 -> 46 ms).
 constexpr std::size_t kMaxWarmedUpSplitLights = 4;
 
 // Each light's dimming as the hook gives it (0 without a hook), for uLightDimming.
@@ -61,14 +62,36 @@ std::vector<float> lightDimming(const Frame& frame) {
     return dimming;
 }
 
-// The plan of a frame in which every cached light's shade changes again: each evaluated and
-// none stored (ShadeCache's Moving source), as a camera or light in motion asks for it.
-ShadeCache::Plan movingPlan(ShadeCache::Plan plan) {
-    for (std::size_t slot = 0; slot < plan.sources.size(); ++slot)
-        if (plan.channels[slot] >= 0) plan.sources[slot] = ShadeCache::Source::Moving;
-    plan.readArray = 0;
-    plan.writeArray = 0;
-    return plan;
+// The plans a motion leads the shade cache to (ShadeCache.h), from a plan that caches
+// (layers > 0): a moving camera or geometry evaluates every cached light without storing it
+// (the frame before computed and stored them all: the plan of a first frame); one light moving
+// first computes and stores its shade while the others are fetched, then evaluates it without
+// storing. The cache's array id stands in for "reads" and "writes" (the GLSL depends on
+// nothing else of them).
+std::vector<ShadeCache::Plan> motionPlans(const ShadeCache::Plan& plan, unsigned cacheArray,
+                                          const ExpectedMotion& motion) {
+    std::vector<ShadeCache::Plan> plans;
+    auto withSources = [&](int slot, ShadeCache::Source source) {
+        ShadeCache::Plan changed = plan;
+        bool fetches = false, computes = false;
+        for (std::size_t other = 0; other < plan.sources.size(); ++other) {
+            if (plan.channels[other] < 0) continue;
+            changed.sources[other] =
+                slot < 0 || static_cast<int>(other) == slot ? source : ShadeCache::Source::Fetch;
+            fetches = fetches || changed.sources[other] == ShadeCache::Source::Fetch;
+            computes = computes || changed.sources[other] == ShadeCache::Source::Compute;
+        }
+        changed.readArray = fetches ? cacheArray : 0;
+        changed.writeArray = computes ? cacheArray : 0;
+        return changed;
+    };
+    if (motion.cameraOrGeometry) plans.push_back(withSources(-1, ShadeCache::Source::Moving));
+    for (const int slot : motion.lights)
+        if (slot >= 0 && slot < static_cast<int>(plan.sources.size()) && plan.channels[slot] >= 0) {
+            plans.push_back(withSources(slot, ShadeCache::Source::Compute));
+            plans.push_back(withSources(slot, ShadeCache::Source::Moving));
+        }
+    return plans;
 }
 
 } // namespace
@@ -76,9 +99,9 @@ ShadeCache::Plan movingPlan(ShadeCache::Plan plan) {
 LitPass::LitPass(const RendererConfig& config, const RendererSwitches& switches)
     : config_(config), switches_(switches), programs_(config) {}
 
-void LitPass::setWarmingUp(bool warmingUp, bool forMotion) {
+void LitPass::setWarmingUp(bool warmingUp, const ExpectedMotion& motion) {
     warmingUp_ = warmingUp;
-    warmingUpForMotion_ = warmingUp && forMotion;
+    expectedMotion_ = warmingUp ? motion : ExpectedMotion{};
 }
 
 const LightVisibilityHook* LitPass::hookFor(const Frame& frame, const ShadeCache::Plan& plan, LitOutput output) const {
@@ -108,21 +131,25 @@ void LitPass::compileFor(const Frame& frame, const ShadeCache::Plan& plan, LitOu
 std::vector<LitPass::WarmUpDraw> LitPass::compileForMotion(const Frame& frame, const std::string& lights,
                                                            const std::vector<unsigned>& variants) {
     // Nothing cached: a moving frame's plan is this frame's.
-    const ShadeCache::Plan moving = shadePlan_.layers > 0 ? movingPlan(shadePlan_) : shadePlan_;
-    std::vector<ShadeCache::Plan> plans{moving};
-    if (switches_.lightFootprints) {
+    const std::vector<ShadeCache::Plan> bases =
+        shadePlan_.layers > 0 ? motionPlans(shadePlan_, shadeCache_.currentArray(), expectedMotion_)
+                               : std::vector{shadePlan_};
+    std::vector<ShadeCache::Plan> plans;
+    for (const ShadeCache::Plan& base : bases) {
+        plans.push_back(base);
+        if (!switches_.lightFootprints) continue;
         // Which lights a moving camera's split leaves out of a region changes as it moves:
         // every subset of the lights it may limit, while they are few; else this view's.
-        const std::vector<int> limitable = footprintLimitableLights(frame.scene(), moving);
+        const std::vector<int> limitable = footprintLimitableLights(frame.scene(), base);
         if (limitable.size() <= kMaxWarmedUpSplitLights) {
             for (unsigned subset = 1; subset < (1u << limitable.size()); ++subset) {
                 std::vector<int> outside;
                 for (std::size_t i = 0; i < limitable.size(); ++i)
                     if (subset & (1u << i)) outside.push_back(limitable[i]);
-                plans.push_back(withoutLookups(moving, outside));
+                plans.push_back(withoutLookups(base, outside));
             }
         } else {
-            for (const auto& [rect, plan] : splitByLightFootprints(frame, moving).regions) plans.push_back(plan);
+            for (const auto& [rect, plan] : splitByLightFootprints(frame, base).regions) plans.push_back(plan);
         }
     }
     std::vector<WarmUpDraw> draws;
@@ -131,25 +158,41 @@ std::vector<LitPass::WarmUpDraw> LitPass::compileForMotion(const Frame& frame, c
         const std::string loadShades = plan.glsl();
         for (const unsigned variant : variants)
             draws.push_back({&programs_.programFor(hook, lights, LitOutput::Color, loadShades, variant), variant,
-                             hook != nullptr});
+                             hook != nullptr, plan.writeArray != 0 ? plan.layers : 0, plan.readArray});
     }
     return draws;
 }
 
-void LitPass::addWarmUpPass(Frame& frame, std::vector<WarmUpDraw> draws) {
+void LitPass::addWarmUpPasses(Frame& frame, const std::vector<WarmUpDraw>& draws) {
+    // One pass per set of outputs: a program that writes the shade cache's layers draws with
+    // them attached, as in the frames that will use it.
+    std::map<int, std::vector<WarmUpDraw>> byOutputs;
+    for (const WarmUpDraw& draw : draws) byOutputs[draw.writtenLayers].push_back(draw);
+    for (auto& [layers, group] : byOutputs) addWarmUpPass(frame, layers, std::move(group));
+}
+
+void LitPass::addWarmUpPass(Frame& frame, int writtenLayers, std::vector<WarmUpDraw> draws) {
     const auto& hook = frame.lightVisibility();
     const std::vector<float> dimming = lightDimming(frame);
+    const std::string name = "lit_warm_up_" + std::to_string(writtenLayers);
     frame.graph().addPass(
-        "lit_warm_up",
+        name,
         [&](PassBuilder& builder) {
             if (hook)
                 for (ResourceHandle read : hook->reads) builder.read(read);
             const int samples = config_.msaa;
             PassTargets targets;
             targets.colors.push_back(
-                {builder.create("lit_warm_up_color", {1, 1, kLitColorFormat, 1, false, samples}), -1, std::nullopt});
-            targets.depth = DepthTarget{builder.create("lit_warm_up_depth", {1, 1, kLitDepthFormat, 1, false, samples}),
+                {builder.create(name + "_color", {1, 1, kLitColorFormat, 1, false, samples}), -1, std::nullopt});
+            targets.depth = DepthTarget{builder.create(name + "_depth", {1, 1, kLitDepthFormat, 1, false, samples}),
                                         -1, 1.0f};
+            if (writtenLayers > 0) {
+                // An array, as the cache's are even with one layer: llvmpipe compiles a program
+                // again for a plain 2D target (measured: a 130 ms first frame of an orbiting sun).
+                const ResourceHandle layers =
+                    builder.create(name + "_shades", {1, 1, TextureFormat::RGBA32F, writtenLayers, false, 1, true});
+                for (int layer = 0; layer < writtenLayers; ++layer) targets.colors.push_back({layers, layer, std::nullopt});
+            }
             builder.setTargets(targets);
             PassState state;  // as the lit pass's
             state.srgbWrites = true;
@@ -170,6 +213,7 @@ void LitPass::addWarmUpPass(Frame& frame, std::vector<WarmUpDraw> draws) {
                 draw.program->set("uMaskLight", -1);
                 draw.program->set("uLightDimming", dimming);
                 if (draw.evaluatesHook && hook && hook->bind) hook->bind(*draw.program, context);
+                glBindTextureUnit(ShadeCache::kTextureUnit, draw.fetchedArray);
                 // The first primitive of the program's material variant, drawn as the lit pass draws it.
                 for (const MeshInstance& instance : scene.meshInstances) {
                     const SceneGpu::Primitive* found = nullptr;
@@ -188,6 +232,7 @@ void LitPass::addWarmUpPass(Frame& frame, std::vector<WarmUpDraw> draws) {
                     break;
                 }
             }
+            glBindTextureUnit(ShadeCache::kTextureUnit, 0);
         });
 }
 
@@ -284,7 +329,7 @@ void LitPass::addPass(Frame& frame, const std::string& name, ResourceHandle targ
         // programs are new anyway: a split whose regions would need new programs is left out
         // otherwise (measured on the lamps' orbit: 1.1-1.5 s frames, each compiling 6).
         const bool mayCompile = warmingUp_ || !compiledFor(frame, shadePlan_, output, lights, variants);
-        if (warmingUpForMotion_) addWarmUpPass(frame, compileForMotion(frame, lights, variants));
+        if (expectedMotion_.any()) addWarmUpPasses(frame, compileForMotion(frame, lights, variants));
         if (switches_.lightFootprints) {
             FootprintSplit split = splitByLightFootprints(frame, shadePlan_);
             const bool ready = mayCompile || std::all_of(split.regions.begin(), split.regions.end(), [&](const auto& region) {

@@ -102,17 +102,17 @@ void Renderer::reloadSettings() {
     for (RenderPlugin* plugin : plugins_) plugin->reloadSettings(*scene_);
 }
 
-int Renderer::warmUp(const FrameRequest& request, int minFrames, int maxFrames, bool forMotion) {
+int Renderer::warmUp(const FrameRequest& request, int minFrames, int maxFrames, const ExpectedMotion& motion) {
     FrameRequest untimed = request;
     untimed.timing = false;
     int frames = 0;
-    litPass_->setWarmingUp(true, forMotion);
+    litPass_->setWarmingUp(true, motion);
     while (frames < maxFrames) {
         const FrameResult result = renderFrame(untimed);
         ++frames;
         if (frames >= minFrames && result.programsLinked == 0) break;
     }
-    litPass_->setWarmingUp(false, false);
+    litPass_->setWarmingUp(false);
     // Untimed frames are not waited for: without this the first timed pass's glFinish would
     // wait for the warm-up frames' rasterizing still queued (llvmpipe runs it in threads).
     glFinish();

@@ -82,7 +82,7 @@ TEST_F(LightFootprintTest, TheShowcaseOrbitedShadesAsWithEveryLookup) {
     request.camera = engine::cameraFromScene(scene, 0, 320, 180);
     // After warm-up a frame compiles no region's programs (it draws unsplit instead): warmed
     // up for motion, the split's programs exist from the start.
-    pair.limited.warmUp(request, 1, 4, true);
+    pair.limited.warmUp(request, 1, 4, {true, {}});
     int framesLimited = 0;
     for (int frame = 0; frame < 6; ++frame) {
         const engine::FrameResult result = expectSameFrame(pair, request, 3, "frame " + std::to_string(frame));
@@ -106,7 +106,7 @@ TEST_F(LightFootprintTest, AfterWarmUpNoFrameOfAnOrbitCompilesAndEachShadesAsWit
     Pair pair(scene, true);
     engine::FrameRequest request;
     request.camera = engine::cameraFromScene(scene, 0, 160, 90);
-    pair.limited.warmUp(withMasks(request, 4), 1, 4, true);
+    pair.limited.warmUp(withMasks(request, 4), 1, 4, {true, {}});
     int framesLimited = 0;
     for (int frame = 0; frame < 12; ++frame) {
         const std::string what = "frame " + std::to_string(frame);
@@ -128,7 +128,7 @@ TEST_F(LightFootprintTest, WithoutWarmUpForMotionARegionWithoutProgramsIsDrawnUn
     Pair pair(scene, true);
     engine::FrameRequest request;
     request.camera = engine::cameraFromScene(scene, 0, 160, 90);
-    pair.limited.warmUp(withMasks(request, 4), 1, 4, false);
+    pair.limited.warmUp(withMasks(request, 4), 1, 4);
     int framesUnsplit = 0;
     for (int frame = 0; frame < 12; ++frame) {
         const std::string what = "frame " + std::to_string(frame);

@@ -20,10 +20,11 @@ struct TextureDesc {
     int layers = 1;     // array layers (for a cube: cube count, each of kCubeFaces faces)
     bool cube = false;
     int samples = 1;    // per pixel: more than 1 is a multisampled 2D target (no layers, no cube)
+    bool array = false; // a 2D array texture even with one layer (as an imported array is)
     bool operator==(const TextureDesc&) const = default;
 };
 
-// "2048x2048 Depth32F", plus " x4 layers" / " cube" / " 4 samples" when they apply: for messages and graphviz.
+// "2048x2048 Depth32F", plus " x4 layers" (an array) / " cube" / " 4 samples" when they apply: for messages and graphviz.
 std::string toString(const TextureDesc& desc);
 
 } // namespace engine

@@ -29,6 +29,15 @@ namespace engine {
 inline constexpr TextureFormat kLitColorFormat = TextureFormat::SRGB8_A8;
 inline constexpr TextureFormat kLitDepthFormat = TextureFormat::Depth32F;
 
+// What will move once warm-up ends (Renderer::warmUp), so that it compiles what the first
+// moving frames draw with: the camera or the scene's geometry (every cached light's shade
+// changes every frame), and the lights, by slot, that move on their own.
+struct ExpectedMotion {
+    bool cameraOrGeometry = false;
+    std::vector<int> lights;
+    bool any() const { return cameraOrGeometry || !lights.empty(); }
+};
+
 class LitPass {
 public:
     LitPass(const RendererConfig& config, const RendererSwitches& switches);
@@ -55,10 +64,10 @@ public:
     // While warming up (Renderer::warmUp), a frame compiles every program it could use; after
     // it, a frame compiles only what it cannot draw without: a region of the footprint split
     // whose programs are missing is drawn unsplit instead (the same image: outside its
-    // footprint a light adds exactly nothing). forMotion: the warm-up also compiles the
-    // programs a moving camera or light asks for next (ShadeCache's Moving source, whole
-    // target and split), so that the first moving frames compile nothing.
-    void setWarmingUp(bool warmingUp, bool forMotion);
+    // footprint a light adds exactly nothing). With `motion`, the warm-up also compiles (and
+    // draws once) the programs that motion asks for next (ShadeCache's Compute and Moving
+    // sources, whole target and split), so that the first moving frames compile nothing.
+    void setWarmingUp(bool warmingUp, const ExpectedMotion& motion = {});
 
 private:
     void addPass(Frame& frame, const std::string& name, ResourceHandle target, LitOutput output, int maskSlot);
@@ -86,15 +95,19 @@ private:
         const gl::Program* program;
         unsigned variant;
         bool evaluatesHook;
+        int writtenLayers;      // the shade cache's layers it writes (0: none)
+        unsigned fetchedArray;  // the shade cache's array it reads (0: none)
     };
-    // The shaded image's programs once every cached light moves (setWarmingUp's forMotion):
-    // the whole target's and every region's a split may cut (up to kMaxWarmedUpSplitLights).
+    // The shaded image's programs under the expected motion (setWarmingUp): the whole
+    // target's and every region's a split may cut (up to kMaxWarmedUpSplitLights).
     std::vector<WarmUpDraw> compileForMotion(const Frame& frame, const std::string& lights,
                                              const std::vector<unsigned>& variants);
-    // A pass drawing each of `draws` once into a one-pixel image of the shaded image's
-    // formats and state: a driver that compiles a program's code at its first draw (llvmpipe
-    // does) compiles it here, not in the first frame that moves.
-    void addWarmUpPass(Frame& frame, std::vector<WarmUpDraw> draws);
+    // Passes drawing each of `draws` once into one-pixel images of the shaded image's formats
+    // and state (and the shade cache's layers it writes): a driver that compiles a program's
+    // code at its first draw (llvmpipe does) compiles it here, not in the first frame that
+    // moves. One pass per number of written layers.
+    void addWarmUpPasses(Frame& frame, const std::vector<WarmUpDraw>& draws);
+    void addWarmUpPass(Frame& frame, int writtenLayers, std::vector<WarmUpDraw> draws);
     // One mesh instance's primitives with `programs`; `current` is the program in use.
     void drawInstance(const Frame& frame, int index, const glm::dmat4& view, const Variants& programs,
                       const gl::Program*& current, PassContext& context);
@@ -108,7 +121,8 @@ private:
     ShadeCache::Plan shadePlan_;  // of this frame's shaded image
     std::vector<int> footprintLimitedLights_;
     int shadingRegionCount_ = 1;
-    bool warmingUp_ = false, warmingUpForMotion_ = false;
+    bool warmingUp_ = false;
+    ExpectedMotion expectedMotion_;  // while warming up
     std::uint64_t sceneGeneration_ = 0;
     gl::FramebufferCache resolveSources_;  // the multisampled images the resolve reads
 };

@@ -115,9 +115,9 @@ public:
     // views; the second, once the shade cache holds still lights' shade, the programs that
     // fetch it instead of computing it; a cached shadow map is cached from then on. Ends with
     // glFinish, so no timed frame waits for warm-up work still queued.
-    // forMotion: the camera or a light will move after it (LitPass::setWarmingUp): the
-    // programs their first moving frames need are compiled too.
-    int warmUp(const FrameRequest& request, int minFrames, int maxFrames, bool forMotion = false);
+    // `motion`: what will move after it (ExpectedMotion, LitPass.h): the programs the first
+    // moving frames draw with are compiled, and drawn once, too.
+    int warmUp(const FrameRequest& request, int minFrames, int maxFrames, const ExpectedMotion& motion = {});
 
     // The scene's GPU copy (for tools that draw it their own way, e.g. a surface capture).
     const SceneGpu& gpu() const { return *gpu_; }

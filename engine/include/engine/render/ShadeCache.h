@@ -71,6 +71,8 @@ public:
     void commit(const Plan& plan);
     // Forget everything (a new scene).
     void clear();
+    // The array the valid shades are in (0 before the first plan that caches).
+    unsigned currentArray() const { return arrays_[current_].id(); }
 
     // Texture unit of the cache's sampler: the engine's own unit after the material
     // textures' (below kFirstPluginTextureUnit).
