@@ -66,6 +66,23 @@ protected:
         return request;
     }
 
+    // The lamps at 160x90 with the shade cache on, warmed up for `motion`, then 12 frames of
+    // the camera orbiting 0.3 rad a frame, each compared with lookups everywhere
+    // (expectSameFrame); the limited renderer's frames.
+    static std::vector<engine::FrameResult> orbitTheLamps(const engine::ExpectedMotion& motion) {
+        const engine::Scene scene = contentScene("lamps.gltf");
+        Pair pair(scene, true);
+        engine::FrameRequest request;
+        request.camera = engine::cameraFromScene(scene, 0, 160, 90);
+        pair.limited.warmUp(withMasks(request, 4), 1, 4, motion);
+        std::vector<engine::FrameResult> frames;
+        for (int frame = 0; frame < 12; ++frame) {
+            frames.push_back(expectSameFrame(pair, request, 4, "frame " + std::to_string(frame)));
+            request.camera.eyeToWorld = engine::orbitTransform(request.camera.eyeToWorld, {0, 0, 0}, 0.3);
+        }
+        return frames;
+    }
+
     static engine::Scene contentScene(const char* name) {
         return engine::loadGltf(std::filesystem::path(CONTENT_DIR) / "scenes" / name);
     }
@@ -102,18 +119,11 @@ TEST_F(LightFootprintTest, AfterWarmUpNoFrameOfAnOrbitCompilesAndEachShadesAsWit
     // The lamps, orbited: warmed up for motion, no frame links a program (each would be a
     // frame of 0.3-1.5 s on llvmpipe), the split still limits lamps, and every frame is the
     // image of a renderer that looks every lamp up everywhere.
-    const engine::Scene scene = contentScene("lamps.gltf");
-    Pair pair(scene, true);
-    engine::FrameRequest request;
-    request.camera = engine::cameraFromScene(scene, 0, 160, 90);
-    pair.limited.warmUp(withMasks(request, 4), 1, 4, {true, {}});
+    const std::vector<engine::FrameResult> frames = orbitTheLamps(engine::ExpectedMotion{true, {}});
     int framesLimited = 0;
-    for (int frame = 0; frame < 12; ++frame) {
-        const std::string what = "frame " + std::to_string(frame);
-        const engine::FrameResult result = expectSameFrame(pair, request, 4, what);
-        EXPECT_EQ(result.programsLinked, 0) << what;
-        framesLimited += result.footprintLimitedLights.empty() ? 0 : 1;
-        request.camera.eyeToWorld = engine::orbitTransform(request.camera.eyeToWorld, {0, 0, 0}, 0.3);
+    for (std::size_t frame = 0; frame < frames.size(); ++frame) {
+        EXPECT_EQ(frames[frame].programsLinked, 0) << "frame " << frame;
+        framesLimited += frames[frame].footprintLimitedLights.empty() ? 0 : 1;
     }
     // Measured: 5 of the 12 (frames 0 and 1 fetch and compute; from frame 2 the split limits
     // lamps where the view makes it pay). Without its programs it would limit none.
@@ -124,19 +134,12 @@ TEST_F(LightFootprintTest, WithoutWarmUpForMotionARegionWithoutProgramsIsDrawnUn
     // Warmed up for a still view only: the first moving frame compiles what it must (its
     // whole target's programs, and its split's), later frames compile nothing and draw a
     // region whose programs are missing unsplit: still the image with every lookup.
-    const engine::Scene scene = contentScene("lamps.gltf");
-    Pair pair(scene, true);
-    engine::FrameRequest request;
-    request.camera = engine::cameraFromScene(scene, 0, 160, 90);
-    pair.limited.warmUp(withMasks(request, 4), 1, 4);
+    const std::vector<engine::FrameResult> frames = orbitTheLamps({});
     int framesUnsplit = 0;
-    for (int frame = 0; frame < 12; ++frame) {
-        const std::string what = "frame " + std::to_string(frame);
-        const engine::FrameResult result = expectSameFrame(pair, request, 4, what);
+    for (std::size_t frame = 0; frame < frames.size(); ++frame) {
         // Frame 0 fetches, 1 computes (warm-up's programs), 2 is the first moving frame.
-        if (frame != 2) EXPECT_EQ(result.programsLinked, 0) << what;
-        if (frame > 2) framesUnsplit += result.shadingRegions == 1 ? 1 : 0;
-        request.camera.eyeToWorld = engine::orbitTransform(request.camera.eyeToWorld, {0, 0, 0}, 0.3);
+        if (frame != 2) EXPECT_EQ(frames[frame].programsLinked, 0) << "frame " << frame;
+        if (frame > 2) framesUnsplit += frames[frame].shadingRegions == 1 ? 1 : 0;
     }
     // The orbit asks for regions the first moving frame did not compile.
     EXPECT_GT(framesUnsplit, 0);
