@@ -59,6 +59,7 @@ void ShadowMapPlugin::reloadSettings(const engine::Scene& scene) {
             if (old.slot == light.slot) {
                 light.map = std::move(old.map);
                 light.renderedKey = old.renderedKey;
+                light.renderedUnseen = std::move(old.renderedUnseen);  // what that map lacks
             }
 }
 

@@ -124,4 +124,18 @@ TEST_F(UnseenShadow, AMapDrawnWithoutACasterIsDrawnAgainWhenItsShadowComesIntoVi
     EXPECT_EQ(back.mask, left.mask);
 }
 
+TEST_F(UnseenShadow, AMapKeptAcrossReloadedSettingsStillKnowsTheCasterItLacks) {
+    // Reloading the settings keeps a light's map (its key covers the settings); it must keep
+    // the record of the caster left out of it too, or the turn to its shadow would be a hit.
+    const TwoShadows world(Light::Type::Spot, {{"variant", "standard"}});
+    engine::Renderer renderer({}, plugins());
+    renderer.setScene(world.scene);
+    EXPECT_EQ(shoot(renderer, lookingAt(-6)).light["casters_unseen"], 1);
+    renderer.reloadSettings();
+    const Shot right = shoot(renderer, lookingAt(6));
+    EXPECT_TRUE(right.mapRendered);
+    const TwoShadows kept(Light::Type::Spot, {{"variant", "standard"}, {"cull_unseen_casters", false}});
+    EXPECT_EQ(right.mask, shootOnce(kept.scene, lookingAt(6)).mask);
+}
+
 } // namespace
