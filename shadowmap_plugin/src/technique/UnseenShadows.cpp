@@ -4,6 +4,7 @@
 
 #include "engine/scene/FrustumCull.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
@@ -42,6 +43,46 @@ bool canShade(const ClipBox& caster, const ClipBox& receiver, double reachNdc) {
            caster.min.y <= receiver.max.y + reachNdc && caster.max.y >= receiver.min.y - reachNdc &&
            caster.min.z <= receiver.max.z;
 }
+
+// The visible receivers of one view filed on a grid over its clip-space square, each in the
+// cells its widened rectangle covers (what lies beyond the square in the border cells), so
+// that a caster is tested only against the receivers in its own cells: every caster against
+// every receiver would be millions of tests per view and frame with thousands of instances.
+class ReceiverGrid {
+public:
+    ReceiverGrid(const std::vector<ClipBox>& receivers, double reachNdc) : receivers_(receivers), reach_(reachNdc) {
+        for (std::size_t index = 0; index < receivers.size(); ++index) {
+            const Cells cells = cellsOf(receivers[index], reachNdc);
+            for (int y = cells.y0; y <= cells.y1; ++y)
+                for (int x = cells.x0; x <= cells.x1; ++x) cells_[y * kCells + x].push_back(index);
+        }
+    }
+
+    bool mayShade(const ClipBox& caster) const {
+        const Cells cells = cellsOf(caster, 0.0);
+        for (int y = cells.y0; y <= cells.y1; ++y)
+            for (int x = cells.x0; x <= cells.x1; ++x)
+                for (const std::size_t index : cells_[y * kCells + x])
+                    if (canShade(caster, receivers_[index], reach_)) return true;
+        return false;
+    }
+
+private:
+    static constexpr int kCells = 32;
+    struct Cells {
+        int x0, y0, x1, y1;
+    };
+    // In double before the conversion: an unbounded rectangle clamps to the border.
+    static int cell(double ndc) {
+        return static_cast<int>(std::clamp(std::floor((ndc + 1.0) * 0.5 * kCells), 0.0, kCells - 1.0));
+    }
+    static Cells cellsOf(const ClipBox& box, double widen) {
+        return {cell(box.min.x - widen), cell(box.min.y - widen), cell(box.max.x + widen), cell(box.max.y + widen)};
+    }
+    const std::vector<ClipBox>& receivers_;
+    double reach_;
+    std::array<std::vector<std::size_t>, kCells * kCells> cells_;
+};
 
 // The texels around its centre a lookup of this light may read: its filter's reach, the
 // normal offset's shift of the receiver, and one for the bilinear footprint's rounding.
@@ -152,15 +193,13 @@ std::vector<bool> castersWithUnseenShadows(const glm::dmat4& viewProjection,
     std::vector<ClipBox> receivers;
     receivers.reserve(visibleReceivers.size());
     for (const engine::Aabb& box : visibleReceivers) receivers.push_back(ClipBox::of(viewProjection, box));
+    const ReceiverGrid grid(receivers, reachNdc);
     std::vector<bool> unseen(scene.meshInstances.size(), false);
     for (std::size_t i = 0; i < scene.meshInstances.size(); ++i) {
         const engine::MeshInstance& instance = scene.meshInstances[i];
         if (!instance.castShadows && !(withNonCastingReceivers && instance.receiveShadows)) continue;
         if (!engine::boxIntersectsFrustum(viewProjection, instance.worldBounds)) continue;  // culled anyway
-        const ClipBox caster = ClipBox::of(viewProjection, instance.worldBounds);
-        bool seen = false;
-        for (const ClipBox& receiver : receivers) seen = seen || canShade(caster, receiver, reachNdc);
-        unseen[i] = !seen;
+        unseen[i] = !grid.mayShade(ClipBox::of(viewProjection, instance.worldBounds));
     }
     return unseen;
 }

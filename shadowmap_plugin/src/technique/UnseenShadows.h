@@ -3,11 +3,12 @@
 // fall on no receiver the camera sees is left out of that view's depth pass. No GL.
 //
 // The test, in the view's clip space (P_light * L^-1): the caster's box and each visible
-// receiver's box (cut by the camera's frustum) projected to rectangles and depth ranges. The caster is needed when some
-// receiver's rectangle, widened by the texels a lookup reads around its centre (filter and
-// normal offset: MapLookup::reachTexels), overlaps the caster's, and that receiver reaches
-// at least as far from the light as the caster's nearest point: a caster wholly behind
-// every overlapping receiver shades none of them. A caster that is itself a visible
+// receiver's box (cut by the camera's frustum) projected to rectangles and depth ranges. The
+// caster is needed when some receiver's rectangle, widened by the texels a lookup reads
+// around its centre (filter and normal offset: MapLookup::reachTexels), overlaps the
+// caster's, and that receiver reaches at least as far from the light as the caster's nearest
+// point: a caster wholly behind every overlapping receiver shades none of them. The
+// receivers are filed on a grid over the view, so a caster meets only those near it. A caster that is itself a visible
 // receiver overlaps itself, so it always stays (its self-shadowing, acne included, is
 // untouched). A box partly behind a perspective light covers the whole view.
 //

@@ -65,11 +65,11 @@ TEST(UnseenShadows, ACasterWhollyBehindTheReceiverFromTheLightIsLeftOut) {
 TEST(UnseenShadows, TheLookupsReachWidensTheReceiver) {
     // A box standing on the ground beside the seen tile: in clip space (x over depth) the
     // box starts at 1 / 10 = 0.1 (its foot, 10 below the light) and the tile ends at
-    // 0.5 / 10 = 0.05. A lookup reaching 0.04 cannot read the box's texels, one reaching
+    // 0.5 / 10 = 0.05. A lookup reaching 0.02 cannot read the box's texels, one reaching
     // 0.06 can.
     const engine::Scene scene = sceneOf({boxAt(1.5, 0.0, 0)});
     const std::vector<engine::Aabb> seen{tile(0, 0)};
-    EXPECT_EQ(castersWithUnseenShadows(kSpotView, seen, scene, 0.04, false), (std::vector<bool>{true}));
+    EXPECT_EQ(castersWithUnseenShadows(kSpotView, seen, scene, 0.02, false), (std::vector<bool>{true}));
     EXPECT_EQ(castersWithUnseenShadows(kSpotView, seen, scene, 0.06, false), (std::vector<bool>{false}));
 }
 
