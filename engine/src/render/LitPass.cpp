@@ -121,13 +121,6 @@ bool LitPass::compiledFor(const Frame& frame, const ShadeCache::Plan& plan, LitO
     });
 }
 
-void LitPass::compileFor(const Frame& frame, const ShadeCache::Plan& plan, LitOutput output, const std::string& lights,
-                         const std::vector<unsigned>& variants) {
-    const LightVisibilityHook* hook = hookFor(frame, plan, output);
-    const std::string loadShades = plan.glsl();
-    for (const unsigned variant : variants) programs_.programFor(hook, lights, output, loadShades, variant);
-}
-
 std::vector<LitPass::WarmUpDraw> LitPass::compileForMotion(const Frame& frame, const std::string& lights,
                                                            const std::vector<unsigned>& variants) {
     // Nothing cached: a moving frame's plan is this frame's.

@@ -88,8 +88,6 @@ private:
     // Whether every material variant's program for `plan` is compiled.
     bool compiledFor(const Frame& frame, const ShadeCache::Plan& plan, LitOutput output, const std::string& lights,
                      const std::vector<unsigned>& variants) const;
-    void compileFor(const Frame& frame, const ShadeCache::Plan& plan, LitOutput output, const std::string& lights,
-                    const std::vector<unsigned>& variants);
     // A program to draw once during warm-up, with the material variant it draws.
     struct WarmUpDraw {
         const gl::Program* program;
