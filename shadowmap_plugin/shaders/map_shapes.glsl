@@ -67,7 +67,9 @@ vec3 normalOffset(int slot, vec3 eyePosition, vec3 eyeNormal, float texelWidth) 
 // so an eye-space step d moves a 2D map's (s,t,r,q) by Ee * (d, 0); a cube's light-to-point
 // vector by d turned to world axes.
 vec4 offsetShadowCoord(int slot, vec4 coord, vec3 eyePosition, vec3 eyeNormal) {
-    vec3 offset = normalOffset(slot, eyePosition, eyeNormal, shadowData.texelWidths[slot].x * coord.w);
+    vec2 widths = shadowData.texelWidths[slot].xy;
+    float texelWidth = max(widths.x * coord.w, widths.y * coord.w * coord.w);
+    vec3 offset = normalOffset(slot, eyePosition, eyeNormal, texelWidth);
     return coord + shadowData.eyePlanes[slot] * vec4(offset, 0.0);
 }
 

@@ -35,7 +35,9 @@
 //               z: filter_taps; w: normal_offset in texels
 //   texelWidths   a map texel's width in eye units per unit of q (2D maps: q is the distance
 //               along the light's axis for a spot light, 1 for a directional one) in x, per
-//               unit of the major-axis distance for a cube in x, or per cascade in x..w
+//               unit of the major-axis distance for a cube in x, or per cascade in x..w;
+//               a warped 2D map (lispsm, q the distance along its warp axis) also grows
+//               along the warp as q^2: per unit of q^2 in y (0 for every other 2D map)
 layout(std140, binding = SHADOW_BLOCK_BINDING) uniform ShadowData {
     mat4 eyePlanes[MAX_LIGHTS];
     vec4 params[MAX_LIGHTS];

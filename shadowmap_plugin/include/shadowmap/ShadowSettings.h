@@ -86,6 +86,16 @@
 //   cull_unseen_casters  true: a caster whose shadow can fall on   true
 //                   no receiver the camera sees is left out of the depth passes (same
 //                   image; technique/UnseenShadows.h). woo maps keep every caster
+//   projection      "uniform" | "lispsm": a directional light's     "uniform"
+//                   single map orthographic, or warped by a light-space perspective so
+//                   texels crowd near the camera (math/LispsmWarp.h). With cascades > 1
+//                   or a shadow_distance the slices stay uniform (said once), and
+//                   cascades "auto" keeps the one warped map. Set on a spot or point
+//                   light's own settings it is an error (their maps are perspective
+//                   already); in the plugin's defaults it applies to directional lights.
+//                   Hard filters only (pcss with lispsm is an error)
+//   lispsm_n_scale  > 0: multiplies LiSPSM's optimal n; above 1     1
+//                   the warp weakens toward uniform, below 1 it magnifies the near end more
 // Cascades (directional lights only; spot and point lights ignore them):
 //   cascades        auto, or 1 .. 4 slices of the camera's view  auto
 //                   depth, one array layer (and depth pass) each; 1: one map fitted to
@@ -137,11 +147,13 @@ namespace shadowmap {
 enum class Variant { Standard, Woo, Backface, None };
 enum class DepthFormat { D16, D24, D32F };
 enum class Filter { Nearest, Pcf, Pcss };
+enum class Projection { Uniform, Lispsm };
 
 // The names the JSON uses ("standard", "d24", "pcf").
 const char* toString(Variant);
 const char* toString(DepthFormat);
 const char* toString(Filter);
+const char* toString(Projection);
 
 // The polygon offset [factor, units] a depth pass uses when none is explicit (see the
 // table above): standard: units 8 (128 with reversed Z), factor 1 for one tap and 2 for
@@ -186,6 +198,8 @@ struct ShadowSettings {
     double cascadeBlend = 0.0;
     bool stable = true;
     bool cullUnseenCasters = true;  // leave out casters whose shadow no visible receiver can show
+    Projection projection = Projection::Uniform;  // directional lights' single map
+    double lispsmNScale = 1.0;  // n = lispsmNScale * n_opt (math/LispsmWarp.h)
     double shadowDistance = 0.0;  // directional lights, world units; 0: no limit
     double shadowFade = 0.1;      // fraction of shadowDistance
     // The light's size (see the table above): what the area truth samples and what a
@@ -237,6 +251,10 @@ void checkSizeKeyForType(const nlohmann::json& json, engine::Light::Type type, c
 // filter_radius widens pcf only: with another filter it is "source: object.filter_radius".
 void checkFilterForType(const ShadowSettings& settings, engine::Light::Type type, const std::string& source,
                         const std::string& object);
+// A light's own settings JSON may ask for projection "lispsm" only on a directional light:
+// InputError "source: object.projection: reason" otherwise.
+void checkProjectionKeyForType(const nlohmann::json& json, engine::Light::Type type, const std::string& source,
+                               const std::string& object);
 
 // ---- Writing -----------------------------------------------------------------------------
 

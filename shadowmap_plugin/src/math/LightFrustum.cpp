@@ -99,7 +99,8 @@ std::string describe(const char* what, const glm::dvec3& v) {
            engine::formatNumber(v.z) + ")";
 }
 
-// The light's -Z in world space from its node matrix; empty string when usable.
+}  // namespace
+
 std::string directionProblem(const engine::LightInstance& instance, glm::dvec3& direction) {
     direction = -glm::dvec3(instance.world[2]);
     if (!isFinite(direction)) return describe("light direction is not finite", direction);
@@ -115,6 +116,8 @@ LightView invalidView(std::string reason) {
     v.invalidReason = std::move(reason);
     return v;
 }
+
+namespace {
 
 // Final guard: a view is only valid when everything in it is a finite, usable number
 // (the far plane may be +infinity: the projection's numbers stay finite then).
@@ -237,8 +240,17 @@ glm::dmat4 LightView::texgenPlanes() const {
 
 double windowDepthPerTexel(const LightView& view, int resolution) {
     // P[0][0] = 1 / half width (orthographic) or cot(half angle) (perspective).
-    const double texelPerDistance = 2.0 / (view.projection[0][0] * resolution);
     const double n = view.nearPlane, f = view.farPlane;
+    if (view.warped) {
+        // P = O * W (LispsmWarp.h): at distance q along the warp axis a texel is
+        // 2 q / (O00 res) wide across it and q^2 (f - n) / (O11 f n res) along it, and window
+        // depth changes by |O22| / q per unit toward the light (half that in [-1, 1] clip).
+        const double o00 = view.warpFitScale.x, o11 = view.warpFitScale.y;
+        const double o22 = std::abs(view.projection[2][2]);
+        const double width = std::max(2.0 / o00, (f - n) / (o11 * f));  // texel width / (q / res) at q = n
+        return width * o22 * (view.reversedZ ? 1.0 : 0.5) / resolution;
+    }
+    const double texelPerDistance = 2.0 / (view.projection[0][0] * resolution);
     if (view.projection[2][3] == 0.0) return texelPerDistance / (f - n);  // orthographic
     const double d = std::max(view.nearestReceiver, n);
     const double depthSlope = std::isinf(f) ? n / (d * d) : n * f / ((f - n) * d * d);

@@ -74,6 +74,10 @@ struct LightView {
     // true: [0,1] clip depth with near at 1 and far at 0 (glClipControl ZERO_TO_ONE), and
     // S leaves r unscaled (scaleBiasZeroToOne): window depth = r/q directly.
     bool reversedZ = false;
+    // A light-space perspective map (math/LispsmWarp.h): the projection warps along L's y,
+    // with near and far (nearPlane, farPlane) along that axis, not along the light.
+    bool warped = false;
+    glm::dvec2 warpFitScale{0.0};  // warped: O's scales of x and y after the warp (O00, O11)
 
     glm::dmat4 worldToLight() const;    // L^-1 (rigid inverse)
     glm::dmat4 viewProjection() const;  // P_light * L^-1
@@ -83,7 +87,8 @@ struct LightView {
 // The window-depth change across one texel of a surface at 45 degrees to the light's axis
 // (the polygon offset's slope m for slope 1), with `resolution` texels per side:
 // orthographic: texel width / (far - near), the same everywhere; perspective: at the
-// nearest receiver (largest there), texel width(d) * |d window depth / d distance|(d).
+// nearest receiver (largest there), texel width(d) * |d window depth / d distance|(d);
+// warped: at the body's near end along the warp axis, the wider of its two texel widths.
 double windowDepthPerTexel(const LightView& view, int resolution);
 
 // GL cube-map face order (GL_TEXTURE_CUBE_MAP_POSITIVE_X + face).
@@ -108,6 +113,12 @@ struct PointLightViews {
 // reversedZ: the window depth of the reversed [0,1] projection instead (near 1, far 0).
 double cubeShadowReferenceDepth(const glm::dvec3& lightToPoint, double nearPlane, double farPlane,
                                 bool reversedZ = false);
+
+// The light's -Z in world space (unit) from its node matrix, in `direction`; a reason when it
+// is not usable (not finite, zero length), else an empty string.
+std::string directionProblem(const engine::LightInstance& instance, glm::dvec3& direction);
+// A view that says why the light has no shadow (valid false).
+LightView invalidView(std::string reason);
 
 // A rigid L (columns x, y, z = -direction, position) with an up vector that is robust for
 // every direction: the world axis least parallel to it. Direction need not be unit length.

@@ -33,6 +33,7 @@ std::vector<LightShadow> resolveLights(const engine::Scene& scene, const ShadowS
         if (light.extras.is_object() && light.extras.contains("shadow")) {
             applySettings(shadow.settings, light.extras["shadow"], source, object + ": extras.shadow");
             checkSizeKeyForType(light.extras["shadow"], light.type, source, object + ": extras.shadow");
+            checkProjectionKeyForType(light.extras["shadow"], light.type, source, object + ": extras.shadow");
         }
         // KHR_lights_shadows "castShadows": false: the file says this light casts no shadow,
         // and that wins over our extras (only the command line's variant overrides it).
@@ -48,6 +49,7 @@ std::vector<LightShadow> resolveLights(const engine::Scene& scene, const ShadowS
         if (options != lightOptions.end()) {
             applySettings(shadow.settings, options->second, "", object);
             checkSizeKeyForType(options->second, light.type, "", object);
+            checkProjectionKeyForType(options->second, light.type, "", object);
         }
         const std::string checked = options == lightOptions.end() ? object + ": extras.shadow" : object;
         checkLimits(shadow.settings, maxTextureSize, source, checked);

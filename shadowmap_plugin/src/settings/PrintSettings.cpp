@@ -31,6 +31,8 @@ nlohmann::json printSettings(const ShadowSettings& settings) {
                           {"cascade_blend", settings.cascadeBlend},
                           {"stable", settings.stable},
                           {"cull_unseen_casters", settings.cullUnseenCasters},
+                          {"projection", toString(settings.projection)},
+                          {"lispsm_n_scale", settings.lispsmNScale},
                           {"shadow_distance", settings.shadowDistance},
                           {"shadow_fade", settings.shadowFade},
                           {"light_radius", settings.lightRadius},

@@ -208,6 +208,19 @@ std::vector<SettingKey> makeKeys() {
                          "`woo` keeps every caster";
     keys.push_back(unseen);
 
+    SettingKey projection = makeKey("projection", SettingKind::Choice);
+    projection.choices = choicesOf(names::kProjections);
+    projection.description = "directional lights: `uniform` an orthographic map, `lispsm` a light-space perspective "
+                             "warp of the single map that crowds texels near the camera (cascades `auto` keeps one "
+                             "map; with more cascades they stay uniform); hard filters only";
+    keys.push_back(projection);
+
+    SettingKey nScale = makeKey("lispsm_n_scale", SettingKind::Number);
+    nScale.values = "> 0";
+    nScale.description = "`lispsm`: multiplies the warp's optimal near distance n; above 1 the warp weakens toward "
+                         "uniform, below 1 it magnifies the near end more";
+    keys.push_back(nScale);
+
     const nlohmann::json defaults = printSettings(ShadowSettings{});
     for (SettingKey& key : keys) {
         if (defaults.contains(key.name)) key.defaultValue = defaults[key.name];

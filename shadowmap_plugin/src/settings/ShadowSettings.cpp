@@ -38,6 +38,7 @@ std::vector<std::string> keyNames() {
 const char* toString(Variant variant) { return names::kVariants[static_cast<int>(variant)]; }
 const char* toString(DepthFormat format) { return names::kDepthFormats[static_cast<int>(format)]; }
 const char* toString(Filter filter) { return names::kFilters[static_cast<int>(filter)]; }
+const char* toString(Projection projection) { return names::kProjections[static_cast<int>(projection)]; }
 
 glm::vec2 defaultPolygonOffset(Variant variant, Filter filter, bool reversedZ) {
     if (variant != Variant::Standard) return glm::vec2(0.0f);
@@ -197,6 +198,18 @@ void applySettings(ShadowSettings& settings, const nlohmann::json& json, const s
                                     std::string("must be >= 0 ") + unit + " (0: no size), got " + json[name].dump());
         return size;
     };
+    if (json.contains("projection"))
+        settings.projection =
+            parseEnum<Projection>(json_read::readString(json["projection"], source, key("projection")),
+                                  names::kProjections, "projection", source, key("projection"));
+    if (json.contains("lispsm_n_scale")) {
+        const double scale = json_read::readNumber(json["lispsm_n_scale"], source, key("lispsm_n_scale"));
+        if (!(scale > 0.0) || !std::isfinite(scale))
+            engine::throwInputError(source, key("lispsm_n_scale"),
+                                    "must be a finite number > 0 (1: the optimal n), got " +
+                                        json["lispsm_n_scale"].dump());
+        settings.lispsmNScale = scale;
+    }
     if (json.contains("light_radius")) settings.lightRadius = readSize("light_radius", "world units");
     if (json.contains("angular_diameter")) settings.angularDiameter = readSize("angular_diameter", "radians");
 }
@@ -212,6 +225,15 @@ void checkSizeKeyForType(const nlohmann::json& json, engine::Light::Type type, c
                                               "light_radius");
 }
 
+void checkProjectionKeyForType(const nlohmann::json& json, engine::Light::Type type, const std::string& source,
+                               const std::string& object) {
+    if (type == engine::Light::Type::Directional || !json.is_object() || !json.contains("projection")) return;
+    if (json["projection"] == toString(Projection::Lispsm))
+        engine::throwInputError(source, object + ".projection",
+                                "\"lispsm\" warps a directional light's map; a spot or point light's map is a "
+                                "perspective already: use \"uniform\"");
+}
+
 void checkFilterForType(const ShadowSettings& settings, engine::Light::Type type, const std::string& source,
                         const std::string& object) {
     if (settings.variant == Variant::None) return;
@@ -219,8 +241,12 @@ void checkFilterForType(const ShadowSettings& settings, engine::Light::Type type
         engine::throwInputError(source, object + ".filter_radius",
                                 std::string("widens pcf's kernel, and this light's filter is \"") +
                                     toString(settings.filter) + "\": use filter \"pcf\", or filter_radius 0");
-    if (settings.filter != Filter::Pcss || settings.lightSize(type) > 0.0) return;
     const bool directional = type == engine::Light::Type::Directional;
+    if (directional && settings.projection == Projection::Lispsm && settings.filter == Filter::Pcss)
+        engine::throwInputError(source, object + ".projection",
+                                "\"lispsm\" warps the map, and pcss's penumbra search assumes an unwarped one: use "
+                                "projection \"uniform\" with pcss, or a hard filter (\"pcf\", \"nearest\")");
+    if (settings.filter != Filter::Pcss || settings.lightSize(type) > 0.0) return;
     engine::throwInputError(source, object + ".filter",
                             std::string("\"pcss\" softens the shadow by the light's size, and this light has none: "
                                         "set ") +

@@ -15,6 +15,8 @@ namespace {
 // as they were, last frame's answer is reused.
 int cascadeCount(LightState& light, const PlanContext& context, const FrustumFitOptions& fit) {
     if (light.settings.cascades != kAutoCascades) return light.settings.cascades;
+    // The warp is what spends a single map's texels near the camera (LispsmWarp.h).
+    if (light.settings.projection == Projection::Lispsm) return 1;
     const engine::LightInstance& placed = context.scene.lightInstances[light.slot];
     const engine::FrameCamera& camera = context.camera;
     LightShadowFrame& plan = light.frame;
@@ -106,6 +108,10 @@ bool planLight(LightState& light, const PlanContext& context, int textureUnit, i
         if (light.settings.nearPlane > 0.0 || light.settings.farPlane > 0.0)
             plan.warnings.push_back("near_plane/far_plane apply to spot and point lights; ignored for a directional light");
         plan.cascadeCount = cascadeCount(light, context, fitOptions);
+        if (light.settings.projection == Projection::Lispsm &&
+            directionalMapIsSliced(plan.cascadeCount, light.settings.shadowDistance))
+            plan.warnings.push_back("projection lispsm warps a single map: with cascades or a shadow_distance the "
+                                    "slices stay uniform");
     } else {
         fitOptions.nearPlane = light.settings.nearPlane;
         fitOptions.farPlane = light.settings.farPlane;

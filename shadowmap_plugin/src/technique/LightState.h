@@ -4,6 +4,7 @@
 // rendered. The plugin's LightShadow adds the map texture itself.
 #include "math/CascadeFit.h"
 #include "math/LightFrustum.h"
+#include "math/LispsmWarp.h"
 #include "shadowmap/ShadowSettings.h"
 
 #include "engine/graph/PassId.h"
@@ -22,6 +23,7 @@ enum class MapKind { None = 0, Map2D = 1, Cube = 2, Cascades = 3 };
 struct LightShadowFrame {
     MapKind kind = MapKind::None;
     LightView view;              // spot / directional
+    LispsmFit lispsm;            // directional with projection lispsm: what the warp chose
     PointLightViews pointViews;  // point
     CascadeViews cascades;       // directional with cascades > 1: one view per array layer
     int cascadeCount = 1;        // directional: the cascades this frame (1: one map)

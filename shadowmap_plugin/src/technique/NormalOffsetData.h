@@ -15,7 +15,12 @@ namespace shadowmap {
 // (texgen.glsl's q: the distance along the light's axis in a perspective view, 1 in an
 // orthographic one): map coordinates s = (P[0][0] x / q + 1) / 2, so a texel 1/resolution
 // wide in s is 2 q / (P[0][0] resolution) wide in x; the wider of x and y.
+// A warped map (LispsmWarp.h, q: the distance along the warp axis) has texels 2 q / (O00
+// resolution) wide across the warp: this.
 float texelWidthPerDepth(const LightView& view, int resolution);
+// ... and q^2 (f - n) / (O11 f n resolution) long along it: this is that width per q^2
+// (0 for any other map), so the width at the receiver is max(a q, b q^2) for every 2D map.
+float texelWidthPerDepthSquared(const LightView& view, int resolution);
 
 // A cube face is a 90-degree view (P[0][0] = 1): a texel per unit of the major-axis distance.
 inline float cubeTexelWidthPerDepth(int resolution) { return 2.0f / static_cast<float>(resolution); }

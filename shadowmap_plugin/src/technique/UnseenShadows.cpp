@@ -127,10 +127,11 @@ bool worldFrustum(const engine::FrameCamera& camera, WorldFrustum& out) {
 constexpr std::array<std::array<int, 2>, 12> kEdges{{{0, 1}, {2, 3}, {4, 5}, {6, 7}, {0, 2}, {1, 3},
                                                      {4, 6}, {5, 7}, {0, 4}, {1, 5}, {2, 6}, {3, 7}}};
 
-// The box around `box` cut by the frustum: the corners of each inside the other and where
-// the edges of each cross the faces of the other. Empty when they do not meet. Inside
-// tests allow a relative tolerance, so a point on a face counts.
-engine::Aabb cutToFrustum(const engine::Aabb& box, const WorldFrustum& frustum) {
+// The vertices of `box` cut by the frustum (their convex intersection is the hull of these):
+// the corners of each inside the other and where the edges of each cross the faces of the
+// other, appended to `out`. None when they do not meet. Inside tests allow a relative
+// tolerance, so a point on a face counts.
+void appendCutPoints(const engine::Aabb& box, const WorldFrustum& frustum, std::vector<glm::dvec3>& out) {
     const double tolerance = 1e-9 * (1.0 + glm::length(box.max - box.min));
     const auto inFrustum = [&](const glm::dvec3& p) {
         for (const glm::dvec4& plane : frustum.planes)
@@ -144,9 +145,8 @@ engine::Aabb cutToFrustum(const engine::Aabb& box, const WorldFrustum& frustum) 
     for (int corner = 0; corner < 8; ++corner)
         boxCorners[corner] = {(corner & 1) ? box.max.x : box.min.x, (corner & 2) ? box.max.y : box.min.y,
                               (corner & 4) ? box.max.z : box.min.z};
-    engine::Aabb cut;
     const auto keep = [&](const glm::dvec3& p) {
-        if (inFrustum(p) && inBox(p)) cut.extend(p);
+        if (inFrustum(p) && inBox(p)) out.push_back(p);
     };
     for (const glm::dvec3& corner : boxCorners) keep(corner);
     for (const glm::dvec3& corner : frustum.corners) keep(corner);
@@ -167,6 +167,14 @@ engine::Aabb cutToFrustum(const engine::Aabb& box, const WorldFrustum& frustum) 
                 if ((da < 0.0) != (db < 0.0)) keep(a + (b - a) * (da / (da - db)));
             }
     }
+}
+
+// The box around `box` cut by the frustum; empty when they do not meet.
+engine::Aabb cutToFrustum(const engine::Aabb& box, const WorldFrustum& frustum) {
+    std::vector<glm::dvec3> points;
+    appendCutPoints(box, frustum, points);
+    engine::Aabb cut;
+    for (const glm::dvec3& p : points) cut.extend(p);
     return cut;
 }
 
@@ -184,6 +192,21 @@ std::vector<engine::Aabb> visibleReceiverParts(const std::vector<engine::Aabb>& 
         parts.push_back(part.empty() ? box : part);
     }
     return parts;
+}
+
+std::vector<glm::dvec3> visibleReceiverPoints(const std::vector<engine::Aabb>& visibleReceivers,
+                                              const engine::FrameCamera& camera) {
+    WorldFrustum frustum;
+    const bool finite = worldFrustum(camera, frustum);
+    std::vector<glm::dvec3> points;
+    for (const engine::Aabb& box : visibleReceivers) {
+        const std::size_t before = points.size();
+        if (finite) appendCutPoints(box, frustum, points);
+        // As visibleReceiverParts: where the cut finds nothing, the whole box stands in.
+        if (points.size() == before && !box.empty())
+            for (int corner = 0; corner < 8; ++corner) points.push_back(box.corner(corner));
+    }
+    return points;
 }
 
 std::vector<bool> castersWithUnseenShadows(const glm::dmat4& viewProjection,

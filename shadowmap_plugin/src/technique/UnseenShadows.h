@@ -45,6 +45,12 @@ std::vector<bool> castersWithUnseenShadows(const glm::dmat4& viewProjection,
 std::vector<engine::Aabb> visibleReceiverParts(const std::vector<engine::Aabb>& visibleReceivers,
                                                const engine::FrameCamera& camera);
 
+// The vertices of each visible receiver's box cut by the camera's frustum, whose hulls are
+// the parts of the receivers in view (a light-space perspective map's body, LispsmWarp.h);
+// an infinite far plane gives the boxes' corners.
+std::vector<glm::dvec3> visibleReceiverPoints(const std::vector<engine::Aabb>& visibleReceivers,
+                                              const engine::FrameCamera& camera);
+
 // Fills light.frame.unseenCasters for every layer the light's projection draws this frame
 // (before the cache decision), when the light's cull_unseen_casters is on.
 void planUnseenShadows(LightState& light, const PlanContext& context);

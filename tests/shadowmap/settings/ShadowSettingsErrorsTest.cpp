@@ -53,7 +53,7 @@ TEST(ShadowSettingsErrors, UnknownKeyListsTheKnownOnes) {
     for (const shadowmap::SettingKey& key : shadowmap::settingKeys()) known += (known.empty() ? "" : ", ") + key.name;
     EXPECT_EQ(known, "variant, resolution, depth_format, filter, filter_taps, filter_radius, normal_offset, polygon_offset, dimming, near_plane, far_plane, "
                      "reversed_z, polygon_offset_clamp, cascades, cascade_lambda, cascade_blend, stable, shadow_distance, shadow_fade, "
-                     "light_radius, angular_diameter, cull_unseen_casters");
+                     "light_radius, angular_diameter, cull_unseen_casters, projection, lispsm_n_scale");
     expectNamed({"unknown key", {{"colour", "red"}}, "colour", "unknown key (known: " + known + ")"});
 }
 
@@ -231,4 +231,44 @@ TEST(ShadowSettingsErrors, ACommandLineVariantNamesItsFlag) {
         EXPECT_STREQ(error.what(), "--light sun=soft: variant: unknown variant \"soft\" (known: standard, woo, "
                                    "backface, none)");
     }
+}
+
+TEST(ShadowSettingsErrors, LispsmIsForDirectionalLightsHardFiltersAndAPositiveScale) {
+    using Type = engine::Light::Type;
+    expectNamed({"projection", {{"projection", "psm"}}, "projection",
+                 "unknown projection \"psm\" (known: uniform, lispsm)"});
+    for (const double bad : {0.0, -1.0})
+        expectNamed({"lispsm_n_scale", {{"lispsm_n_scale", bad}}, "lispsm_n_scale", "must be a finite number > 0"});
+    expectNamed({"lispsm_n_scale", {{"lispsm_n_scale", kInfinity}}, "lispsm_n_scale", "must be finite"});
+    auto projectionMessage = [](const nlohmann::json& json, Type type) -> std::string {
+        try {
+            shadowmap::checkProjectionKeyForType(json, type, kSource, kObject);
+        } catch (const engine::InputError& error) {
+            return error.what();
+        }
+        return "no error";
+    };
+    for (Type type : {Type::Spot, Type::Point})
+        EXPECT_EQ(projectionMessage({{"projection", "lispsm"}}, type),
+                  std::string(kSource) + ": " + kObject +
+                      ".projection: \"lispsm\" warps a directional light's map; a spot or point light's map is a "
+                      "perspective already: use \"uniform\"");
+    EXPECT_EQ(projectionMessage({{"projection", "uniform"}}, Type::Spot), "no error");
+    EXPECT_EQ(projectionMessage({{"projection", "lispsm"}}, Type::Directional), "no error");
+
+    // pcss's penumbra search reads an unwarped map: the pair is refused on a directional light
+    // (where lispsm applies) and left alone on a spot light (where it does not).
+    shadowmap::ShadowSettings settings =
+        shadowmap::parseSettings({{"projection", "lispsm"}, {"filter", "pcss"}}, kSource, kObject);
+    settings.angularDiameter = 0.01;
+    settings.lightRadius = 0.1;
+    try {
+        shadowmap::checkFilterForType(settings, Type::Directional, kSource, kObject);
+        ADD_FAILURE() << "lispsm with pcss was accepted";
+    } catch (const engine::InputError& error) {
+        EXPECT_NE(std::string(error.what()).find(std::string(kObject) + ".projection: \"lispsm\" warps the map"),
+                  std::string::npos)
+            << error.what();
+    }
+    EXPECT_NO_THROW(shadowmap::checkFilterForType(settings, Type::Spot, kSource, kObject));
 }

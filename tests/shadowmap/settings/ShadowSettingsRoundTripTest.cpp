@@ -49,6 +49,8 @@ std::vector<KeyChange> oneChangePerKey() {
         {"light_radius", [](ShadowSettings& s) { s.lightRadius = 0.35; }},
         {"angular_diameter", [](ShadowSettings& s) { s.angularDiameter = 0.0093; }},
         {"cull_unseen_casters", [](ShadowSettings& s) { s.cullUnseenCasters = false; }},
+        {"projection", [](ShadowSettings& s) { s.projection = shadowmap::Projection::Lispsm; }},
+        {"lispsm_n_scale", [](ShadowSettings& s) { s.lispsmNScale = 2.5; }},
     };
 }
 
@@ -72,7 +74,8 @@ TEST(ShadowSettingsRoundTrip, DefaultsPrintAsDocumented) {
                                      {"cascade_lambda", 0.75},     {"cascade_blend", 0.0},
                                      {"stable", true},             {"shadow_distance", 0.0},
                                      {"shadow_fade", 0.1},         {"light_radius", 0.0},
-                                     {"angular_diameter", 0.0},    {"cull_unseen_casters", true}};
+                                     {"angular_diameter", 0.0},    {"cull_unseen_casters", true},
+                                     {"projection", "uniform"},    {"lispsm_n_scale", 1.0}};
     EXPECT_EQ(shadowmap::printSettings(ShadowSettings{}), expected);
     EXPECT_EQ(roundTrip(ShadowSettings{}), ShadowSettings{});
     // The float 0.4 prints as the decimal it was written as, not 0.4000000059604645.

@@ -3,19 +3,49 @@
 #include "technique/MapCacheKey.h"
 #include "technique/NormalOffsetData.h"
 #include "technique/SoftShadowLayers.h"
+#include "technique/UnseenShadows.h"
 #include "technique/projection/FiniteMatrix.h"
 
+#include "math/CascadeFit.h"
+#include "math/LispsmWarp.h"
 #include "math/Texgen.h"
 
 namespace shadowmap {
+
+namespace {
+
+// A directional light's light-space perspective map: its body is the visible receivers cut
+// by the camera's frustum, so the warp spends the texels where the camera looks.
+LightView fitWarpedMap(LightState& light, const engine::LightInstance& placed, const PlanContext& context,
+                       const FrustumFitOptions& options) {
+    glm::dvec3 direction;
+    if (std::string why = directionProblem(placed, direction); !why.empty())
+        return invalidView("directional " + why);
+    const engine::FrameCamera& camera = context.camera;
+    WarpEye eye;
+    eye.position = camera.position();
+    eye.direction = glm::normalize(-glm::dvec3(camera.eyeToWorld[2]));
+    double farDepth = 0.0;
+    std::vector<glm::dvec3> body;
+    if (receiverDepthRange({camera.eyeToWorld, camera.projection}, context.bounds.receivers, eye.nearDepth, farDepth))
+        body = visibleReceiverPoints(context.bounds.receivers, camera);
+    return fitLispsm(direction, eye, body, context.bounds.casters, options, light.settings.lispsmNScale,
+                     &light.frame.lispsm);
+}
+
+} // namespace
 
 ProjectionFit FittedMapProjection::fit(LightState& light, const PlanContext& context,
                                        const FrustumFitOptions& options) const {
     LightShadowFrame& plan = light.frame;
     const engine::LightInstance& placed = context.scene.lightInstances[light.slot];
     const engine::Light& source = context.scene.lights[placed.light];
-    plan.view = light.type == engine::Light::Type::Spot ? fitSpotLight(placed, source, context.bounds, options)
-                                                        : fitDirectionalLight(placed, source, context.bounds, options);
+    if (light.type == engine::Light::Type::Spot)
+        plan.view = fitSpotLight(placed, source, context.bounds, options);
+    else if (light.settings.projection == Projection::Lispsm)
+        plan.view = fitWarpedMap(light, placed, context, options);
+    else
+        plan.view = fitDirectionalLight(placed, source, context.bounds, options);
     if (!plan.view.clampWarning.empty()) plan.warnings.push_back(plan.view.clampWarning);
     return {plan.view.valid, plan.view.empty, plan.view.invalidReason};
 }
@@ -37,7 +67,8 @@ bool FittedMapProjection::packLookup(const LightState& light, const LookupContex
     if (!isFinite(uploaded)) return false;
     block.eyePlanes[light.slot] = uploaded;
     block.softLayers[light.slot * kMaxCascades] = softLayer(light.frame.view, light);
-    block.texelWidths[light.slot] = glm::vec4(texelWidthPerDepth(light.frame.view, light.settings.resolution), 0.0f,
+    block.texelWidths[light.slot] = glm::vec4(texelWidthPerDepth(light.frame.view, light.settings.resolution),
+                                              texelWidthPerDepthSquared(light.frame.view, light.settings.resolution),
                                               0.0f, 0.0f);
     block.lightInEye[light.slot] = lightInEye(light.frame.view, light.type, context.view);
     return true;
@@ -52,6 +83,14 @@ void FittedMapProjection::addStats(const LightState& light, nlohmann::json& stat
     for (int column = 0; column < 4; ++column)
         for (int row = 0; row < 4; ++row) lightToWorld.push_back(view.lightToWorld[column][row]);
     stats["light_to_world"] = lightToWorld;
+    if (light.type == engine::Light::Type::Directional && light.settings.projection == Projection::Lispsm) {
+        const LispsmFit& warp = light.frame.lispsm;
+        stats["lispsm"] = {{"warped", view.warped},
+                           {"sin_gamma", warp.sinGamma},
+                           {"weight", warp.weight},
+                           {"n", view.warped ? nlohmann::json(warp.n) : nlohmann::json("infinite")},
+                           {"body_depth", warp.bodyDepth}};
+    }
 }
 
 void FittedMapProjection::describe(const LightState& light, engine::ShadowView& out) const {

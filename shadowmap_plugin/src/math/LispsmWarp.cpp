@@ -1,0 +1,172 @@
+#include "math/LispsmWarp.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+namespace shadowmap {
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+bool usableBox(const engine::Aabb& box) {
+    return !box.empty() && std::isfinite(box.min.x) && std::isfinite(box.min.y) && std::isfinite(box.min.z) &&
+           std::isfinite(box.max.x) && std::isfinite(box.max.y) && std::isfinite(box.max.z);
+}
+
+bool finiteMatrix(const glm::dmat4& m) {
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r)
+            if (!std::isfinite(m[c][r])) return false;
+    return true;
+}
+
+// The light frame: z toward the light, y the warp axis (the view direction with its part
+// along the light removed), x = y cross z; with no warp axis, any axes across the light.
+struct WarpFrame {
+    glm::dvec3 x, y, z, origin;
+    glm::dvec3 toLocal(const glm::dvec3& world) const {
+        const glm::dvec3 d = world - origin;
+        return {glm::dot(x, d), glm::dot(y, d), glm::dot(z, d)};
+    }
+};
+
+// The warp W (rows x, y, z, w) acting on coordinates relative to C: x, z divided by the
+// distance along y, y mapped from [n, f] to [-1, 1]. Uniform (n infinite): the identity.
+glm::dmat4 warpMatrix(double n, double f) {
+    glm::dmat4 w(1.0);
+    if (!std::isfinite(n)) return w;
+    w[1][1] = (f + n) / (f - n);
+    w[3][1] = -2.0 * f * n / (f - n);
+    w[1][3] = 1.0;
+    w[3][3] = 0.0;
+    return w;
+}
+
+}  // namespace
+
+double lispsmWarpWeight(double sinGamma) {
+    const double gamma = std::asin(std::clamp(sinGamma, 0.0, 1.0));
+    const double t = std::clamp((gamma - kLispsmUniformAngle) / (kLispsmFullWarpAngle - kLispsmUniformAngle), 0.0, 1.0);
+    return t * t * (3.0 - 2.0 * t);
+}
+
+double lispsmOptimalN(double nearDepth, double bodyDepth, double sinGamma) {
+    const double zn = nearDepth / sinGamma;
+    const double zf = zn + bodyDepth * sinGamma;
+    return (zn + std::sqrt(zf * zn)) / sinGamma;
+}
+
+LightView fitLispsm(const glm::dvec3& direction, const WarpEye& eye, std::span<const glm::dvec3> body,
+                    std::span<const engine::Aabb> casters, const FrustumFitOptions& options, double nScale,
+                    LispsmFit* chosen) {
+    LightView v;
+    v.reversedZ = options.reversedZ;
+    WarpFrame frame;
+    frame.z = -glm::normalize(direction);
+    const glm::dvec3 across = eye.direction - glm::dot(eye.direction, frame.z) * frame.z;
+    LispsmFit fit;
+    fit.sinGamma = std::min(glm::length(across), 1.0);
+    fit.weight = lispsmWarpWeight(fit.sinGamma);
+    if (fit.weight > 0.0) {
+        frame.y = across / glm::length(across);
+    } else {
+        const glm::dmat4 any = lightToWorldFromDirection(glm::dvec3(0.0), direction);
+        frame.y = glm::dvec3(any[1]);
+    }
+    frame.x = glm::cross(frame.y, frame.z);
+    frame.origin = eye.position;
+
+    // The body in the frame, and its rectangle across the light.
+    std::vector<glm::dvec3> points;
+    for (const glm::dvec3& p : body)
+        if (std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z)) points.push_back(frame.toLocal(p));
+    v.empty = points.empty();
+    if (v.empty) {  // nothing to hold: a unit placeholder, its pass skipped
+        v.lightToWorld = lightToWorldFromDirection(eye.position, direction);
+        v.nearPlane = 0.0;
+        v.farPlane = 1.0;
+        v.projection = glm::orthoRH_NO(-0.5, 0.5, -0.5, 0.5, 0.0, 1.0);
+        v.valid = true;
+        if (chosen) *chosen = fit;
+        return v;
+    }
+    engine::Aabb r;
+    for (const glm::dvec3& p : points) r.extend(p);
+    // Casters over the rectangle reach toward the light: extrude the body up to them.
+    double zTop = r.max.z;
+    for (const engine::Aabb& box : casters) {
+        if (!usableBox(box)) continue;
+        engine::Aabb c;
+        for (int i = 0; i < 8; ++i) c.extend(frame.toLocal(box.corner(i)));
+        const bool overlaps = c.min.x <= r.max.x && c.max.x >= r.min.x && c.min.y <= r.max.y && c.max.y >= r.min.y;
+        if (overlaps && c.max.z > r.min.z) zTop = std::max(zTop, c.max.z);
+    }
+    const std::size_t bodyPoints = points.size();
+    for (std::size_t i = 0; i < bodyPoints; ++i) points.push_back({points[i].x, points[i].y, zTop});
+
+    // The perspective along y: its centre n before the body's near end, across the light at
+    // the eye (x = 0 in this frame), level with it along the light (z = 0: any level gives
+    // the same map, and the eye's keeps the numbers small).
+    fit.bodyDepth = r.max.y - r.min.y;
+    const double nearDepth = std::max(eye.nearDepth, 1e-9 * std::max(fit.bodyDepth, 1e-300));
+    fit.n = kInf;
+    if (fit.weight > 0.0 && fit.bodyDepth > 0.0) {
+        fit.n = nScale * lispsmOptimalN(nearDepth, fit.bodyDepth, fit.sinGamma) / fit.weight;
+        // Beyond this the perspective is an orthographic view to within double's rounding.
+        if (!(fit.n < 1e9 * fit.bodyDepth)) fit.n = kInf;
+    }
+    const double yCentre = std::isfinite(fit.n) ? r.min.y - fit.n : 0.0;
+    const double n = fit.n, f = fit.n + fit.bodyDepth;
+    const glm::dmat4 warp = warpMatrix(n, f);
+
+    // The warped body's box: x, y, z after the perspective divide.
+    engine::Aabb warped;
+    for (const glm::dvec3& p : points) {
+        const glm::dvec4 h = warp * glm::dvec4(p.x, p.y - yCentre, p.z, 1.0);
+        warped.extend(glm::dvec3(h) / h.w);
+    }
+    const glm::dvec3 size = warped.max - warped.min;
+    double pad = options.extentMargin * std::max({size.x, size.y, size.z});
+    if (!(pad > 0.0)) pad = 1e-6;
+    const double padZ = std::max(options.depthMargin * size.z, pad);
+    const glm::dvec3 lo(warped.min.x - pad, warped.min.y - pad, warped.min.z - padZ);
+    const glm::dvec3 hi(warped.max.x + pad, warped.max.y + pad, warped.max.z + padZ);
+
+    // O: the orthographic fit, looking down -z (the light's direction) with depth 0 (1 with
+    // reversed Z) at the top, toward the light.
+    glm::dmat4 ortho(1.0);
+    ortho[0][0] = 2.0 / (hi.x - lo.x);
+    ortho[3][0] = -(hi.x + lo.x) / (hi.x - lo.x);
+    ortho[1][1] = 2.0 / (hi.y - lo.y);
+    ortho[3][1] = -(hi.y + lo.y) / (hi.y - lo.y);
+    const double depth = hi.z - lo.z;
+    if (options.reversedZ) {
+        ortho[2][2] = 1.0 / depth;
+        ortho[3][2] = -lo.z / depth;
+    } else {
+        ortho[2][2] = -2.0 / depth;
+        ortho[3][2] = (hi.z + lo.z) / depth;
+    }
+
+    const glm::dvec3 centre = frame.origin + frame.y * yCentre;
+    v.lightToWorld = glm::dmat4(glm::dvec4(frame.x, 0.0), glm::dvec4(frame.y, 0.0), glm::dvec4(frame.z, 0.0),
+                                glm::dvec4(centre, 1.0));
+    v.projection = ortho * warp;
+    v.warped = std::isfinite(n);
+    v.warpFitScale = {ortho[0][0], ortho[1][1]};
+    // Near and far along the warp axis; a uniform map's are those of its depth, as for
+    // fitDirectionalLight.
+    v.nearPlane = v.warped ? n : 0.0;
+    v.farPlane = v.warped ? f : depth;
+    v.nearestReceiver = v.nearPlane;
+    v.valid = finiteMatrix(v.lightToWorld) && finiteMatrix(v.projection) && depth > 0.0;
+    if (!v.valid) v.invalidReason = "fitted light-space perspective frustum is degenerate";
+    if (chosen) *chosen = fit;
+    return v;
+}
+
+}  // namespace shadowmap
