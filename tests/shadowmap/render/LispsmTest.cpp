@@ -1,0 +1,87 @@
+// Light-space perspective shadow maps (projection "lispsm", math/LispsmWarp.h) on the
+// outdoor street (tests/support/OutdoorScene.h), against analytic truth: one warped map
+// must at least halve the error of one uniform map of the same resolution within 25 m of the
+// camera, and not raise it over the whole visible ground; cascades "auto" keeps the one
+// warped map; and explicit cascades stay what cascades alone give.
+#include "../../gl/GlTestContext.h"
+#include "../../support/OutdoorScene.h"
+#include "AnalyticShadows.h"
+
+namespace {
+
+using engine::test::OutdoorScene;
+
+constexpr int kWidth = 480, kHeight = 270;
+constexpr double kNearCamera = 25.0;  // metres: "near the camera", as the cascade tests
+constexpr int kWithEdges = 0;         // compareFloorMask's edge radius: every pixel counts
+
+class Lispsm : public engine::test::ShadowPluginTest {
+protected:
+    static void SetUpTestSuite() { loadPlugin({{"resolution", 1024}}); }
+
+    // The sun's mask with `shadow` settings against the analytic truth on the ground: within
+    // kNearCamera of the camera, or everywhere visible; off edges (2 pixels) or with them.
+    engine::test::MaskStats groundErrors(const nlohmann::json& shadow, bool nearOnly, int edgeRadius,
+                                         engine::ShadowView* sun = nullptr) {
+        const OutdoorScene outdoor = engine::test::makeOutdoorScene(shadow);
+        const engine::FrameCamera camera = engine::test::outdoorCamera(kWidth, kHeight);
+        engine::FrameResult frame;
+        const auto mask = engine::test::renderShadowMask(plugins(), outdoor.scene, camera, outdoor.sunSlot, &frame);
+        if (sun) *sun = *frame.shadowView(outdoor.sunSlot);
+        const glm::dvec3 eye = camera.position();
+        const auto inside = [&](const glm::dvec3& p) { return !nearOnly || glm::length(p - eye) < kNearCamera; };
+        return engine::test::compareFloorMask(mask, outdoor.scene, outdoor.sunSlot, camera, outdoor.occluders, 0.0,
+                                              OutdoorScene::kGroundHalf, inside, edgeRadius);
+    }
+};
+
+const nlohmann::json kUniform{{"cascades", 1}, {"projection", "uniform"}};
+const nlohmann::json kWarped{{"cascades", 1}, {"projection", "lispsm"}};
+
+TEST_F(Lispsm, HalvesTheNearCameraErrorOfOneUniformMap) {
+    for (const int edges : {kWithEdges, 2}) {
+        const auto uniform = groundErrors(kUniform, true, edges);
+        engine::ShadowView sun;
+        const auto warped = groundErrors(kWarped, true, edges, &sun);
+        std::printf("within %.0f m, edge radius %d: uniform %.3f%% (%d acne, %d leak), lispsm %.3f%% (%d, %d) of %d\n",
+                    kNearCamera, edges, 100 * uniform.wrongFraction(), uniform.acne, uniform.leak,
+                    100 * warped.wrongFraction(), warped.acne, warped.leak, warped.evaluated);
+        ASSERT_GT(uniform.evaluated, 5000);
+        ASSERT_GT(uniform.truthShadowed, 300);  // the posts' shadows are in view
+        EXPECT_STREQ(engine::mapKindName(sun), "2d");
+        // Measured on llvmpipe (1024 maps, 480x270): with edges uniform 5.252 % (1172 acne,
+        // 1793 leak of 56460), lispsm 0.149 % (40, 44); off edges 2.656 % against 0.000 %.
+        // The issue asks for half; a warp that gained nothing (or a body fitted as a box,
+        // 0.7x) fails it.
+        EXPECT_LE(warped.wrongFraction(), uniform.wrongFraction() / 2.0) << "edge radius " << edges;
+    }
+}
+
+TEST_F(Lispsm, DoesNotRaiseTheErrorOverTheWholeGround) {
+    const auto uniform = groundErrors(kUniform, false, kWithEdges);
+    const auto warped = groundErrors(kWarped, false, kWithEdges);
+    std::printf("whole ground: uniform %.3f%%, lispsm %.3f%% of %d\n", 100 * uniform.wrongFraction(),
+                100 * warped.wrongFraction(), warped.evaluated);
+    // The far texels grow (LispsmWarpTest: 15x at 110 m); the near ones, which cover most
+    // pixels, shrink more. Measured: uniform 5.117 %, lispsm 0.647 % (371 acne, 46 leak of
+    // 64466; the acne far down the street). The bound: no worse than the uniform map.
+    EXPECT_LE(warped.wrongFraction(), uniform.wrongFraction());
+}
+
+TEST_F(Lispsm, AutoCascadesKeepOneWarpedMapAndExplicitCascadesStayUniform) {
+    engine::ShadowView sun;
+    groundErrors({{"projection", "lispsm"}}, true, 2, &sun);
+    EXPECT_STREQ(engine::mapKindName(sun), "2d");
+    EXPECT_EQ(sun.layers.size(), 1u);
+
+    // With 4 cascades the slices are uniform (said in a warning): the same mask as without
+    // the warp.
+    const OutdoorScene warped = engine::test::makeOutdoorScene({{"cascades", 4}, {"projection", "lispsm"}});
+    const OutdoorScene uniform = engine::test::makeOutdoorScene({{"cascades", 4}});
+    const engine::FrameCamera camera = engine::test::outdoorCamera(kWidth, kHeight);
+    const auto a = engine::test::renderShadowMask(plugins(), warped.scene, camera, warped.sunSlot);
+    const auto b = engine::test::renderShadowMask(plugins(), uniform.scene, camera, uniform.sunSlot);
+    EXPECT_EQ(a, b);
+}
+
+}  // namespace
