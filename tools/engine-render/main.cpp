@@ -154,8 +154,8 @@ void printSoftErrors(const evaluation::LightResult& light, nlohmann::json& json)
 // printed and returned for --stats.
 nlohmann::json printLightErrors(const evaluation::ViewResult& view, const engine::Scene& scene,
                                 const MapTimes& mapTimes) {
-    std::printf("  %-20s %-9s %6s %9s %8s %8s %8s %12s\n", "light", "variant", "map", "map ms",
-                "acne %", "leak %", "error %", "error-edge %");
+    std::printf("  %-20s %-9s %6s %9s %8s %8s %8s %12s %12s\n", "light", "variant", "map", "map ms",
+                "acne %", "leak %", "error %", "error-edge %", "texel m");
     nlohmann::json lights = nlohmann::json::array();
     for (const evaluation::LightResult& light : view.lights) {
         // A map served from the cache in every timed frame has no time to report, and says so.
@@ -164,15 +164,21 @@ nlohmann::json printLightErrors(const evaluation::ViewResult& view, const engine
         char shownTime[32];
         std::snprintf(shownTime, sizeof shownTime, time.rendered ? "%.2f" : !light.view.hasMap ? "-" : "cached",
                       time.ms);
-        std::printf("  %-20s %-9s %6s %9s %8.3f %8.3f %8.3f %12.3f\n", light.light.c_str(),
+        // A texel's size on screen in pixels (docs/metrics.md), mean/p95; "-" where no pixel has one.
+        const evaluation::TexelOnScreen& texel = light.texelOnScreen;
+        char shownTexel[32] = "-";
+        if (texel.count > 0) std::snprintf(shownTexel, sizeof shownTexel, "%.2f/%.2f", texel.mean, texel.p95);
+        std::printf("  %-20s %-9s %6s %9s %8.3f %8.3f %8.3f %12.3f %12s\n", light.light.c_str(),
                     light.view.variant.c_str(), mapLabel(light.view).c_str(), shownTime, 100 * e.acne, 100 * e.leak,
-                    100 * e.error, 100 * e.errorNoEdge);
+                    100 * e.error, 100 * e.errorNoEdge, shownTexel);
+        const auto texelFigure = [&](double value) { return texel.count > 0 ? nlohmann::json(value) : nlohmann::json(nullptr); };
         lights.push_back({{"light", light.light}, {"slot", light.slot}, {"variant", light.view.variant},
                           {"map_ms", time.rendered ? nlohmann::json(time.ms) : nlohmann::json(nullptr)},
                           {"map_cached", light.view.hasMap && !time.rendered},
                           {"acne", 100 * e.acne}, {"leak", 100 * e.leak},
                           {"error", 100 * e.error}, {"error_noedge", 100 * e.errorNoEdge},
-                          {"evaluated_pixels", e.evaluated}});
+                          {"evaluated_pixels", e.evaluated},
+                          {"texel_m_mean", texelFigure(texel.mean)}, {"texel_m_p95", texelFigure(texel.p95)}});
         if (light.softErrors.evaluated > 0) printSoftErrors(light, lights.back());
     }
     // A light that emits nothing casts no shadow to score: said, not scored.

@@ -13,6 +13,34 @@ namespace evaluation {
 ShadowEvaluator::ShadowEvaluator(engine::Renderer& renderer, const engine::Scene& scene)
     : renderer_(renderer), scene_(scene), visibility_(scene) {}
 
+namespace {
+
+// m (truth::texelOnScreen) at every pixel of `evaluated` through the layer that shades it.
+TexelOnScreen texelOnScreen(const engine::ShadowView& view, const truth::SurfaceBuffer& surfaces,
+                            const std::vector<std::uint8_t>& evaluated) {
+    const int resolution = view.settings.value("resolution", 0);
+    if (resolution <= 0) return {};
+    std::vector<glm::dmat4> mapViewProjection;
+    for (const engine::ShadowMapLayer& layer : view.layers)
+        mapViewProjection.push_back(layer.projection * glm::inverse(layer.lightToWorld));
+    std::vector<double> values;
+    for (std::size_t i = 0; i < evaluated.size(); ++i) {
+        if (!evaluated[i]) continue;
+        const int layer = truth::shadowLayerAt(view, surfaces.camera, surfaces.worldPosition[i]);
+        if (layer < 0) continue;
+        const double m = truth::texelOnScreen(surfaces.worldPosition[i], surfaces.worldNormal[i], surfaces.camera,
+                                              mapViewProjection[layer], resolution);
+        if (std::isfinite(m)) values.push_back(m);
+    }
+    if (values.empty()) return {};
+    double sum = 0.0;
+    for (double m : values) sum += m;
+    const double mean = sum / static_cast<double>(values.size());
+    return {mean, tools::percentile(values, kTexelPercentile), values.size()};
+}
+
+} // namespace
+
 bool ShadowEvaluator::scored(const engine::ShadowView& view) const {
     return view.castsShadows && scene_.lights[scene_.lightInstances[view.slot].light].emitsLight();
 }
@@ -70,6 +98,7 @@ ViewResult ShadowEvaluator::evaluate(const engine::FrameCamera& camera, int fram
             out.areaErrors = truth::areaShadowErrors(camera.width, camera.height,
                                                      visibility_.litFraction(scene_, out.slot, surfaces),
                                                      truthImage, shade, evaluationSet, surfaces.covered);
+        out.texelOnScreen = texelOnScreen(view, surfaces, evaluationSet);
         std::vector<float> softTruth;
         if (const truth::LightExtent extent = lightExtent(view); !extent.isPoint()) {
             softTruth = visibility_.visibleFraction(scene_, out.slot, surfaces, extent);

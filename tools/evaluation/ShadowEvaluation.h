@@ -7,6 +7,7 @@
 #include "truth/ShadowMetrics.h"
 #include "truth/Shimmer.h"
 #include "truth/SurfaceCapture.h"
+#include "truth/TexelMetric.h"
 
 #include "engine/render/Renderer.h"
 
@@ -16,6 +17,18 @@
 #include <vector>
 
 namespace evaluation {
+
+// The percentile of m that LightResult::texelOnScreen reports beside the mean: the tail
+// where the map is coarsest on screen, which a mean over mostly well-sampled pixels hides.
+inline constexpr double kTexelPercentile = 0.95;
+
+// The on-screen size m of a light's map texels (truth/TexelMetric.h), over the pixels of the
+// evaluation set that have one (a layer that covers them, not edge-on to the light).
+struct TexelOnScreen {
+    double mean = 0.0;
+    double p95 = 0.0;       // nearest rank, kTexelPercentile
+    std::size_t count = 0;  // pixels counted; 0: no figure (mean and p95 mean nothing)
+};
 
 struct LightResult {
     std::string light;        // for people
@@ -34,6 +47,7 @@ struct LightResult {
     // truth, the share of the light visible from each pixel's point (truth::softShadowErrors,
     // penumbra figures included), whatever the filter; evaluated == 0 for a point light.
     truth::ShadowErrors softErrors;
+    TexelOnScreen texelOnScreen;
     // With setKeepTruth(true): the truth the light is scored against, per pixel, top row
     // first (softErrors' visible fraction for a light with a size, else errors' one-ray
     // visibility as 0 or 1), and the evaluation set (1 = scored); empty otherwise, so the

@@ -70,6 +70,9 @@ struct BenchRow {
     // set, off edges, and over the penumbra (pixels where truth or shade is strictly between
     // 0 and 1; 0 when there is none).
     std::optional<double> softError, softErrorNoEdge, penumbraError;
+    // The on-screen size m of the light's map texels in pixels (docs/metrics.md, "texel on
+    // screen"): mean and 95th percentile over the evaluation set; none where no pixel has one.
+    std::optional<double> texelMean, texelP95;
 
     // The error settings are ranked by (summary, Pareto front, plot): against the truth that
     // models the light, the soft truth for a sized light, else the area truth.

@@ -47,7 +47,8 @@ std::string resultsCsv(const std::vector<BenchRow>& rows) {
                optional(row.shimmer) + "," + optional(row.nearError) + "," + optional(row.nearErrorNoEdge) + "," +
                engine::formatNumber(row.lightSize) + "," + optionalSetting(row.setting.filterRadius) + "," +
                optionalSetting(row.setting.filterTaps) + "," + optionalSetting(row.setting.normalOffset) + "," +
-               optional(row.softError) + "," + optional(row.softErrorNoEdge) + "," + optional(row.penumbraError) + "\n";
+               optional(row.softError) + "," + optional(row.softErrorNoEdge) + "," + optional(row.penumbraError) + "," +
+               optional(row.texelMean) + "," + optional(row.texelP95) + "\n";
     }
     return csv;
 }

@@ -109,7 +109,8 @@ std::vector<BenchRow> parseResultsCsv(const std::string& text, const std::string
         row.lightSize = number(f[18], file, line);
         for (auto [field, figure] : {std::pair{15, &row.shimmer}, {16, &row.nearError}, {17, &row.nearErrorNoEdge},
                                      {19, &row.setting.filterRadius}, {21, &row.setting.normalOffset},
-                                     {22, &row.softError}, {23, &row.softErrorNoEdge}, {24, &row.penumbraError}})
+                                     {22, &row.softError}, {23, &row.softErrorNoEdge}, {24, &row.penumbraError},
+                                     {25, &row.texelMean}, {26, &row.texelP95}})
             if (!f[field].empty()) *figure = number(f[field], file, line);
         if (!f[20].empty()) row.setting.filterTaps = static_cast<int>(number(f[20], file, line));
         rows.push_back(std::move(row));

@@ -68,6 +68,10 @@ BenchRow makeRow(const BenchScene& scene, const ShadowSetting& setting, double f
         row.softErrorNoEdge = 100.0 * light.softErrors.errorNoEdge;
         row.penumbraError = 100.0 * light.softErrors.penumbraError;
     }
+    if (light.texelOnScreen.count > 0) {
+        row.texelMean = light.texelOnScreen.mean;
+        row.texelP95 = light.texelOnScreen.p95;
+    }
     if (scene.nearDistance > 0.0) {
         row.nearError = 100.0 * light.nearErrors.error;
         row.nearErrorNoEdge = 100.0 * light.nearErrors.errorNoEdge;

@@ -405,11 +405,15 @@ TEST_F(EngineRenderShadows, TruthReportsTimeAndErrorPerShadowedLight) {
         EXPECT_FALSE(entry["map_cached"].get<bool>()) << entry;
         EXPECT_GT(entry["map_ms"].get<double>(), 0.0) << entry;
         EXPECT_LT(entry["error"].get<double>(), kSmallImageErrorBound) << entry;
+        // Every light type (spot, directional, cube) has a texel size on screen.
+        EXPECT_GT(entry["texel_m_mean"].get<double>(), 0.0) << entry;
+        EXPECT_GT(entry["texel_m_p95"].get<double>(), 0.0) << entry;
         std::printf("%s: error %.3f %% of %d pixels, map %.2f ms\n", entry["light"].get<std::string>().c_str(),
                     entry["error"].get<double>(), entry["evaluated_pixels"].get<int>(), entry["map_ms"].get<double>());
         EXPECT_NE(result.output.find(entry["light"].get<std::string>()), std::string::npos);
     }
     EXPECT_EQ(all["lights"][1]["variant"], "woo");
+    EXPECT_NE(result.output.find("texel m"), std::string::npos) << result.output;
 }
 
 // Lights are light instances (node + light), names only for people: one light placed by two
