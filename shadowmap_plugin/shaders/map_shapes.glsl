@@ -13,8 +13,26 @@ int cascadeIndex(int slot, vec3 eyePosition, int count) {
     return min(int(dot(passed, vec4(1.0))), count - 1);
 }
 
+// A cascade's (s, t, r) at an eye-space point; q is 1 for an orthographic cascade (the
+// divide is exact then) and the distance along the warp axis for a warped one (lispsm).
 vec3 cascadeCoordinates(int slot, vec3 eyePosition, int cascade) {
-    return (shadowData.cascadePlanes[slot * MAX_CASCADES + cascade] * vec4(eyePosition, 1.0)).xyz;
+    vec4 coord = shadowData.cascadePlanes[slot * MAX_CASCADES + cascade] * vec4(eyePosition, 1.0);
+    return coord.xyz / coord.w;
+}
+
+// Whether a cascade is warped (lispsm): its q row depends on the position.
+bool cascadeIsWarped(mat4 planes) { return planes[0][3] != 0.0 || planes[1][3] != 0.0 || planes[2][3] != 0.0; }
+
+// The width of a texel of a projective map at the eye-space point whose coordinates under
+// `planes` are `coord`: one texel (1/resolution) of s or t over the length of its gradient,
+// d(s/q) = (row_s - (s/q) row_q) / q, the wider of the two.
+float projectiveTexelWidth(mat4 planes, vec4 coord, float resolution) {
+    vec3 rowS = vec3(planes[0][0], planes[1][0], planes[2][0]);
+    vec3 rowT = vec3(planes[0][1], planes[1][1], planes[2][1]);
+    vec3 rowQ = vec3(planes[0][3], planes[1][3], planes[2][3]);
+    vec2 st = coord.xy / coord.w;
+    float gradient = min(length(rowS - st.x * rowQ), length(rowT - st.y * rowQ));
+    return abs(coord.w) / (resolution * gradient);
 }
 
 // The distance from the light along the major axis of toPoint = x_world - light: the cube
@@ -73,8 +91,15 @@ vec4 offsetShadowCoord(int slot, vec4 coord, vec3 eyePosition, vec3 eyeNormal) {
     return coord + shadowData.eyePlanes[slot] * vec4(offset, 0.0);
 }
 
-vec3 offsetCascadeCoordinates(int slot, vec3 eyePosition, vec3 eyeNormal, int cascade) {
-    vec3 offset = normalOffset(slot, eyePosition, eyeNormal, shadowData.texelWidths[slot][cascade]);
+// An orthographic cascade's texel is as wide everywhere (texelWidths); a warped one's grows
+// along its warp, so it is measured at the point (no room in the block for a per-cascade
+// growth as the 2D map's: the block is at the 16 KiB every GL allows).
+vec3 offsetCascadeCoordinates(int slot, vec3 eyePosition, vec3 eyeNormal, int cascade, float resolution) {
+    mat4 planes = shadowData.cascadePlanes[slot * MAX_CASCADES + cascade];
+    float texelWidth = cascadeIsWarped(planes)
+                           ? projectiveTexelWidth(planes, planes * vec4(eyePosition, 1.0), resolution)
+                           : shadowData.texelWidths[slot][cascade];
+    vec3 offset = normalOffset(slot, eyePosition, eyeNormal, texelWidth);
     return cascadeCoordinates(slot, eyePosition + offset, cascade);
 }
 
@@ -97,7 +122,7 @@ vec4 comparison2D(int slot, vec4 coord, vec3 eyePosition, vec3 eyeNormal, sample
 
 vec4 comparisonCascades(int slot, vec3 eyePosition, vec3 eyeNormal, sampler2DArray depth, int count) {
     int cascade = cascadeIndex(slot, eyePosition, count);
-    vec3 p = offsetCascadeCoordinates(slot, eyePosition, eyeNormal, cascade);
+    vec3 p = offsetCascadeCoordinates(slot, eyePosition, eyeNormal, cascade, float(textureSize(depth, 0).x));
     if (any(lessThan(p, vec3(0.0))) || any(greaterThan(p, vec3(1.0)))) return vec4(0.4, 0.4, 0.4, 1.0);
     float stored = texture(depth, vec3(p.xy, float(cascade))).r;
     return shadowData.params[slot].x > 0.5 ? comparisonColor(stored, p.z) : comparisonColor(p.z, stored);

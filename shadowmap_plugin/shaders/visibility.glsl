@@ -46,9 +46,10 @@ float shadowMap2D_$LOOKUP(int slot, vec4 coord, vec3 eyePosition, vec3 eyeNormal
     return coord.w <= 0.0 ? 0.0 : shade;
 }
 
-// One cascade's lookup (as shadowMap2D, orthographic: q = 1, never behind the light).
+// One cascade's lookup (as shadowMap2D; never behind the light: an orthographic cascade's
+// q is 1, a warped one's the distance along its warp axis, positive over its whole body).
 float cascadeShade_$LOOKUP(int slot, vec3 eyePosition, vec3 eyeNormal, $SAMPLERARRAY map, int cascade) {
-    vec3 p = offsetCascadeCoordinates(slot, eyePosition, eyeNormal, cascade);
+    vec3 p = offsetCascadeCoordinates(slot, eyePosition, eyeNormal, cascade, float(textureSize(map, 0).x));
     bool reversed = shadowData.params[slot].x > 0.5;
     float reference = p.z - shadowData.params[slot].y;
     float shade = $LOOKUPArray(slot, map, p.xy, cascade, reversed ? max(reference, 0.0) : min(reference, 1.0));

@@ -138,6 +138,12 @@ double quantizedRadius(double radius) {
 
 double snapToTexel(double value, double texel) { return std::floor(value / texel + 0.5) * texel; }
 
+double cascadeSliceFar(const std::vector<double>& splits, int cascade, const CascadeOptions& options) {
+    const bool reaches = !options.stable && cascade + 1 < options.count;
+    const double reach = reaches ? options.blend * (splits[cascade + 1] - splits[cascade]) : 0.0;
+    return std::min(splits[cascade + 1] + reach, splits.back());
+}
+
 CascadeViews fitDirectionalCascades(const engine::LightInstance& instance, const engine::Light&,
                                     const ShadowBounds& bounds, const engine::Aabb& sceneBounds,
                                     const CascadeCamera& camera, const CascadeOptions& options) {
@@ -184,10 +190,8 @@ CascadeViews fitDirectionalCascades(const engine::LightInstance& instance, const
         // and widening the sphere would coarsen its texels (outdoor sun, blend 0.2: error
         // 0.379 % without the reach, 0.447 % with it); the lookup fades only where the nearer
         // map holds the point (visibility.glsl).
-        const bool reaches = !options.stable && i + 1 < options.count;
-        const double reach = reaches ? options.blend * (out.splits[i + 1] - out.splits[i]) : 0.0;
-        const double sliceFar = std::min(out.splits[i + 1] + reach, out.splits.back());
-        const std::vector<glm::dvec3> corners = frustumSliceCorners(camera, out.splits[i], sliceFar);
+        const std::vector<glm::dvec3> corners =
+            frustumSliceCorners(camera, out.splits[i], cascadeSliceFar(out.splits, i, options));
         engine::Aabb slice;
         for (const glm::dvec3& corner : corners) slice.extend(toLocal(frame, corner));
         engine::Aabb box;

@@ -80,6 +80,10 @@ bool shadowedDepthRange(const CascadeCamera& camera, const std::vector<engine::A
 // (d0 corners first, in the order (-x,-y), (+x,-y), (-x,+y), (+x,+y)).
 std::vector<glm::dvec3> frustumSliceCorners(const CascadeCamera& camera, double d0, double d1);
 
+// The far view depth cascade `cascade` covers: its far split, or with a blend band (fitted
+// cascades but the last) that split plus the band, where the lookup fades into the next.
+double cascadeSliceFar(const std::vector<double>& splits, int cascade, const CascadeOptions& options);
+
 // Rounds a stable cascade's bounding radius up to the next power of 2^(1/8).
 double quantizedRadius(double radius);
 // The nearest whole-texel position to `value` for texels of `texel` width.

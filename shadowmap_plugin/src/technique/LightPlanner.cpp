@@ -108,10 +108,6 @@ bool planLight(LightState& light, const PlanContext& context, int textureUnit, i
         if (light.settings.nearPlane > 0.0 || light.settings.farPlane > 0.0)
             plan.warnings.push_back("near_plane/far_plane apply to spot and point lights; ignored for a directional light");
         plan.cascadeCount = cascadeCount(light, context, fitOptions);
-        if (light.settings.projection == Projection::Lispsm &&
-            directionalMapIsSliced(plan.cascadeCount, light.settings.shadowDistance))
-            plan.warnings.push_back("projection lispsm warps a single map: with cascades or a shadow_distance the "
-                                    "slices stay uniform");
     } else {
         fitOptions.nearPlane = light.settings.nearPlane;
         fitOptions.farPlane = light.settings.farPlane;

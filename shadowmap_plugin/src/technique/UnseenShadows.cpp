@@ -1,5 +1,7 @@
 #include "technique/UnseenShadows.h"
 
+#include "math/CascadeFit.h"
+
 #include "technique/Techniques.h"
 
 #include "engine/scene/FrustumCull.h"
@@ -194,16 +196,35 @@ std::vector<engine::Aabb> visibleReceiverParts(const std::vector<engine::Aabb>& 
     return parts;
 }
 
+// The frustum's slice between view depths d0 < d1 (along the camera's -Z): its side planes,
+// and near and far planes at those depths.
+WorldFrustum sliceOf(const WorldFrustum& frustum, const engine::FrameCamera& camera, double d0, double d1) {
+    WorldFrustum slice = frustum;
+    const glm::dvec3 eye = camera.position(), forward = glm::normalize(-glm::dvec3(camera.eyeToWorld[2]));
+    slice.planes[4] = glm::dvec4(forward, -glm::dot(forward, eye) - d0);  // depth >= d0
+    slice.planes[5] = glm::dvec4(-forward, glm::dot(forward, eye) + d1);  // depth <= d1
+    const std::vector<glm::dvec3> corners = frustumSliceCorners({camera.eyeToWorld, camera.projection}, d0, d1);
+    std::copy(corners.begin(), corners.end(), slice.corners.begin());
+    return slice;
+}
+
 std::vector<glm::dvec3> visibleReceiverPoints(const std::vector<engine::Aabb>& visibleReceivers,
-                                              const engine::FrameCamera& camera) {
+                                              const engine::FrameCamera& camera, std::optional<glm::dvec2> depths) {
     WorldFrustum frustum;
-    const bool finite = worldFrustum(camera, frustum);
+    bool finite = worldFrustum(camera, frustum);
+    if (depths) {
+        // A slice has a finite far even where the camera's is infinite: its side planes and
+        // its own corners are all it needs.
+        frustum = sliceOf(frustum, camera, depths->x, depths->y);
+        finite = true;
+    }
     std::vector<glm::dvec3> points;
     for (const engine::Aabb& box : visibleReceivers) {
         const std::size_t before = points.size();
         if (finite) appendCutPoints(box, frustum, points);
-        // As visibleReceiverParts: where the cut finds nothing, the whole box stands in.
-        if (points.size() == before && !box.empty())
+        // As visibleReceiverParts: where the cut finds nothing, the whole box stands in (the
+        // box is visible: rounding at a grazing face lost it); a slice may hold none of it.
+        if (points.size() == before && !box.empty() && !depths)
             for (int corner = 0; corner < 8; ++corner) points.push_back(box.corner(corner));
     }
     return points;

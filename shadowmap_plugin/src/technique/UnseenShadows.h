@@ -25,6 +25,7 @@
 
 #include <glm/glm.hpp>
 
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -47,9 +48,11 @@ std::vector<engine::Aabb> visibleReceiverParts(const std::vector<engine::Aabb>& 
 
 // The vertices of each visible receiver's box cut by the camera's frustum, whose hulls are
 // the parts of the receivers in view (a light-space perspective map's body, LispsmWarp.h);
-// an infinite far plane gives the boxes' corners.
+// an infinite far plane gives the boxes' corners. `depths`: only the slice of the view
+// between these view depths (a cascade's).
 std::vector<glm::dvec3> visibleReceiverPoints(const std::vector<engine::Aabb>& visibleReceivers,
-                                              const engine::FrameCamera& camera);
+                                              const engine::FrameCamera& camera,
+                                              std::optional<glm::dvec2> depths = std::nullopt);
 
 // Fills light.frame.unseenCasters for every layer the light's projection draws this frame
 // (before the cache decision), when the light's cull_unseen_casters is on.

@@ -2,7 +2,7 @@
 // outdoor street (tests/support/OutdoorScene.h), against analytic truth: one warped map
 // must at least halve the error of one uniform map of the same resolution within 25 m of the
 // camera, and not raise it over the whole visible ground; cascades "auto" keeps the one
-// warped map; and explicit cascades stay what cascades alone give.
+// warped map; and warped cascades are no worse than cascades alone.
 #include "../../gl/GlTestContext.h"
 #include "../../support/OutdoorScene.h"
 #include "AnalyticShadows.h"
@@ -68,20 +68,31 @@ TEST_F(Lispsm, DoesNotRaiseTheErrorOverTheWholeGround) {
     EXPECT_LE(warped.wrongFraction(), uniform.wrongFraction());
 }
 
-TEST_F(Lispsm, AutoCascadesKeepOneWarpedMapAndExplicitCascadesStayUniform) {
+TEST_F(Lispsm, AutoCascadesKeepOneWarpedMap) {
     engine::ShadowView sun;
     groundErrors({{"projection", "lispsm"}}, true, 2, &sun);
     EXPECT_STREQ(engine::mapKindName(sun), "2d");
     EXPECT_EQ(sun.layers.size(), 1u);
+}
 
-    // With 4 cascades the slices are uniform (said in a warning): the same mask as without
-    // the warp.
-    const OutdoorScene warped = engine::test::makeOutdoorScene({{"cascades", 4}, {"projection", "lispsm"}});
-    const OutdoorScene uniform = engine::test::makeOutdoorScene({{"cascades", 4}});
-    const engine::FrameCamera camera = engine::test::outdoorCamera(kWidth, kHeight);
-    const auto a = engine::test::renderShadowMask(plugins(), warped.scene, camera, warped.sunSlot);
-    const auto b = engine::test::renderShadowMask(plugins(), uniform.scene, camera, uniform.sunSlot);
-    EXPECT_EQ(a, b);
+// Each cascade warped around its own slice: no worse than the same cascades uniform (stable,
+// the default), near the camera and over the whole ground. Measured with edges (1024 maps,
+// 480x270): 2 cascades 0.723 -> 0.110 % near, 1.143 -> 0.610 % whole; 4 cascades
+// 0.351 -> 0.175 %, 0.819 -> 0.658 %.
+TEST_F(Lispsm, WarpedCascadesAreNoWorseThanCascadesAlone) {
+    for (const int count : {2, 4}) {
+        for (const bool nearOnly : {true, false}) {
+            const auto uniform = groundErrors({{"cascades", count}}, nearOnly, kWithEdges);
+            engine::ShadowView sun;
+            const auto warped = groundErrors({{"cascades", count}, {"projection", "lispsm"}}, nearOnly, kWithEdges, &sun);
+            std::printf("%d cascades, %s: uniform %.3f%% (%d acne, %d leak), lispsm %.3f%% (%d, %d) of %d\n", count,
+                        nearOnly ? "within 25 m" : "whole ground", 100 * uniform.wrongFraction(), uniform.acne,
+                        uniform.leak, 100 * warped.wrongFraction(), warped.acne, warped.leak, warped.evaluated);
+            EXPECT_STREQ(engine::mapKindName(sun), "cascades");
+            EXPECT_EQ(sun.layers.size(), static_cast<std::size_t>(count));
+            EXPECT_LE(warped.wrongFraction(), uniform.wrongFraction()) << count << " cascades";
+        }
+    }
 }
 
 }  // namespace

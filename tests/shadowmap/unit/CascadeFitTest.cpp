@@ -120,7 +120,9 @@ TEST(CascadeFit, EachCascadeHoldsItsSliceAndTheCastersOverIt) {
         // every slice's footprint column here or not: check only those it overlaps.
         const glm::dvec3 eye(view.lightToWorld[3]);
         EXPECT_LE(eye.y - view.farPlane, kGround.min.y + 1e-9) << i;
-        if (-kPost.max.z <= d1 && -kPost.min.z >= d0) EXPECT_GE(eye.y, kPost.max.y) << i;
+        if (-kPost.max.z <= d1 && -kPost.min.z >= d0) {
+            EXPECT_GE(eye.y, kPost.max.y) << i;
+        }
     }
     // Cascade 0 against one map for the whole slice range: its texels are smaller by the
     // ratio of the widths (what cascades are for).

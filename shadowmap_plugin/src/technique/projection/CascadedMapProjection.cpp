@@ -4,6 +4,7 @@
 #include "technique/NormalOffsetData.h"
 #include "technique/SoftShadowLayers.h"
 #include "technique/projection/FiniteMatrix.h"
+#include "technique/projection/WarpedView.h"
 
 #include "math/Texgen.h"
 
@@ -36,9 +37,20 @@ ProjectionFit CascadedMapProjection::fit(LightState& light, const PlanContext& c
     const engine::LightInstance& placed = context.scene.lightInstances[light.slot];
     CascadeOptions options = cascadeOptions(light.settings, fitOptions);
     options.count = plan.cascadeCount;
+    // A warp follows the camera, so a warped cascade cannot be a texel-snapped square: lispsm
+    // cascades are fitted, each the warped view of its slice (WarpedView.h).
+    const bool warped = light.settings.projection == Projection::Lispsm;
+    if (warped) options.stable = false;
     plan.cascades = fitDirectionalCascades(placed, context.scene.lights[placed.light], context.bounds,
                                            context.everything,
                                            {context.camera.eyeToWorld, context.camera.projection}, options);
+    if (warped && plan.cascades.valid && !plan.cascades.empty)
+        for (int c = 0; c < static_cast<int>(plan.cascades.cascades.size()); ++c) {
+            const glm::dvec2 slice(plan.cascades.splits[c], cascadeSliceFar(plan.cascades.splits, c, options));
+            LightView view = fitWarpedView(light, context, fitOptions, slice, nullptr);
+            if (!view.valid) return {false, true, view.invalidReason};
+            plan.cascades.cascades[c] = std::move(view);
+        }
     // Nothing to draw in any cascade (or no cascade: no visible receiver) is no map at all.
     bool empty = true;
     for (const LightView& cascade : plan.cascades.cascades) empty = empty && cascade.empty;
@@ -134,7 +146,8 @@ void CascadedMapProjection::addStats(const LightState& light, nlohmann::json& st
                             {"to", views.splits[c + 1]},
                             {"rendered", !view.empty},
                             {"cache", c < frame.cascadeHits.size() && frame.cascadeHits[c] ? "hit" : "miss"},
-                            {"width", view.empty ? 0.0 : 2.0 / view.projection[0][0]},
+                            {"warped", view.warped},
+                            {"width", view.empty || view.warped ? 0.0 : 2.0 / view.projection[0][0]},
                             {"depth", view.farPlane - view.nearPlane}});
     }
     stats["cascades"] = cascades;

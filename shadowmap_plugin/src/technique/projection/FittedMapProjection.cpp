@@ -3,37 +3,12 @@
 #include "technique/MapCacheKey.h"
 #include "technique/NormalOffsetData.h"
 #include "technique/SoftShadowLayers.h"
-#include "technique/UnseenShadows.h"
+#include "technique/projection/WarpedView.h"
 #include "technique/projection/FiniteMatrix.h"
 
-#include "math/CascadeFit.h"
-#include "math/LispsmWarp.h"
 #include "math/Texgen.h"
 
 namespace shadowmap {
-
-namespace {
-
-// A directional light's light-space perspective map: its body is the visible receivers cut
-// by the camera's frustum, so the warp spends the texels where the camera looks.
-LightView fitWarpedMap(LightState& light, const engine::LightInstance& placed, const PlanContext& context,
-                       const FrustumFitOptions& options) {
-    glm::dvec3 direction;
-    if (std::string why = directionProblem(placed, direction); !why.empty())
-        return invalidView("directional " + why);
-    const engine::FrameCamera& camera = context.camera;
-    WarpEye eye;
-    eye.position = camera.position();
-    eye.direction = glm::normalize(-glm::dvec3(camera.eyeToWorld[2]));
-    double farDepth = 0.0;
-    std::vector<glm::dvec3> body;
-    if (receiverDepthRange({camera.eyeToWorld, camera.projection}, context.bounds.receivers, eye.nearDepth, farDepth))
-        body = visibleReceiverPoints(context.bounds.receivers, camera);
-    return fitLispsm(direction, eye, body, context.bounds.casters, options, light.settings.lispsmNScale,
-                     &light.frame.lispsm);
-}
-
-} // namespace
 
 ProjectionFit FittedMapProjection::fit(LightState& light, const PlanContext& context,
                                        const FrustumFitOptions& options) const {
@@ -43,7 +18,7 @@ ProjectionFit FittedMapProjection::fit(LightState& light, const PlanContext& con
     if (light.type == engine::Light::Type::Spot)
         plan.view = fitSpotLight(placed, source, context.bounds, options);
     else if (light.settings.projection == Projection::Lispsm)
-        plan.view = fitWarpedMap(light, placed, context, options);
+        plan.view = fitWarpedView(light, context, options, std::nullopt, &plan.lispsm);
     else
         plan.view = fitDirectionalLight(placed, source, context.bounds, options);
     if (!plan.view.clampWarning.empty()) plan.warnings.push_back(plan.view.clampWarning);
