@@ -87,10 +87,11 @@
 //                   no receiver the camera sees is left out of the depth passes (same
 //                   image; technique/UnseenShadows.h). woo maps keep every caster
 //   projection      "uniform" | "lispsm": a directional light's     "uniform"
-//                   single map orthographic, or warped by a light-space perspective so
-//                   texels crowd near the camera (math/LispsmWarp.h). With cascades > 1
-//                   or a shadow_distance the slices stay uniform (said once), and
-//                   cascades "auto" keeps the one warped map. Set on a spot or point
+//                   map orthographic, or warped by a light-space perspective so texels
+//                   crowd near the camera (math/LispsmWarp.h); with cascades each is
+//                   warped around its slice, fitted (a warp follows the camera, so
+//                   `stable` does not apply), and cascades "auto" keeps one warped
+//                   map. Set on a spot or point
 //                   light's own settings it is an error (their maps are perspective
 //                   already); in the plugin's defaults it applies to directional lights.
 //                   Hard filters only (pcss with lispsm is an error)

@@ -210,9 +210,9 @@ std::vector<SettingKey> makeKeys() {
 
     SettingKey projection = makeKey("projection", SettingKind::Choice);
     projection.choices = choicesOf(names::kProjections);
-    projection.description = "directional lights: `uniform` an orthographic map, `lispsm` a light-space perspective "
-                             "warp of the single map that crowds texels near the camera (cascades `auto` keeps one "
-                             "map; with more cascades they stay uniform); hard filters only";
+    projection.description = "directional lights: `uniform` orthographic maps, `lispsm` light-space perspective "
+                             "warps that crowd texels near the camera, of the map or of each cascade (fitted, not "
+                             "`stable`: a warp follows the camera; cascades `auto` keeps one map); hard filters only";
     keys.push_back(projection);
 
     SettingKey nScale = makeKey("lispsm_n_scale", SettingKind::Number);
