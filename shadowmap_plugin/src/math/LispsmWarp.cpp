@@ -11,6 +11,7 @@ namespace shadowmap {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kMaxWarpNearOverDepth = 256.0;
 
 bool usableBox(const engine::Aabb& box) {
     return !box.empty() && std::isfinite(box.min.x) && std::isfinite(box.min.y) && std::isfinite(box.min.z) &&
@@ -71,7 +72,10 @@ LightView fitLispsm(const glm::dvec3& direction, const WarpEye& eye, std::span<c
     LispsmFit fit;
     fit.sinGamma = std::min(glm::length(across), 1.0);
     fit.weight = lispsmWarpWeight(fit.sinGamma);
-    if (fit.weight > 0.0) {
+    // The map turns with the view about the light's axis while the view's projection across
+    // the light is defined at all, warped or not, so fading the warp out moves no texel at
+    // once; only a view exactly along the light (within double's reach) takes any axis.
+    if (fit.sinGamma > 1e-9) {
         frame.y = across / glm::length(across);
     } else {
         const glm::dmat4 any = lightToWorldFromDirection(glm::dvec3(0.0), direction);
@@ -116,8 +120,11 @@ LightView fitLispsm(const glm::dvec3& direction, const WarpEye& eye, std::span<c
     fit.n = kInf;
     if (fit.weight > 0.0 && fit.bodyDepth > 0.0) {
         fit.n = nScale * lispsmOptimalN(nearDepth, fit.bodyDepth, fit.sinGamma) / fit.weight;
-        // Beyond this the perspective is an orthographic view to within double's rounding.
-        if (!(fit.n < 1e9 * fit.bodyDepth)) fit.n = kInf;
+        // A warp this weak changes texel sizes by under 1/kMaxWarpNearOverDepth across the
+        // map, while its texgen rows, cast to float for the GPU, cancel to about n/d float
+        // steps (t = a + b/q with a, b ~ n/d): at 256 that is 0.06 of a texel at 2048, more
+        // beyond. So past it the map is the uniform one.
+        if (!(fit.n <= kMaxWarpNearOverDepth * fit.bodyDepth)) fit.n = kInf;
     }
     const double yCentre = std::isfinite(fit.n) ? r.min.y - fit.n : 0.0;
     const double n = fit.n, f = fit.n + fit.bodyDepth;
@@ -129,12 +136,19 @@ LightView fitLispsm(const glm::dvec3& direction, const WarpEye& eye, std::span<c
         const glm::dvec4 h = warp * glm::dvec4(p.x, p.y - yCentre, p.z, 1.0);
         warped.extend(glm::dvec3(h) / h.w);
     }
+    // Margins per axis: after the divide the axes have unrelated scales (x' and z' shrink as
+    // 1/n while y' spans [-1, 1]), so one margin from the largest would swamp the others (a
+    // weak warp's body then filled a hundredth of the map across). An axis of no extent gets
+    // a margin relative to its position.
     const glm::dvec3 size = warped.max - warped.min;
-    double pad = options.extentMargin * std::max({size.x, size.y, size.z});
-    if (!(pad > 0.0)) pad = 1e-6;
-    const double padZ = std::max(options.depthMargin * size.z, pad);
-    const glm::dvec3 lo(warped.min.x - pad, warped.min.y - pad, warped.min.z - padZ);
-    const glm::dvec3 hi(warped.max.x + pad, warped.max.y + pad, warped.max.z + padZ);
+    const auto margin = [](double extent, double fraction, double position) {
+        const double pad = fraction * extent;
+        return pad > 0.0 ? pad : 1e-6 * std::max(std::abs(position), 1e-300);
+    };
+    const glm::dvec3 pad(margin(size.x, options.extentMargin, warped.max.x),
+                         margin(size.y, options.extentMargin, warped.max.y),
+                         margin(size.z, std::max(options.depthMargin, options.extentMargin), warped.max.z));
+    const glm::dvec3 lo = warped.min - pad, hi = warped.max + pad;
 
     // O: the orthographic fit, looking down -z (the light's direction) with depth 0 (1 with
     // reversed Z) at the top, toward the light.

@@ -171,6 +171,37 @@ TEST(LispsmWarp, TexelsShrinkNearTheCameraAndGrowFar) {
     EXPECT_GT(texelAt(warped, far, 2048), texelAt(uniform, far, 2048));
 }
 
+TEST(LispsmWarp, TexelsChangeSmoothlyAsTheViewTurnsAwayFromTheLight) {
+    // Turning from along the light (uniform) through the fade (2..10 degrees) to a full warp,
+    // in 0.1 degree steps: the texels at a near and a far body point change a little per step,
+    // never at once (a margin swamping the warped x axis once made a 1% warp's map 80x
+    // coarser across; a hard switch at the cutoff jumps by the whole warp).
+    const glm::dvec3 axis = glm::normalize(glm::cross(kSun, glm::dvec3(0, 1, 0)));
+    const glm::dvec3 eyePosition(0.0, 20.0, 10.0);
+    // The body: a 60 x 80 m patch of ground ahead of the camera along the light.
+    const glm::dvec3 centre = eyePosition + kSun * 35.0;
+    std::vector<glm::dvec3> body;
+    for (int i = 0; i < 8; ++i)
+        body.push_back({centre.x + ((i & 1) ? 30.0 : -30.0), (i & 2) ? 0.0 : -0.1, centre.z + ((i & 4) ? 40.0 : -40.0)});
+    const glm::dvec3 near(centre.x - 20.0, 0.0, centre.z - 30.0), far(centre.x + 20.0, 0.0, centre.z + 30.0);
+    double previousNear = 0.0, previousFar = 0.0;
+    for (int step = 10; step <= 120; ++step) {
+        const double angle = glm::radians(0.1 * step);
+        WarpEye eye;
+        eye.position = eyePosition;
+        eye.direction = kSun * std::cos(angle) + glm::cross(axis, kSun) * std::sin(angle);
+        eye.nearDepth = 20.0;
+        const LightView view = fitLispsm(kSun, eye, body, {}, {}, 1.0);
+        const double texelNear = texelAt(view, near, 2048), texelFar = texelAt(view, far, 2048);
+        if (step > 10) {
+            EXPECT_NEAR(texelNear / previousNear, 1.0, 0.05) << 0.1 * step << " degrees";
+            EXPECT_NEAR(texelFar / previousFar, 1.0, 0.05) << 0.1 * step << " degrees";
+        }
+        previousNear = texelNear;
+        previousFar = texelFar;
+    }
+}
+
 TEST(LispsmWarp, NormalOffsetTexelWidthsMatchTheMap) {
     // The lookup's texel width at the receiver, max(a q, b q^2) from NormalOffsetData, equals
     // the map's texel extent along the warp axis (b q^2) and across it (a q).
