@@ -3,8 +3,7 @@
 // the error of one map of the same resolution at least five-fold; on a slow walk stable far
 // cascades are kept from the cache; and stable cascades shimmer less than fitted ones.
 #include "../../gl/GlTestContext.h"
-#include "../../support/OutdoorScene.h"
-#include "AnalyticShadows.h"
+#include "OutdoorGroundErrors.h"
 
 namespace {
 
@@ -21,15 +20,8 @@ protected:
     // pixels within kNearCamera of the camera.
     // `sun`, when given, receives the sun's shadow view.
     engine::test::MaskStats nearCameraErrors(const nlohmann::json& shadow, engine::ShadowView* sun = nullptr) {
-        const OutdoorScene outdoor = engine::test::makeOutdoorScene(shadow);
-        const engine::FrameCamera camera = engine::test::outdoorCamera(kWidth, kHeight);
-        engine::FrameResult frame;
-        const auto mask = engine::test::renderShadowMask(plugins(), outdoor.scene, camera, outdoor.sunSlot, &frame);
-        if (sun) *sun = *frame.shadowView(outdoor.sunSlot);
-        const glm::dvec3 eye = camera.position();
-        const auto nearCamera = [&](const glm::dvec3& p) { return glm::length(p - eye) < kNearCamera; };
-        return engine::test::compareFloorMask(mask, outdoor.scene, outdoor.sunSlot, camera, outdoor.occluders, 0.0,
-                                              OutdoorScene::kGroundHalf, nearCamera);
+        return engine::test::outdoorGroundErrors(plugins(), shadow, kWidth, kHeight,
+                                                 engine::test::withinOfOutdoorCamera(kNearCamera), 2, sun);
     }
 };
 

@@ -4,8 +4,7 @@
 // camera, and not raise it over the whole visible ground; cascades "auto" keeps the one
 // warped map; and warped cascades are no worse than cascades alone.
 #include "../../gl/GlTestContext.h"
-#include "../../support/OutdoorScene.h"
-#include "AnalyticShadows.h"
+#include "OutdoorGroundErrors.h"
 
 namespace {
 
@@ -23,15 +22,10 @@ protected:
     // kNearCamera of the camera, or everywhere visible; off edges (2 pixels) or with them.
     engine::test::MaskStats groundErrors(const nlohmann::json& shadow, bool nearOnly, int edgeRadius,
                                          engine::ShadowView* sun = nullptr) {
-        const OutdoorScene outdoor = engine::test::makeOutdoorScene(shadow);
-        const engine::FrameCamera camera = engine::test::outdoorCamera(kWidth, kHeight);
-        engine::FrameResult frame;
-        const auto mask = engine::test::renderShadowMask(plugins(), outdoor.scene, camera, outdoor.sunSlot, &frame);
-        if (sun) *sun = *frame.shadowView(outdoor.sunSlot);
-        const glm::dvec3 eye = camera.position();
-        const auto inside = [&](const glm::dvec3& p) { return !nearOnly || glm::length(p - eye) < kNearCamera; };
-        return engine::test::compareFloorMask(mask, outdoor.scene, outdoor.sunSlot, camera, outdoor.occluders, 0.0,
-                                              OutdoorScene::kGroundHalf, inside, edgeRadius);
+        const auto everywhere = [](const glm::dvec3&) { return true; };
+        return engine::test::outdoorGroundErrors(
+            plugins(), shadow, kWidth, kHeight,
+            nearOnly ? engine::test::withinOfOutdoorCamera(kNearCamera) : everywhere, edgeRadius, sun);
     }
 };
 
