@@ -71,6 +71,37 @@ std::vector<int> parseSettingIntegers(const std::string& flag, const std::string
     return tools::parseIntegerList(flag, text, static_cast<int>(*bounds.minimum), static_cast<int>(*bounds.maximum));
 }
 
+// --projections: the plugin's projections (settingKey("projection")).
+std::vector<std::string> knownProjections() { return shadowmap::settingKey("projection").choices; }
+std::vector<shadowmap::Projection> parseProjections(const std::string& flag, const std::string& text) {
+    std::vector<shadowmap::Projection> projections;
+    for (const std::string& item : tools::parseNames(flag, text, knownProjections()))
+        for (shadowmap::Projection projection : {shadowmap::Projection::Uniform, shadowmap::Projection::Lispsm})
+            if (item == shadowmap::toString(projection)) projections.push_back(projection);
+    return projections;
+}
+
+// --cascades: "auto" and each count the plugin accepts, in the key's order: auto,1,2,3,4.
+std::vector<std::string> knownCascades() {
+    const shadowmap::SettingKey& key = shadowmap::settingKey("cascades");
+    std::vector<std::string> known = key.choices;
+    for (int count = static_cast<int>(*key.minimum); count <= static_cast<int>(*key.maximum); ++count)
+        known.push_back(std::to_string(count));
+    return known;
+}
+std::vector<int> parseCascades(const std::string& flag, const std::string& text) {
+    std::vector<int> counts;
+    for (const std::string& item : tools::parseNames(flag, text, knownCascades()))
+        counts.push_back(item == "auto" ? shadowmap::kAutoCascades : std::stoi(item));
+    return counts;
+}
+
+std::vector<bool> parseStables(const std::string& flag, const std::string& text) {
+    std::vector<bool> stables;
+    for (const std::string& item : tools::parseNames(flag, text, {"true", "false"})) stables.push_back(item == "true");
+    return stables;
+}
+
 // "0..16" as the plugin bounds the key.
 std::string bounds(std::string_view key) {
     const shadowmap::SettingKey& setting = shadowmap::settingKey(key);
@@ -97,6 +128,11 @@ void checkAxes(const BenchOptions& options) {
     if (!options.filterTaps.empty() && !widePcf && !lists(options.filters, shadowmap::Filter::Pcss))
         throw std::invalid_argument("--filter-taps: only pcss and pcf with a --filter-radii value above 0 take taps, "
                                     "and the sweep has neither");
+    if (!options.stables.empty() && !options.projections.empty() &&
+        std::all_of(options.projections.begin(), options.projections.end(),
+                    [](shadowmap::Projection projection) { return projection == shadowmap::Projection::Lispsm; }))
+        throw std::invalid_argument("--stables: a lispsm warp is never stable (the plugin ignores stable there), "
+                                    "and --projections lists only lispsm");
 }
 
 } // namespace
@@ -135,10 +171,21 @@ const char* benchUsage() {
         "  [--filter-taps T,...] pcss rows and pcf rows with a filter radius > 0: filter_taps " +
         bounds("filter_taps") + "\n"
         "  [--normal-offsets N,...] every row: normal_offset " + bounds("normal_offset") + " texels\n"
-        "  A step a scene's lights refuse (pcss at a size of 0) is left out with one note.\n"
+        "  Directional lights only (each setting still applies to all of a scene's lights: a spot or\n"
+        "  point light keeps its own value, and its row is written once, for the first value listed,\n"
+        "  not once per value):\n"
+        "  [--projections " + joined(knownProjections()) + "] every row: projection\n"
+        "  [--cascades " + joined(knownCascades()) + "] every row: cascades (auto: the count the view needs)\n"
+        "  [--stables true,false] rows whose projection is not lispsm: stable (cascades snapped to\n"
+        "                       whole texels); a lispsm warp follows the camera and is never stable,\n"
+        "                       so lispsm rows keep the scene's value, which the plugin ignores there;\n"
+        "                       one map (cascades 1 without a shadow_distance) is fitted either way,\n"
+        "                       so its stable and unstable rows agree but for timing noise\n"
+        "  A step a scene's lights refuse (pcss at a size of 0, pcss with lispsm) is left out with one note.\n"
         "  Labels (progress, summary, plot) add what is set: lr<R> ad<A> (a size step; per light in\n"
-        "  the summary and plot: size<S>, the size it had), fr<F>, taps<T>, no<N>, e.g.\n"
-        "  \"standard 1024 d24 pcss lr0.1 ad0.05 taps32 no0.25\".\n"
+        "  the summary and plot: size<S>, the size it had), fr<F>, taps<T>, no<N>, uniform|lispsm,\n"
+        "  c<1..4|auto>, stable|unstable, e.g. \"standard 1024 d24 pcss lr0.1 ad0.05 taps32 no0.25\",\n"
+        "  \"woo 2048 d24 pcf lispsm c2\", \"standard 2048 d24 pcf uniform cauto unstable\".\n"
         "\n"
         "Renders every scene with every combination of the listed settings applied to all of its\n"
         "lights, times each light's shadow passes (median wall time over N frames, each pass closed\n"
@@ -147,11 +194,13 @@ const char* benchUsage() {
         "                       frame_ms,acne,leak,error,error_noedge,area_acne,area_leak,area_error,\n"
         "                       shimmer,near_error,near_error_noedge,light_size,filter_radius,\n"
         "                       filter_taps,normal_offset,soft_error,soft_error_noedge,penumbra_error,\n"
-        "                       texel_m_mean,texel_m_p95\n"
+        "                       texel_m_mean,texel_m_p95,projection,cascades,stable\n"
         "                       (errors in percent; light_size: the radius or angular diameter the\n"
-        "                       light had, 0: none; filter_radius, filter_taps, normal_offset: empty\n"
-        "                       where not swept; soft_*, penumbra_error: against the soft truth, the\n"
-        "                       visible fraction of the light, for a light with a size only;\n"
+        "                       light had, 0: none; filter_radius, filter_taps, normal_offset,\n"
+        "                       projection, cascades, stable: empty where not swept (projection,\n"
+        "                       cascades, stable: always on spot and point lights' rows); soft_*,\n"
+        "                       penumbra_error: against the soft truth, the visible fraction of the\n"
+        "                       light, for a light with a size only;\n"
         "                       texel_m_*: a map texel's size on screen in pixels, mean and 95th\n"
         "                       percentile over the evaluated pixels)\n"
         "  DIR/summary.md       per light: the most accurate setting within 2, 5, 10, 20, 50 ms of\n"
@@ -209,6 +258,9 @@ BenchOptions parseBenchOptions(int argc, char** argv) {
         else if (flag == "--filter-radii") options.filterRadii = parseSettingNumbers(flag, value, "filter_radius");
         else if (flag == "--filter-taps") options.filterTaps = parseSettingIntegers(flag, value, "filter_taps");
         else if (flag == "--normal-offsets") options.normalOffsets = parseSettingNumbers(flag, value, "normal_offset");
+        else if (flag == "--projections") options.projections = parseProjections(flag, value);
+        else if (flag == "--cascades") options.cascades = parseCascades(flag, value);
+        else if (flag == "--stables") options.stables = parseStables(flag, value);
         else if (flag == "--key-light") options.keyLight = parseKeyLight(flag, value);
         else if (flag == "--time") options.times = tools::parseNumberList(flag, value, 0.0, tools::kMaxAnimationSeconds);
         else if (flag == tools::kGroundFlag) options.ground = true;

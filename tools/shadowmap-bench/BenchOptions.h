@@ -3,6 +3,7 @@
 // Parsing checks every value (unknown variant, format or filter, bad number) and throws
 // std::invalid_argument with one line naming the flag and the value.
 #include "engine/scene/Scene.h"
+#include "shadowmap/ShadowSettings.h"
 
 #include <optional>
 #include <string>
@@ -33,6 +34,14 @@ struct BenchOptions {
     std::vector<double> filterRadii;  // --filter-radii: pcf rows only
     std::vector<int> filterTaps;      // --filter-taps: pcss rows and pcf rows with a filter radius > 0
     std::vector<double> normalOffsets;  // --normal-offsets: every row
+    // Directional lights only (a spot or point light keeps its own value, and its row is
+    // written once, not once per value): --projections uniform,lispsm; --cascades auto,1..4
+    // (shadowmap::kAutoCascades for auto); --stables true,false, rows whose projection is
+    // not lispsm (a warp is never stable: the plugin ignores the key there; one map, cascades
+    // 1 without a shadow_distance, is fitted either way).
+    std::vector<shadowmap::Projection> projections;
+    std::vector<int> cascades;
+    std::vector<bool> stables;
     int frames = 0;
     // --shimmer N: also measure shimmer on N frames of a slow pan (evaluation/CameraPath.h); 0: not.
     int shimmerFrames = 0;

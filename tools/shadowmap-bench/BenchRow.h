@@ -2,6 +2,7 @@
 // One measured point of the sweep: one light of one scene under one shadow setting. The
 // row of results.csv, and what the summary and the plot are made of.
 #include "engine/util/FormatNumber.h"
+#include "shadowmap/ShadowSettings.h"
 
 #include <optional>
 #include <string>
@@ -27,10 +28,22 @@ struct ShadowSetting {
     std::optional<double> filterRadius = std::nullopt;     // pcf only, texels
     std::optional<int> filterTaps = std::nullopt;          // pcss, and pcf with a filter radius
     std::optional<double> normalOffset = std::nullopt;     // texels
+    // Directional lights only (spot and point lights keep their own): the projection, the
+    // cascade count (shadowmap::kAutoCascades for "auto"), and whether cascades are stable.
+    std::optional<shadowmap::Projection> projection = std::nullopt;
+    std::optional<int> cascades = std::nullopt;
+    std::optional<bool> stable = std::nullopt;
+    // Set by markDirectionalRepeats (SweepAxes.h): this setting differs from an earlier one of
+    // its scene only in the directional-only axes, so a spot or point light gets exactly what
+    // it got there and its row is not written again.
+    bool directionalRepeat = false;
+
+    bool operator==(const ShadowSetting&) const = default;
 
     // "woo 2048 d24 pcf", then what the sweep set: "lr0.1 ad0.05" (light radius, angular
-    // diameter), "fr2" (filter radius), "taps32", "no0.25" (normal offset), e.g.
-    // "standard 1024 d24 pcss lr0.1 ad0.05 taps32 no0.25".
+    // diameter), "fr2" (filter radius), "taps32", "no0.25" (normal offset), "uniform" or
+    // "lispsm" (projection), "c2" or "cauto" (cascades), "stable" or "unstable", e.g.
+    // "standard 1024 d24 pcss lr0.1 ad0.05 taps32 no0.25" or "woo 2048 d24 pcf lispsm c2".
     std::string label() const { return labelWithSize(sizeLabel()); }
 
     // The size step's part of the label: " lr0.1 ad0.05", "" without one.
@@ -39,7 +52,15 @@ struct ShadowSetting {
     // The label with `size` (a light size part) where the sizes stand.
     std::string labelWithSize(const std::string& size) const {
         return variant + " " + std::to_string(resolution) + " " + depthFormat + " " + filter + size +
-               labelPart(" fr", filterRadius) + labelPart(" taps", filterTaps) + labelPart(" no", normalOffset);
+               labelPart(" fr", filterRadius) + labelPart(" taps", filterTaps) + labelPart(" no", normalOffset) +
+               (projection ? std::string(" ") + shadowmap::toString(*projection) : std::string()) +
+               (cascades ? " c" + cascadesText(*cascades) : std::string()) +
+               (stable ? (*stable ? " stable" : " unstable") : std::string());
+    }
+
+    // A cascade count as the settings write it: "auto" for kAutoCascades, else the count.
+    static std::string cascadesText(int count) {
+        return count == shadowmap::kAutoCascades ? "auto" : std::to_string(count);
     }
 };
 

@@ -32,6 +32,17 @@ std::string optionalSetting(const std::optional<T>& value) {
     return value ? engine::formatNumber(*value) : std::string();
 }
 
+// The projection, cascades and stable columns: each empty when the sweep did not set it.
+std::string directionalAxes(const ShadowSetting& setting) {
+    // Appended piece by piece: GCC 12 reports a false -Wrestrict on "literal" + temporary.
+    std::string text = setting.projection ? shadowmap::toString(*setting.projection) : "";
+    text += ',';
+    if (setting.cascades) text += ShadowSetting::cascadesText(*setting.cascades);
+    text += ',';
+    if (setting.stable) text += *setting.stable ? "true" : "false";
+    return text;
+}
+
 } // namespace
 
 std::string resultsCsv(const std::vector<BenchRow>& rows) {
@@ -48,7 +59,7 @@ std::string resultsCsv(const std::vector<BenchRow>& rows) {
                engine::formatNumber(row.lightSize) + "," + optionalSetting(row.setting.filterRadius) + "," +
                optionalSetting(row.setting.filterTaps) + "," + optionalSetting(row.setting.normalOffset) + "," +
                optional(row.softError) + "," + optional(row.softErrorNoEdge) + "," + optional(row.penumbraError) + "," +
-               optional(row.texelMean) + "," + optional(row.texelP95) + "\n";
+               optional(row.texelMean) + "," + optional(row.texelP95) + "," + directionalAxes(row.setting) + "\n";
     }
     return csv;
 }

@@ -5,6 +5,7 @@
 
 #include "engine/util/Error.h"
 #include "engine/util/InputFile.h"
+#include "shadowmap/ShadowSettings.h"
 
 #include <nlohmann/json.hpp>
 
@@ -54,6 +55,20 @@ double number(const std::string& text, const std::string& file, int line) {
     if (used == 0 || used != text.size())
         engine::throwInputError(file, "line " + std::to_string(line), "\"" + text + "\" is not a number");
     return value;
+}
+
+// A field that must be one of `known`.
+std::string choice(const std::string& text, const std::vector<std::string>& known, const std::string& file, int line) {
+    if (std::find(known.begin(), known.end(), text) != known.end()) return text;
+    std::string list;
+    for (const std::string& item : known) list += (list.empty() ? "" : ", ") + item;
+    engine::throwInputError(file, "line " + std::to_string(line), "\"" + text + "\" is none of " + list);
+}
+
+shadowmap::Projection projection(const std::string& text, const std::string& file, int line) {
+    const std::string name = choice(text, shadowmap::settingKey("projection").choices, file, line);
+    return name == shadowmap::toString(shadowmap::Projection::Lispsm) ? shadowmap::Projection::Lispsm
+                                                                       : shadowmap::Projection::Uniform;
 }
 
 } // namespace
@@ -113,6 +128,11 @@ std::vector<BenchRow> parseResultsCsv(const std::string& text, const std::string
                                      {25, &row.texelMean}, {26, &row.texelP95}})
             if (!f[field].empty()) *figure = number(f[field], file, line);
         if (!f[20].empty()) row.setting.filterTaps = static_cast<int>(number(f[20], file, line));
+        if (!f[27].empty()) row.setting.projection = projection(f[27], file, line);
+        if (!f[28].empty())
+            row.setting.cascades =
+                f[28] == "auto" ? shadowmap::kAutoCascades : static_cast<int>(number(f[28], file, line));
+        if (!f[29].empty()) row.setting.stable = choice(f[29], {"true", "false"}, file, line) == "true";
         rows.push_back(std::move(row));
     }
     return rows;

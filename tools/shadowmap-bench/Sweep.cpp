@@ -47,10 +47,13 @@ BenchRow makeRow(const BenchScene& scene, const ShadowSetting& setting, double f
     BenchRow row;
     row.scene = scene.name;
     row.light = light.light;
-    row.setting = setting;
+    const engine::Light::Type type = instanceLight(scene.scene, light.slot).type;
+    // What the light got: a spot or point light no projection, cascades or stable.
+    row.setting = rowSetting(setting, type);
+    row.setting.directionalRepeat = false;
     // The row keeps the size its light had (below), not the step's pair (BenchRow.h).
     row.setting.lightRadius = row.setting.angularDiameter = std::nullopt;
-    const bool directional = instanceLight(scene.scene, light.slot).type == engine::Light::Type::Directional;
+    const bool directional = type == engine::Light::Type::Directional;
     row.lightSize = directional ? light.view.angularDiameter : light.view.lightRadius;
     row.shadowMs = light.shadowMs;
     row.frameMs = frameMs;
@@ -161,7 +164,10 @@ std::vector<ShadowSetting> acceptedSettings(const BenchScene& bench, const std::
             continue;
         }
         const std::string sizes = setting.sizeLabel();
-        const std::string note = "no filter " + setting.filter + " rows" + (sizes.empty() ? "" : " at" + sizes) + ": " + *reason;
+        const std::string projection =
+            setting.projection ? std::string(" with projection ") + shadowmap::toString(*setting.projection) : "";
+        const std::string note =
+            "no filter " + setting.filter + " rows" + (sizes.empty() ? "" : " at" + sizes) + projection + ": " + *reason;
         if (std::find(notes.begin(), notes.end(), note) != notes.end()) continue;
         notes.push_back(note);
         std::cerr << "shadowmap-bench: " << bench.name << ": " << note << "\n";
@@ -189,6 +195,7 @@ std::vector<BenchScene> loadBenchScenes(const BenchOptions& options, const nlohm
         for (const std::optional<double>& time : poses) {
             scenes.push_back(loadBenchScene(options, path, time, scenes));
             scenes.back().settings = acceptedSettings(scenes.back(), *settings, pluginSettings);
+            markDirectionalRepeats(scenes.back().settings);
         }
     }
     if (scenes.empty()) throw engine::InputError("no scene to sweep (give one with --scene)");
@@ -221,8 +228,12 @@ std::vector<ShadowSetting> maskedSettings(const BenchOptions& options) {
 
 SweepRows runSweep(std::vector<BenchScene>& scenes, const engine::RendererConfig& rendererConfig,
                    const std::vector<engine::RenderPlugin*>& plugins, int frames, const RowCallback& onRow) {
+    // Rows to come: a spot or point light's only where the setting is no directional repeat.
     int total = 0;
-    for (const BenchScene& scene : scenes) total += scene.shadowedLights * static_cast<int>(scene.settings.size());
+    for (const BenchScene& scene : scenes)
+        for (const ShadowSetting& setting : scene.settings)
+            for (int instance = 0; instance < scene.shadowedLights; ++instance)
+                total += writesRowFor(setting, instanceLight(scene.scene, instance).type) ? 1 : 0;
 
     engine::Renderer renderer(rendererConfig, plugins);
     SweepRows sweep;
@@ -237,13 +248,17 @@ SweepRows runSweep(std::vector<BenchScene>& scenes, const engine::RendererConfig
             applyToEveryLight(scene.scene, original, setting);
             const evaluation::TrialResult measured = trial.measure();
             const std::vector<evaluation::LightShimmer> shimmer = trial.shimmer(scene.shimmerPath);
+            int jobRows = 0;
             for (const evaluation::LightResult& light : measured.lights) {
+                // A spot or point light got the same as in an earlier job: its row is there.
+                if (!writesRowFor(setting, instanceLight(scene.scene, light.slot).type)) continue;
                 rows.push_back(makeRow(scene, setting, measured.frameMs, light));
                 for (const evaluation::LightShimmer& moving : shimmer)
                     if (moving.slot == light.slot) rows.back().shimmer = 100.0 * moving.count.fraction();
                 onRow(rows.back(), static_cast<int>(rows.size()), total);
+                ++jobRows;
             }
-            sweep.jobRows.push_back(static_cast<int>(measured.lights.size()));
+            sweep.jobRows.push_back(jobRows);
         }
     }
     return sweep;

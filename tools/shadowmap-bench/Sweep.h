@@ -36,7 +36,9 @@ struct BenchScene {
 // Throws engine::InputError naming the file and the reason.
 // A scene whose lights cannot all take a setting (pcss on a light without a size, from the
 // size step or the scene) is swept without it, with one note per filter and size step;
-// `pluginSettings` are the shadow plugin's config settings.
+// `pluginSettings` are the shadow plugin's config settings. The settings are marked
+// (markDirectionalRepeats) before any sharding, so a spot or point light's row comes from
+// the first job that gives it what it gets.
 std::vector<BenchScene> loadBenchScenes(const BenchOptions& options, const nlohmann::json& pluginSettings);
 
 // The cartesian product of the listed variants, resolutions, formats and filters, times the
@@ -51,7 +53,7 @@ std::vector<ShadowSetting> maskedSettings(const BenchOptions& options);
 using RowCallback = std::function<void(const BenchRow& row, int index, int total)>;
 
 // The rows of a sweep, and how many rows each job (one scene under one setting, in sweep
-// order) gave: a shard records them so --merge can deal jobs back (Shards.h), since rows of
+// order) gave (a job that is a directional repeat gives its directional lights' rows only): a shard records them so --merge can deal jobs back (Shards.h), since rows of
 // jobs that differ only in the light size step are otherwise alike but for each light's size.
 struct SweepRows {
     std::vector<BenchRow> rows;

@@ -57,6 +57,19 @@ bool takesTaps(const ShadowSetting& setting) {
            (isFilter(setting, shadowmap::Filter::Pcf) && setting.filterRadius.value_or(0.0) > 0.0);
 }
 
+bool isLispsm(const ShadowSetting& setting) {
+    return setting.projection == shadowmap::Projection::Lispsm;
+}
+
+// The setting without its directional-only fields: what a spot or point light gets of it.
+ShadowSetting withoutDirectionalAxes(ShadowSetting setting) {
+    setting.projection = std::nullopt;
+    setting.cascades = std::nullopt;
+    setting.stable = std::nullopt;
+    setting.directionalRepeat = false;
+    return setting;
+}
+
 } // namespace
 
 std::vector<ShadowSetting> expandAxes(const std::vector<ShadowSetting>& settings, const BenchOptions& options) {
@@ -69,9 +82,37 @@ std::vector<ShadowSetting> expandAxes(const std::vector<ShadowSetting>& settings
     out = expand(out, [&](const ShadowSetting& setting) {
         return perValue(setting, options.filterTaps, &ShadowSetting::filterTaps, takesTaps(setting));
     });
-    return expand(out, [&](const ShadowSetting& setting) {
+    out = expand(out, [&](const ShadowSetting& setting) {
         return perValue(setting, options.normalOffsets, &ShadowSetting::normalOffset, true);
     });
+    // The directional lights' axes last, so that the settings a spot or point light cannot
+    // tell apart stand next to each other.
+    out = expand(out, [&](const ShadowSetting& setting) {
+        return perValue(setting, options.projections, &ShadowSetting::projection, true);
+    });
+    out = expand(out, [&](const ShadowSetting& setting) {
+        return perValue(setting, options.cascades, &ShadowSetting::cascades, true);
+    });
+    return expand(out, [&](const ShadowSetting& setting) {
+        return perValue(setting, options.stables, &ShadowSetting::stable, !isLispsm(setting));
+    });
+}
+
+void markDirectionalRepeats(std::vector<ShadowSetting>& settings) {
+    for (std::size_t k = 0; k < settings.size(); ++k) {
+        const ShadowSetting plain = withoutDirectionalAxes(settings[k]);
+        settings[k].directionalRepeat =
+            std::any_of(settings.begin(), settings.begin() + k,
+                        [&](const ShadowSetting& earlier) { return withoutDirectionalAxes(earlier) == plain; });
+    }
+}
+
+bool writesRowFor(const ShadowSetting& setting, engine::Light::Type type) {
+    return type == engine::Light::Type::Directional || !setting.directionalRepeat;
+}
+
+ShadowSetting rowSetting(const ShadowSetting& setting, engine::Light::Type type) {
+    return type == engine::Light::Type::Directional ? setting : withoutDirectionalAxes(setting);
 }
 
 nlohmann::json lightShadow(const ShadowSetting& setting, engine::Light::Type type) {
@@ -87,6 +128,14 @@ nlohmann::json lightShadow(const ShadowSetting& setting, engine::Light::Type typ
     write("filter_radius", setting.filterRadius);
     write("filter_taps", setting.filterTaps);
     write("normal_offset", setting.normalOffset);
+    if (directional) {
+        if (setting.projection) shadow["projection"] = shadowmap::toString(*setting.projection);
+        if (setting.cascades) {
+            if (*setting.cascades == shadowmap::kAutoCascades) shadow["cascades"] = "auto";
+            else shadow["cascades"] = *setting.cascades;
+        }
+        write("stable", setting.stable);
+    }
     return shadow;
 }
 

@@ -38,7 +38,12 @@ expect_error '--filter-radii: "17" is not a number in [0, 16]' --filter-radii 17
 expect_error '--filter-taps: "3" is not an integer in [4, 64]' --filter-taps 3
 expect_error '--normal-offsets: "9" is not a number in [0, 8]' --normal-offsets 9
 expect_error '--light-radii and --angular-diameters: 2 and 1 values' --light-radii 0.1,0.2 --angular-diameters 0.05
+expect_error '--projections: unknown value "perspective" (known: uniform,lispsm)' --projections perspective
+expect_error '--cascades: unknown value "5" (known: auto,1,2,3,4)' --cascades 1,5
+expect_error '--cascades: "2" is listed twice in "2,2"' --cascades 2,2
+expect_error '--stables: unknown value "yes" (known: true,false)' --stables yes
 # Axes that would multiply no row.
+expect_error '--stables: a lispsm warp is never stable' --projections lispsm --stables true,false
 expect_error '--filter-radii: only pcf has a filter radius, and --filters lists no pcf' --filters pcss --filter-radii 2
 expect_error '--filter-taps: only pcss and pcf with a --filter-radii value above 0 take taps' --filters pcf --filter-taps 8
 [[ $failed -eq 0 ]] && echo "ok"
