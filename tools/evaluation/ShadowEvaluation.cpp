@@ -2,6 +2,8 @@
 
 #include "Median.h"
 
+#include "truth/TexelDensityImage.h"
+
 #include "engine/scene/Scene.h"
 
 #include <algorithm>
@@ -15,23 +17,13 @@ ShadowEvaluator::ShadowEvaluator(engine::Renderer& renderer, const engine::Scene
 
 namespace {
 
-// m (truth::texelOnScreen) at every pixel of `evaluated` through the layer that shades it.
+// m (truth::texelOnScreen) at every pixel of `evaluated` through the layer that shades it:
+// the same image engine-render --texel-density paints, so its figures describe that picture.
 TexelOnScreen texelOnScreen(const engine::ShadowView& view, const truth::SurfaceBuffer& surfaces,
                             const std::vector<std::uint8_t>& evaluated) {
-    const int resolution = view.settings.value("resolution", 0);
-    if (resolution <= 0) return {};
-    std::vector<glm::dmat4> mapViewProjection;
-    for (const engine::ShadowMapLayer& layer : view.layers)
-        mapViewProjection.push_back(layer.projection * glm::inverse(layer.lightToWorld));
     std::vector<double> values;
-    for (std::size_t i = 0; i < evaluated.size(); ++i) {
-        if (!evaluated[i]) continue;
-        const int layer = truth::shadowLayerAt(view, surfaces.camera, surfaces.worldPosition[i]);
-        if (layer < 0) continue;
-        const double m = truth::texelOnScreen(surfaces.worldPosition[i], surfaces.worldNormal[i], surfaces.camera,
-                                              mapViewProjection[layer], resolution);
+    for (double m : truth::texelOnScreenImage(view, surfaces, evaluated))
         if (std::isfinite(m)) values.push_back(m);
-    }
     if (values.empty()) return {};
     double sum = 0.0;
     for (double m : values) sum += m;
