@@ -33,6 +33,10 @@ const char* const kRenderUsage =
     "  [--animate NAME|all [--fps F]]  (play that animation, or all: frame i at T + i/F, F default 30)\n"
     "  [--truth]   (per light: map time, acne/leak against ray-traced shadows, and a map texel's\n"
     "              size on screen in pixels, mean/p95)\n"
+    "  [--texel-density NAME=HEAT.png]...  (a heat map of that light's map texel size on screen, m\n"
+    "               (LogPSM): green one texel per pixel, blue finer, yellow then red coarser, on a\n"
+    "               log scale (printed, docs/metrics.md); grey where m has no value: background,\n"
+    "               outside the light's evaluation set, no map layer, edge-on to the light)\n"
     "  [--truth-mask NAME=TRUTH.png]...  (implies --truth: the truth that light is scored against, as\n"
     "               --shadow-mask writes its shade: 255 lit, 0 shadowed; for a light with a size the\n"
     "               share of it each pixel sees; pixels outside the evaluation set 0, as the mask's\n"
@@ -103,6 +107,7 @@ RenderOptions parseRenderOptions(int argc, char** argv) {
         else if (flag == "--shadow-map") options.shadowMaps.push_back(parsePngAssignment(flag, value));
         else if (flag == "--shadow-compare") options.comparisons.push_back(parsePngAssignment(flag, value));
         else if (flag == "--truth-mask") options.truthMasks.push_back(parsePngAssignment(flag, value));
+        else if (flag == "--texel-density") options.texelDensities.push_back(parsePngAssignment(flag, value));
         else if (flag == "--frames") options.frames = tools::parseInteger(flag, value, 1, kMaxFrames);
         else if (flag == "--warmup") options.warmup = tools::parseInteger(flag, value, 0, kMaxWarmup);
         else if (flag == "--set") tools::addSettingOverride(options.pluginSettings, flag, value);
@@ -142,7 +147,8 @@ RenderOptions parseRenderOptions(int argc, char** argv) {
 std::vector<std::string> outputFiles(const RenderOptions& options) {
     std::vector<std::string> files;
     if (!options.out.empty()) files.push_back(options.out);
-    for (const auto* perLight : {&options.shadowMasks, &options.truthMasks, &options.shadowMaps, &options.comparisons})
+    for (const auto* perLight : {&options.shadowMasks, &options.truthMasks, &options.shadowMaps, &options.comparisons,
+                                &options.texelDensities})
         for (const auto& [light, file] : *perLight) files.push_back(file);
     for (const std::string* file : {&options.stats, &options.graphDot})
         if (!file->empty()) files.push_back(*file);

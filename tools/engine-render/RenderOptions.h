@@ -25,6 +25,8 @@ struct RenderOptions {
     std::vector<std::pair<std::string, std::string>> comparisons;    // --shadow-compare NAME=FILE
     // --truth-mask NAME=FILE: the truth --truth scores that light against (implies --truth)
     std::vector<std::pair<std::string, std::string>> truthMasks;
+    // --texel-density NAME=FILE: the heat map of a map texel's size on screen (truth/TexelDensityImage.h)
+    std::vector<std::pair<std::string, std::string>> texelDensities;
     int frames = 1;
     int warmup = 1;  // at least this many untimed frames first (Renderer::warmUp): llvmpipe compiles at first draw
     std::vector<tools::SettingOverride> pluginSettings;  // --set PLUGIN.KEY=JSON, each key once
@@ -51,6 +53,6 @@ extern const char* const kRenderUsage;
 // Throws std::invalid_argument with one line naming the flag and the reason.
 RenderOptions parseRenderOptions(int argc, char** argv);
 
-// Every file the run will write (--out, the masks, truth masks, maps and comparisons, --stats,
-// --graph-dot).
+// Every file the run will write (--out, the masks, truth masks, maps, comparisons and texel
+// densities, --stats, --graph-dot).
 std::vector<std::string> outputFiles(const RenderOptions& options);

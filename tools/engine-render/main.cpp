@@ -12,6 +12,8 @@
 
 #include "ShadowEvaluation.h"
 
+#include "truth/TexelDensityImage.h"
+
 #include "engine/config/EngineConfig.h"
 #include "engine/context/GlContext.h"
 #include "engine/gltf/GltfLoader.h"
@@ -216,6 +218,30 @@ void writeTruthMasks(const RenderOptions& options, const std::vector<int>& slots
     }
 }
 
+// --texel-density: per named light, m at every pixel of the last frame through that frame's
+// map (the layer its lookup uses), over the light's evaluation set as --truth's texel m, as
+// truth/TexelDensityImage.h's heat map. One surface capture serves every light.
+void writeTexelDensities(const RenderOptions& options, const std::vector<int>& slots, const engine::Scene& scene,
+                         engine::Renderer& renderer, const engine::FrameResult& last,
+                         const engine::FrameCamera& camera) {
+    if (slots.empty()) return;
+    const truth::SurfaceBuffer surfaces = truth::SurfaceCapture().capture(scene, renderer.gpu(), camera);
+    std::printf("  texel density: %s\n", truth::texelDensityLegend().c_str());
+    for (std::size_t i = 0; i < slots.size(); ++i) {
+        const auto& [light, file] = options.texelDensities[i];
+        const engine::ShadowView* view = last.shadowView(slots[i]);
+        if (!view || !view->hasMap)
+            throw engine::InputError("--texel-density " + light + ": the light has no shadow map this frame "
+                                     "(variant none, nothing in its frustum, or no shadow plugin)");
+        const std::vector<double> m =
+            truth::texelOnScreenImage(*view, surfaces, truth::evaluationSet(scene, slots[i], surfaces));
+        engine::writePngAtomically(file, options.width, options.height, 4, truth::texelDensityImage(m));
+        const auto valued = std::count_if(m.begin(), m.end(), [](double value) { return std::isfinite(value); });
+        std::printf("  texel density of %s: %s (%td of %zu pixels with a value)\n", light.c_str(), file.c_str(),
+                    valued, m.size());
+    }
+}
+
 // More than this share of saturated pixels is "most of the image".
 constexpr double kMostlySaturated = 0.5;
 
@@ -333,6 +359,9 @@ int run(const RenderOptions& options, std::unique_ptr<engine::GlContext>& contex
     std::vector<int> truthMaskSlots;
     for (const auto& [light, file] : options.truthMasks)
         truthMaskSlots.push_back(lightSlot(scene, options.scene, light));
+    std::vector<int> texelDensitySlots;
+    for (const auto& [light, file] : options.texelDensities)
+        texelDensitySlots.push_back(lightSlot(scene, options.scene, light));
 
     std::vector<double> frameMs;
     std::vector<std::string> order;
@@ -454,6 +483,7 @@ int run(const RenderOptions& options, std::unique_ptr<engine::GlContext>& contex
     stats["renderer_switches"] = {{"shade_cache", switches.shadeCache},
                                   {"light_footprints", switches.lightFootprints},
                                   {"unrolled_light_sum", switches.unrolledLightSum}};
+    writeTexelDensities(options, texelDensitySlots, scene, renderer, last, request.camera);
     if (options.truth) {
         evaluation::ShadowEvaluator evaluator(renderer, scene);
         evaluator.setKeepTruth(!options.truthMasks.empty());
