@@ -60,6 +60,7 @@ void Controls::pressKey(int key) {
     case GLFW_KEY_MINUS: say(state_.shrinkLightSize()); break;
     case GLFW_KEY_EQUAL: say(state_.growLightSize()); break;
     case GLFW_KEY_D: state_.nextView(); break;
+    case GLFW_KEY_M: state_.toggleTexelDensity(); break;
     case GLFW_KEY_O: requests_.overlay = !requests_.overlay; break;
     case GLFW_KEY_SPACE: playback_.togglePlaying(); break;
     case GLFW_KEY_LEFT: playback_.seek(playback_.seconds() - kScrubStep); break;

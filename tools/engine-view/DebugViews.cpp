@@ -7,6 +7,9 @@
 #include "truth/RayTracedVisibility.h"
 #include "truth/ShadowMetrics.h"
 #include "truth/SurfaceCapture.h"
+#include "truth/TexelDensityImage.h"
+
+#include "ShadowEvaluation.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -39,14 +42,34 @@ const char* const kNoShadowTerm = "no plugin provides a shadow term: shaded view
 constexpr std::uint8_t kPenumbraColor[3] = {255, 0, 255}, kBlack[3] = {0, 0, 0};
 constexpr double kPenumbraTint = 0.7, kOutsideDimming = 0.7;
 
+// What a light's texel density depends on besides the surfaces: its map's matrices, which
+// layers were rendered, the cascade splits and the resolution. Equal keys, equal m image.
+std::vector<double> texelDensityKey(const engine::ShadowView& view) {
+    std::vector<double> key{static_cast<double>(view.slot), view.settings.value("resolution", 0.0)};
+    for (const engine::ShadowMapLayer& layer : view.layers) {
+        for (const glm::dmat4* matrix : {&layer.lightToWorld, &layer.projection})
+            for (int column = 0; column < 4; ++column)
+                for (int row = 0; row < 4; ++row) key.push_back((*matrix)[column][row]);
+        key.push_back(layer.rendered ? 1.0 : 0.0);
+    }
+    key.insert(key.end(), view.cascadeSplits.begin(), view.cascadeSplits.end());
+    return key;
+}
+
 } // namespace
 
 struct DebugViews::Cache {
     engine::FrameCamera surfacesCamera;
+    std::uint64_t surfacesRevision = 0;  // Scene::lastInstanceRevision when captured
     truth::SurfaceBuffer surfaces;
     bool haveSurfaces = false;
     int truthSlot = -1;  // truth below is for this light and surfacesCamera
     std::vector<std::uint8_t> truth, evaluation;
+    // The density view's picture and notes, for these surfaces and texelDensityKey (empty:
+    // none): a frame in which nothing moved only copies them.
+    std::vector<double> densityKey;
+    std::vector<std::uint8_t> densityImage;
+    std::vector<std::string> densityNotes;
 };
 
 DebugViews::DebugViews(engine::Renderer& renderer, const engine::Scene& scene)
@@ -60,12 +83,16 @@ engine::FrameResult DebugViews::renderFrame(engine::FrameRequest request) {
 }
 
 const truth::SurfaceBuffer& DebugViews::surfaces(const engine::FrameCamera& camera) {
-    if (!cache_->haveSurfaces || !sameCamera(cache_->surfacesCamera, camera)) {
+    // An animation moves the surfaces under a still camera: the scene's revision says so.
+    if (!cache_->haveSurfaces || !sameCamera(cache_->surfacesCamera, camera) ||
+        cache_->surfacesRevision != scene_.lastInstanceRevision) {
         if (!capture_) capture_ = std::make_unique<truth::SurfaceCapture>();
         cache_->surfaces = capture_->capture(scene_, renderer_.gpu(), camera);
         cache_->surfacesCamera = camera;
+        cache_->surfacesRevision = scene_.lastInstanceRevision;
         cache_->haveSurfaces = true;
         cache_->truthSlot = -1;
+        cache_->densityKey.clear();
     }
     return cache_->surfaces;
 }
@@ -116,6 +143,8 @@ ViewFrame DebugViews::render(DebugView view, const ViewedLight* light, const eng
         return acneLeak(*light, camera);
     case DebugView::Cascades:
         return cascades(*light, camera);
+    case DebugView::TexelDensity:
+        return texelDensity(*light, camera);
     }
     return out;
 }
@@ -283,6 +312,38 @@ ViewFrame DebugViews::cascades(const ViewedLight& light, const engine::FrameCame
     }
     out.notes.push_back(std::to_string(count) + " cascades of " + light.name + " (red, green, blue, yellow from near)");
     out.notes.push_back("split view depths: " + bounds);
+    return out;
+}
+
+ViewFrame DebugViews::texelDensity(const ViewedLight& light, const engine::FrameCamera& camera) {
+    engine::FrameRequest request;
+    request.camera = camera;
+    ViewFrame out;
+    out.frame = renderFrame(request);
+    const engine::ShadowView* view = out.frame.shadowView(light.slot);
+    if (!view || !view->hasMap) {
+        out.image = {camera.width, camera.height, renderer_.readColor()};
+        out.notes.push_back(light.name + " has no shadow map this frame: shaded view");
+        return out;
+    }
+    const truth::SurfaceBuffer& buffer = surfaces(camera);  // clears the density when it recaptures
+    std::vector<double> key = texelDensityKey(*view);
+    if (key != cache_->densityKey) {
+        const std::vector<double> m =
+            truth::texelOnScreenImage(*view, buffer, truth::evaluationSet(scene_, light.slot, buffer));
+        cache_->densityImage = truth::texelDensityImage(m);
+        cache_->densityNotes = {"texel density of " + light.name + ": " + truth::texelDensityLegend()};
+        // The figures --truth prints for this light and view.
+        const evaluation::TexelOnScreen texel = evaluation::summarizeTexelOnScreen(m);
+        char figures[96] = "no pixel has a value";
+        if (texel.count > 0)
+            std::snprintf(figures, sizeof figures, "m mean %.2f, p95 %.2f over %zu pixels", texel.mean, texel.p95,
+                          texel.count);
+        cache_->densityNotes.push_back(figures);
+        cache_->densityKey = std::move(key);
+    }
+    out.image = {camera.width, camera.height, cache_->densityImage};
+    out.notes = cache_->densityNotes;
     return out;
 }
 

@@ -25,7 +25,12 @@
 //               tracing (~0.1 s) runs only when the camera, size or light changed;
 //   cascades    the shaded image tinted by the cascade each pixel's shadow comes from (red,
 //               green, blue, yellow from near to far; ShadowView::cascadeSplits), the split
-//               distances in the notes (a light without cascades: the shaded image, said).
+//               distances in the notes (a light without cascades: the shaded image, said);
+//   density     the heat map of the light's map texel size on screen, m, at every pixel
+//               (truth/TexelDensityImage.h, engine-render --texel-density's picture): green
+//               one texel per pixel, blue finer, yellow and red coarser, grey no value; the
+//               scale and m's mean/p95 in the notes. Computed on the CPU from a surface
+//               capture, again only when the camera, the scene or the light's map moved.
 #include "Image.h"
 #include "ViewerState.h"
 
@@ -82,12 +87,13 @@ private:
     ViewFrame projected(const ViewedLight& light, const engine::FrameCamera& camera);
     ViewFrame acneLeak(const ViewedLight& light, const engine::FrameCamera& camera);
     ViewFrame cascades(const ViewedLight& light, const engine::FrameCamera& camera);
+    ViewFrame texelDensity(const ViewedLight& light, const engine::FrameCamera& camera);
 
     engine::Renderer& renderer_;
     const engine::Scene& scene_;
     std::unique_ptr<truth::SurfaceCapture> capture_;          // made on first use
     std::unique_ptr<truth::RayTracedVisibility> visibility_;  // made on first use
-    struct Cache;  // surfaces and truth of the last camera (DebugViews.cpp)
+    struct Cache;  // surfaces, truth and texel density of the last camera (DebugViews.cpp)
     std::unique_ptr<Cache> cache_;
 };
 

@@ -87,7 +87,7 @@ std::vector<OverlayLine> OverlayText::lines(const ViewerState& state, const engi
     // Three short lines rather than two long ones: each fits a 1280-pixel window.
     out.push_back({"Tab light  V variant  R map size  F format  P filter  C cascades  T stable", kHelp});
     out.push_back({"- = light size  [ ] offset units  , . dimming  D view  1-9 glTF camera  0 framing", kHelp});
-    out.push_back({"drag: orbit (left), pan (right)  wheel zoom  O text  S save  Esc quit", kHelp});
+    out.push_back({"M texel density  drag: orbit (left), pan (right)  wheel zoom  O text  S save  Esc quit", kHelp});
     return out;
 }
 

@@ -36,7 +36,8 @@ const char* const kViewUsage =
     "      T stable cascades, [ ] offset units, , . dimming,\n"
     "      - = light size (light_radius, or angular_diameter for a directional light;\n"
     "      down to 0 and back up; at 0 a pcss light's filter becomes pcf),\n"
-    "      1-9 glTF cameras, 0 framing camera, D debug view, O overlay,\n"
+    "      1-9 glTF cameras, 0 framing camera, D debug view, M texel-density view (and back),\n"
+    "      O overlay,\n"
     "      S save settings, Space play/pause, Left/Right step 0.1 s, Esc quit;\n"
     "      mouse: left orbit, right/middle pan, wheel zoom\n";
 

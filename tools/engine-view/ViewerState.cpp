@@ -18,7 +18,7 @@ namespace engine_view {
 namespace {
 
 constexpr std::array<const char*, kDebugViewCount> kViewNames = {
-    "shaded", "light", "depth", "projected", "comparison", "shadow", "penumbra", "truth", "cascades"};
+    "shaded", "light", "depth", "projected", "comparison", "shadow", "penumbra", "truth", "cascades", "density"};
 
 // The smallest sizes the keys give, one step up from 0: a 1 cm radius (world units are
 // metres in glTF), and 2 mrad, about a fifth of the sun's 0.0093.
@@ -50,6 +50,15 @@ std::optional<DebugView> parseView(const std::string& name) {
     for (int i = 0; i < kDebugViewCount; ++i)
         if (name == kViewNames[i]) return static_cast<DebugView>(i);
     return std::nullopt;
+}
+
+void ViewerState::toggleTexelDensity() {
+    if (view_ == DebugView::TexelDensity) {
+        view_ = beforeTexelDensity_;
+        return;
+    }
+    beforeTexelDensity_ = view_;
+    view_ = DebugView::TexelDensity;
 }
 
 std::string viewNames() {

@@ -15,9 +15,12 @@
 namespace engine_view {
 
 // In the order D cycles them (the penumbra right after the shadow term it is drawn from).
-enum class DebugView { Shaded, LightView, DepthMap, ProjectedDepth, Comparison, ShadowTerm, Penumbra, AcneLeak, Cascades };
-constexpr int kDebugViewCount = 9;
-// "shaded", "light", "depth", "projected", "comparison", "shadow", "penumbra", "truth", "cascades"
+enum class DebugView {
+    Shaded, LightView, DepthMap, ProjectedDepth, Comparison, ShadowTerm, Penumbra, AcneLeak, Cascades, TexelDensity
+};
+constexpr int kDebugViewCount = 10;
+// "shaded", "light", "depth", "projected", "comparison", "shadow", "penumbra", "truth", "cascades",
+// "density"
 const char* viewName(DebugView view);
 std::optional<DebugView> parseView(const std::string& name);
 // Every view's name, in order, comma-separated (for error messages).
@@ -55,6 +58,9 @@ public:
     DebugView view() const { return view_; }
     void setView(DebugView view) { view_ = view; }
     void nextView() { view_ = static_cast<DebugView>((static_cast<int>(view_) + 1) % kDebugViewCount); }
+    // M: into the texel-density view and back to the view it left, so the heat map can be
+    // held against any other view with one key.
+    void toggleTexelDensity();
 
     // The keys' edits, on the selected light (nothing when there is none). The cycles are
     // the shadow plugin's allowed values (shadowmap::settingKeys()), in its order:
@@ -103,6 +109,7 @@ private:
     bool dirty_ = false;
     int selected_ = -1;
     DebugView view_ = DebugView::Shaded;
+    DebugView beforeTexelDensity_ = DebugView::Shaded;  // where M goes back to
     std::vector<engine::ShadowView> views_;
 };
 

@@ -15,23 +15,16 @@ namespace evaluation {
 ShadowEvaluator::ShadowEvaluator(engine::Renderer& renderer, const engine::Scene& scene)
     : renderer_(renderer), scene_(scene), visibility_(scene) {}
 
-namespace {
-
-// m (truth::texelOnScreen) at every pixel of `evaluated` through the layer that shades it:
-// the same image engine-render --texel-density paints, so its figures describe that picture.
-TexelOnScreen texelOnScreen(const engine::ShadowView& view, const truth::SurfaceBuffer& surfaces,
-                            const std::vector<std::uint8_t>& evaluated) {
+TexelOnScreen summarizeTexelOnScreen(const std::vector<double>& m) {
     std::vector<double> values;
-    for (double m : truth::texelOnScreenImage(view, surfaces, evaluated))
-        if (std::isfinite(m)) values.push_back(m);
+    for (double value : m)
+        if (std::isfinite(value)) values.push_back(value);
     if (values.empty()) return {};
     double sum = 0.0;
-    for (double m : values) sum += m;
+    for (double value : values) sum += value;
     const double mean = sum / static_cast<double>(values.size());
     return {mean, tools::percentile(values, kTexelPercentile), values.size()};
 }
-
-} // namespace
 
 bool ShadowEvaluator::scored(const engine::ShadowView& view) const {
     return view.castsShadows && scene_.lights[scene_.lightInstances[view.slot].light].emitsLight();
@@ -90,7 +83,8 @@ ViewResult ShadowEvaluator::evaluate(const engine::FrameCamera& camera, int fram
             out.areaErrors = truth::areaShadowErrors(camera.width, camera.height,
                                                      visibility_.litFraction(scene_, out.slot, surfaces),
                                                      truthImage, shade, evaluationSet, surfaces.covered);
-        out.texelOnScreen = texelOnScreen(view, surfaces, evaluationSet);
+        // The same image engine-render --texel-density paints: its figures describe that picture.
+        out.texelOnScreen = summarizeTexelOnScreen(truth::texelOnScreenImage(view, surfaces, evaluationSet));
         std::vector<float> softTruth;
         if (const truth::LightExtent extent = lightExtent(view); !extent.isPoint()) {
             softTruth = visibility_.visibleFraction(scene_, out.slot, surfaces, extent);

@@ -29,6 +29,9 @@ struct TexelOnScreen {
     double p95 = 0.0;       // nearest rank, kTexelPercentile
     std::size_t count = 0;  // pixels counted; 0: no figure (mean and p95 mean nothing)
 };
+// The figures of a per-pixel m image (truth::texelOnScreenImage) over its finite values: what
+// --truth prints, and engine-view's density view beside its picture.
+TexelOnScreen summarizeTexelOnScreen(const std::vector<double>& m);
 
 struct LightResult {
     std::string light;        // for people

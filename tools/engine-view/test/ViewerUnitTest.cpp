@@ -409,7 +409,7 @@ TEST(Script, ErrorsNameTheFileAndLine) {
     EXPECT_EQ(message("key F13"), "s.txt:1: key: unknown key \"F13\"");
     EXPECT_EQ(message("set sun"), "s.txt:1: set: expected 3 or more argument(s), got 1");
     EXPECT_EQ(message("view up"), "s.txt:1: view: unknown view \"up\" (shaded, light, depth, projected, comparison, "
-                                  "shadow, penumbra, truth, cascades)");
+                                  "shadow, penumbra, truth, cascades, density)");
     EXPECT_EQ(message("overlay maybe"), "s.txt:1: overlay: expected on or off");
 }
 
@@ -649,6 +649,12 @@ TEST(ViewerState, ViewsHaveNames) {
     ViewerState state(scene, nlohmann::json::object());
     state.setView(DebugView::ShadowTerm);
     state.nextView();
+    EXPECT_EQ(state.view(), DebugView::Penumbra);
+    // M: into the texel density and back to the view it left.
+    EXPECT_EQ(parseView("density"), DebugView::TexelDensity);
+    state.toggleTexelDensity();
+    EXPECT_EQ(state.view(), DebugView::TexelDensity);
+    state.toggleTexelDensity();
     EXPECT_EQ(state.view(), DebugView::Penumbra);
 }
 

@@ -1,4 +1,5 @@
-# Sourced by engine-view's CLI tests. Arguments: VIEW RENDER COMPARE CONTENT_DIR CHECK_PENUMBRA.
+# Sourced by engine-view's CLI tests. Arguments: VIEW RENDER COMPARE CONTENT_DIR CHECK_PENUMBRA
+# CHECK_TEXEL_DENSITY.
 #
 # Tolerance for "the viewer's screenshot equals engine-render's image": every pixel within
 # 1/255 per channel (TOLERANCE, FRACTION below). Both images come from the same Mesa llvmpipe
