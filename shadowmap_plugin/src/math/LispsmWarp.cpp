@@ -113,8 +113,13 @@ LightView fitLispsm(const glm::dvec3& direction, const WarpEye& eye, std::span<c
     for (std::size_t i = 0; i < bodyPoints; ++i) points.push_back({points[i].x, points[i].y, zTop});
 
     // The perspective along y: its centre n before the body's near end, across the light at
-    // the eye (x = 0 in this frame), level with it along the light (z = 0: any level gives
-    // the same map, and the eye's keeps the numbers small).
+    // the eye (x = 0 in this frame), and along the light level with the body's lowest point.
+    // Any level gives the same map, but not the same depth, z' = (z - z_C) / q: a horizontal
+    // receiver's depth then slopes across the map by (z - z_C) d(1/q), and the slope-scaled
+    // polygon offset grows with it. Measured on the outdoor street (640x360, 2048 maps,
+    // error / acne %): at the eye's level one map 0.168 / 0.109, 2 cascades 0.263 / 0.218;
+    // at the lowest point 0.168 / 0.109 and 0.143 / 0.098; halfway up the body 0.380 and
+    // 0.504 (leak: shadows detached); a body's height above it 1.46 and 1.87.
     fit.bodyDepth = r.max.y - r.min.y;
     const double nearDepth = std::max(eye.nearDepth, 1e-9 * std::max(fit.bodyDepth, 1e-300));
     fit.n = kInf;
@@ -127,13 +132,14 @@ LightView fitLispsm(const glm::dvec3& direction, const WarpEye& eye, std::span<c
         if (!(fit.n <= kMaxWarpNearOverDepth * fit.bodyDepth)) fit.n = kInf;
     }
     const double yCentre = std::isfinite(fit.n) ? r.min.y - fit.n : 0.0;
+    const double zCentre = r.min.z;
     const double n = fit.n, f = fit.n + fit.bodyDepth;
     const glm::dmat4 warp = warpMatrix(n, f);
 
     // The warped body's box: x, y, z after the perspective divide.
     engine::Aabb warped;
     for (const glm::dvec3& p : points) {
-        const glm::dvec4 h = warp * glm::dvec4(p.x, p.y - yCentre, p.z, 1.0);
+        const glm::dvec4 h = warp * glm::dvec4(p.x, p.y - yCentre, p.z - zCentre, 1.0);
         warped.extend(glm::dvec3(h) / h.w);
     }
     // Margins per axis: after the divide the axes have unrelated scales (x' and z' shrink as
@@ -166,7 +172,7 @@ LightView fitLispsm(const glm::dvec3& direction, const WarpEye& eye, std::span<c
         ortho[3][2] = (hi.z + lo.z) / depth;
     }
 
-    const glm::dvec3 centre = frame.origin + frame.y * yCentre;
+    const glm::dvec3 centre = frame.origin + frame.y * yCentre + frame.z * zCentre;
     v.lightToWorld = glm::dmat4(glm::dvec4(frame.x, 0.0), glm::dvec4(frame.y, 0.0), glm::dvec4(frame.z, 0.0),
                                 glm::dvec4(centre, 1.0));
     v.projection = ortho * warp;

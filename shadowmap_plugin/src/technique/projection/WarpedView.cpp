@@ -21,7 +21,8 @@ LightView fitWarpedView(const LightState& light, const PlanContext& context, con
         eye.nearDepth = slice ? std::max(slice->x, nearDepth) : nearDepth;
         body = visibleReceiverPoints(context.bounds.receivers, camera, slice);
     }
-    return fitLispsm(direction, eye, body, context.bounds.casters, options, light.settings.lispsmNScale, chosen);
+    const double scale = light.settings.lispsmNScale * (slice ? kSliceWarpNScale : 1.0);
+    return fitLispsm(direction, eye, body, context.bounds.casters, options, scale, chosen);
 }
 
 } // namespace shadowmap
