@@ -42,8 +42,10 @@ scenes=3
 # Per scene: still and camera with three configs each (unshadowed, on, off), light with two.
 rows=$(grep -c '^| [A-Za-z0-9]* | \(still\|light\|camera\) | \(unshadowed\|on\|off\) | [0-9.]* | [0-9.]* | [0-9.]* |$' "$report" || true)
 [ "$rows" -eq $((scenes * 8)) ] || fail "expected $((scenes * 8)) table rows with three times each, got $rows: $(cat "$report")"
-# Against truth: every scene's lights, each with its error figures.
+# Against truth: every scene's lights, each with its error figures and the texel's size on
+# screen (mean/p95, or - where no pixel has one).
 for light in spot_light lamp_0 sun; do
-  grep -Eq "^  $light +standard .* [0-9]+\.[0-9]{3} +[0-9]+\.[0-9]{3}$" "$report" || fail "no truth row for $light"
+  grep -Eq "^  $light +standard .* [0-9]+\.[0-9]{3} +[0-9]+\.[0-9]{3} +([0-9]+\.[0-9]+/[0-9]+\.[0-9]+|-)$" "$report" ||
+    fail "no truth row for $light"
 done
 echo "ok: refused without a GPU; on device $device: $rows table rows, truth for every scene"
