@@ -117,6 +117,9 @@ LightView invalidView(std::string reason) {
     return v;
 }
 
+bool isFiniteMatrix(const glm::dmat4& m) { return isFinite(m); }
+bool usableBounds(const engine::Aabb& box) { return usable(box); }
+
 namespace {
 
 // Final guard: a view is only valid when everything in it is a finite, usable number

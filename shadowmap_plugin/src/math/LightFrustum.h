@@ -119,6 +119,10 @@ double cubeShadowReferenceDepth(const glm::dvec3& lightToPoint, double nearPlane
 std::string directionProblem(const engine::LightInstance& instance, glm::dvec3& direction);
 // A view that says why the light has no shadow (valid false).
 LightView invalidView(std::string reason);
+// Whether every entry is finite; whether a box is non-empty with finite corners (the fits
+// ignore any other box).
+bool isFiniteMatrix(const glm::dmat4& m);
+bool usableBounds(const engine::Aabb& box);
 
 // A rigid L (columns x, y, z = -direction, position) with an up vector that is robust for
 // every direction: the world axis least parallel to it. Direction need not be unit length.

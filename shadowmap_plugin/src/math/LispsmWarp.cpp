@@ -13,18 +13,6 @@ namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kMaxWarpNearOverDepth = 256.0;
 
-bool usableBox(const engine::Aabb& box) {
-    return !box.empty() && std::isfinite(box.min.x) && std::isfinite(box.min.y) && std::isfinite(box.min.z) &&
-           std::isfinite(box.max.x) && std::isfinite(box.max.y) && std::isfinite(box.max.z);
-}
-
-bool finiteMatrix(const glm::dmat4& m) {
-    for (int c = 0; c < 4; ++c)
-        for (int r = 0; r < 4; ++r)
-            if (!std::isfinite(m[c][r])) return false;
-    return true;
-}
-
 // The light frame: z toward the light, y the warp axis (the view direction with its part
 // along the light removed), x = y cross z; with no warp axis, any axes across the light.
 struct WarpFrame {
@@ -103,7 +91,7 @@ LightView fitLispsm(const glm::dvec3& direction, const WarpEye& eye, std::span<c
     // Casters over the rectangle reach toward the light: extrude the body up to them.
     double zTop = r.max.z;
     for (const engine::Aabb& box : casters) {
-        if (!usableBox(box)) continue;
+        if (!usableBounds(box)) continue;
         engine::Aabb c;
         for (int i = 0; i < 8; ++i) c.extend(frame.toLocal(box.corner(i)));
         const bool overlaps = c.min.x <= r.max.x && c.max.x >= r.min.x && c.min.y <= r.max.y && c.max.y >= r.min.y;
@@ -183,7 +171,7 @@ LightView fitLispsm(const glm::dvec3& direction, const WarpEye& eye, std::span<c
     v.nearPlane = v.warped ? n : 0.0;
     v.farPlane = v.warped ? f : depth;
     v.nearestReceiver = v.nearPlane;
-    v.valid = finiteMatrix(v.lightToWorld) && finiteMatrix(v.projection) && depth > 0.0;
+    v.valid = isFiniteMatrix(v.lightToWorld) && isFiniteMatrix(v.projection) && depth > 0.0;
     if (!v.valid) v.invalidReason = "fitted light-space perspective frustum is degenerate";
     if (chosen) *chosen = fit;
     return v;
