@@ -154,3 +154,11 @@ vec4 comparisonCube(int slot, vec3 toPoint, vec3 eyePosition, vec3 eyeNormal, sa
     float biased = cubeBiasedReference(slot, major);
     return reversed ? comparisonColor(stored, biased) : comparisonColor(biased, stored);
 }
+
+// A moments lookup's receiver depth (vsm, evsm: moments.glsl's momentsDepth) from its biased,
+// clamped window depth, with the layer's near and far from softLayers.zw.
+float momentsReceiverDepth(int slot, int layer, float reference) {
+    vec4 planes = shadowData.softLayers[slot * MAX_CASCADES + layer];
+    return momentsDepth(reference, shadowData.lightInEye[slot].w > 0.5, shadowData.params[slot].x > 0.5,
+                        planes.z, planes.w);
+}

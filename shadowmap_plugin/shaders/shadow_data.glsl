@@ -30,9 +30,11 @@
 //               of spread, 0.5 * P[0][0] and 0.5 * P[1][1] of the layer's projection times
 //               the light radius (perspective) or tan(angular_diameter / 2) (orthographic);
 //               z: near (perspective) or 0; w: far (perspective, 0 = infinite) or the depth
-//               range far - near (orthographic); all 0 for a light without a size
+//               range far - near (orthographic); xy 0 for a light without a size, zw always
+//               (vsm and evsm read them: moments.glsl)
 //   lookupParams  x: filter_radius in texels (wide pcf); y: pcss's blocker search taps;
-//               z: filter_taps; w: normal_offset in texels
+//               z: filter_taps; w: normal_offset in texels. vsm and evsm (their blur is in
+//               the moments): x: bleed_reduction; yz: evsm_exponents
 //   texelWidths   a map texel's width in eye units per unit of q (2D maps: q is the distance
 //               along the light's axis for a spot light, 1 for a directional one) in x, per
 //               unit of the major-axis distance for a cube in x, or per cascade in x..w;

@@ -198,12 +198,10 @@ void ViewerState::toggleFilter() {
     const nlohmann::json current = effective(selected_);
     const engine::Light::Type type = scene_.lights[lights_[selected_].light].type;
     // The keys skip a filter the light's other settings refuse: pcss without a size, a
-    // filter other than pcf with a filter_radius.
+    // filter other than pcf, vsm or evsm with a filter_radius, vsm with lispsm or an infinite
+    // far plane.
     const auto accepted = [&](const std::string& filter) {
-        shadowmap::ShadowSettings settings;
-        settings.lightRadius = current["light_radius"].get<double>();
-        settings.angularDiameter = current["angular_diameter"].get<double>();
-        settings.filterRadius = current["filter_radius"].get<double>();
+        shadowmap::ShadowSettings settings = shadowmap::parseSettings(current, "engine-view", "filter");
         shadowmap::applySettings(settings, {{"filter", filter}}, "engine-view", "filter");
         try {
             shadowmap::checkFilterForType(settings, type, "engine-view", "filter");

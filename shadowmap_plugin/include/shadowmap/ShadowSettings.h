@@ -21,10 +21,22 @@
 //   filter          "nearest" (1 tap) | "pcf" (2x2 bilinear)   "pcf"
 //                   | "pcss" (percentage-closer soft shadows from the light's size: a blocker
 //                   search, then a filter as wide as the penumbra; needs a light size)
+//                   | "vsm" | "evsm" (filterable maps: variance, or exponential variance,
+//                   moments of the light-linear depth, made from the depth map after its
+//                   passes, blurred by filter_radius, mipmapped (2D maps), read with one
+//                   filtered fetch and Chebyshev's bound; technique/lookup/MomentsLookup.h)
 //   filter_taps     4 .. 64: pcss's and wide pcf's taps (each     16
 //                   a 2x2 bilinear comparison); pcss's blocker search takes half as many
 //   filter_radius   0 .. 16 texels: pcf over a disk of this       0 (one 2x2 tap)
-//                   radius (filter_taps rotated taps) instead of one 2x2 tap; pcf only
+//                   radius (filter_taps rotated taps) instead of one 2x2 tap; vsm and
+//                   evsm: the moments' separable box blur, this many texels each side
+//   bleed_reduction 0 .. 0.95: vsm, evsm: the share of Chebyshev's  0.2
+//                   bound cut off as light bleeding (the rest stretched to [0, 1])
+//   evsm_exponents  [positive, negative], each in (0, 40]: evsm's  [40, 5]
+//                   depth warps e^(c u) and -e^(-c u) (ShadowLimits.h says why 40)
+//   moments_mipmaps true: vsm and evsm 2D maps (spot, one            true
+//                   directional map) are mipmapped and read trilinearly, anisotropically
+//                   where the GL can; cascades and cube maps read their first level
 //   normal_offset   0 .. 8 texels: the lookup moves the receiver  0.25
 //                   along its normal by this many texels of the map at the receiver,
 //                   times the sine of the light's angle to the normal (none facing the
@@ -147,7 +159,7 @@ namespace shadowmap {
 
 enum class Variant { Standard, Woo, Backface, None };
 enum class DepthFormat { D16, D24, D32F };
-enum class Filter { Nearest, Pcf, Pcss };
+enum class Filter { Nearest, Pcf, Pcss, Vsm, Evsm };
 enum class Projection { Uniform, Lispsm };
 
 // The names the JSON uses ("standard", "d24", "pcf").
@@ -155,6 +167,10 @@ const char* toString(Variant);
 const char* toString(DepthFormat);
 const char* toString(Filter);
 const char* toString(Projection);
+
+// vsm and evsm read a filterable map of depth moments (technique/lookup/MomentsLookup.h)
+// made from the depth map, blurred by filter_radius, instead of comparing depths.
+inline bool readsMoments(Filter filter) { return filter == Filter::Vsm || filter == Filter::Evsm; }
 
 // The polygon offset [factor, units] a depth pass uses when none is explicit (see the
 // table above): standard: units 8 (128 with reversed Z), factor 1 for one tap and 2 for
@@ -178,6 +194,11 @@ struct ShadowSettings {
     int filterTaps = 16;
     double filterRadius = 0.0;  // texels; 0: pcf's one 2x2 tap
     double normalOffset = 0.25;  // texels of the map at the receiver, times sin(normal, light)
+    // vsm, evsm (see the table above): the light-bleeding reduction, EVSM's exponents and
+    // whether a 2D map's moments are mipmapped.
+    double bleedReduction = kDefaultBleedReduction;
+    glm::vec2 evsmExponents{kDefaultEvsmExponents[0], kDefaultEvsmExponents[1]};
+    bool momentsMipmaps = true;
 
     // The offset a two-sided depth draw needs: the explicit one, else the standard
     // variant's default for this filter and depth direction.
@@ -234,6 +255,9 @@ inline constexpr int kMinFilterTaps = 4, kMaxFilterTaps = 64;
 // The widest filter_radius, in texels: wider kernels cost taps and blur contact shadows
 // away; a light with a size wants pcss instead.
 inline constexpr double kMaxFilterRadius = 16.0;
+// The largest bleed_reduction: at 1 the bound would be cut off whole (every penumbra a
+// hard step, and 0/0 in the stretch).
+inline constexpr double kMaxBleedReduction = 0.95;
 // The largest normal_offset, in texels: beyond it a thin caster's shadow detaches visibly.
 inline constexpr double kMaxNormalOffset = 8.0;
 

@@ -13,6 +13,7 @@ extern const char map_shapes_glsl[];
 extern const char visibility_glsl[];
 extern const char texgen_glsl[];
 extern const char disk_taps_glsl[];
+extern const char moments_glsl[];
 } // namespace shaders
 
 namespace {
@@ -93,7 +94,7 @@ HookGlsl::Code generate(const std::vector<HookGlsl::Lookup>& lookups) {
                     suffix + slot + ", " + coordinate + ", eyePosition, eyeNormal, uShadowMap" + slot + ");\n";
     }
     HookGlsl::Code code;
-    code.fragment = shadowBlockGlslDefines() + shaders::shadow_data_glsl + shaders::map_shapes_glsl +
+    code.fragment = shadowBlockGlslDefines() + shaders::shadow_data_glsl + shaders::moments_glsl + shaders::map_shapes_glsl +
                     shaders::disk_taps_glsl + lookupFunctions +
                     declarations +
                     "float lightVisibility(int lightSlot, vec3 eyePosition, vec3 eyeNormal) {\n" + dispatch +

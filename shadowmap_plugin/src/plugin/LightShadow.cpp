@@ -30,12 +30,85 @@ void LightShadow::ensureMap() {
         map.setParameter(GL_TEXTURE_WRAP_R, GL_CLAMP_TO_EDGE);
         renderedKey = 0;  // a new texture holds nothing yet
         renderedCascadeKeys.clear();
+        mapLayers = {};  // a view of the texture just replaced
     }
     // Reversed Z compares the other way round (lit where r >= stored: near is 1).
     map.setParameter(GL_TEXTURE_COMPARE_FUNC, settings.reversedZ ? GL_GEQUAL : GL_LEQUAL);
     const GLint filter = mapLookupFor(settings).bilinearCompare() ? GL_LINEAR : GL_NEAREST;
     map.setParameter(GL_TEXTURE_MIN_FILTER, filter);
     map.setParameter(GL_TEXTURE_MAG_FILTER, filter);
+}
+
+namespace {
+
+// The anisotropy a mipmapped moments map is read with, where the GL filters anisotropically
+// (GL 4.6, or the EXT/ARB extension): 16 samples along a receiver seen at a grazing angle,
+// the most any GL promises (GL_MAX_TEXTURE_MAX_ANISOTROPY is at least 16 where supported).
+constexpr float kMomentsAnisotropy = 16.0f;
+
+bool filtersAnisotropically() {
+    return epoxy_gl_version() >= 46 || epoxy_has_gl_extension("GL_EXT_texture_filter_anisotropic") ||
+           epoxy_has_gl_extension("GL_ARB_texture_filter_anisotropic");
+}
+
+GLenum momentsFormat(int channels) { return channels == 2 ? GL_RG32F : GL_RGBA32F; }
+
+int momentsLevels(const LightShadow& light, const MapShape& shape) {
+    if (shape.target != MapShape::Target::Texture2D || !light.settings.momentsMipmaps) return 1;
+    int levels = 1;
+    for (int size = light.settings.resolution; size > 1; size /= 2) ++levels;
+    return levels;
+}
+
+} // namespace
+
+void LightShadow::ensureMoments() {
+    const int channels = mapLookupFor(settings).momentChannels();
+    if (channels == 0) {
+        moments = {};
+        mapLayers = {};
+        return;
+    }
+    const MapShape shape = mapProjection(frame.kind)->shape(*this);
+    const GLenum target = shape.target == MapShape::Target::Cube      ? GL_TEXTURE_CUBE_MAP
+                          : shape.target == MapShape::Target::Array2D ? GL_TEXTURE_2D_ARRAY
+                                                                      : GL_TEXTURE_2D;
+    const GLenum format = momentsFormat(channels);
+    const int levels = momentsLevels(*this, shape);
+    const int size = settings.resolution;
+    if (!moments.id() || moments.width() != size || static_cast<GLenum>(moments.internalFormat()) != format ||
+        moments.target() != target || moments.layers() != shape.arrayLayers() || moments.levels() != levels) {
+        moments = target == GL_TEXTURE_CUBE_MAP ? engine::gl::Texture::createCube(format, size)
+                  : target == GL_TEXTURE_2D_ARRAY
+                      ? engine::gl::Texture::create2DArray(format, size, size, shape.arrayLayers())
+                      : engine::gl::Texture::create2D(format, size, size, levels);
+        moments.setParameter(GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+        moments.setParameter(GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+        moments.setParameter(GL_TEXTURE_WRAP_R, GL_CLAMP_TO_EDGE);
+        moments.setParameter(GL_TEXTURE_MIN_FILTER, levels > 1 ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR);
+        moments.setParameter(GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        if (levels > 1 && filtersAnisotropically())
+            moments.setParameterf(GL_TEXTURE_MAX_ANISOTROPY, kMomentsAnisotropy);
+        // The moments are made with the map's passes: new ones hold nothing until those run.
+        renderedKey = 0;
+        renderedCascadeKeys.clear();
+    }
+    if (!mapLayers.id()) {
+        GLuint view = 0;
+        glGenTextures(1, &view);
+        const int layers = shape.target == MapShape::Target::Cube ? engine::kCubeFaces : shape.arrayLayers();
+        glTextureView(view, GL_TEXTURE_2D_ARRAY, map.id(), map.internalFormat(), 0, 1, 0, layers);
+        mapLayers = engine::gl::Texture::wrap(view);
+    }
+}
+
+engine::TextureDesc LightShadow::momentsDesc() const {
+    const MapShape shape = mapProjection(frame.kind)->shape(*this);
+    engine::TextureDesc desc{settings.resolution, settings.resolution,
+                             moments.internalFormat() == GL_RG32F ? engine::TextureFormat::RG32F
+                                                                  : engine::TextureFormat::RGBA32F,
+                             shape.arrayLayers(), shape.target == MapShape::Target::Cube};
+    return desc;
 }
 
 nlohmann::json LightShadow::settingsJson() const {

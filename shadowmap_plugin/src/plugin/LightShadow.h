@@ -16,10 +16,20 @@ namespace shadowmap {
 
 struct LightShadow : LightState {
     engine::gl::Texture map;
+    // vsm, evsm (technique/lookup/MomentsLookup.h): the moments the lookup reads, shaped as
+    // the map (a 2D map's with mipmaps when moments_mipmaps), and the map seen as a 2D array
+    // (a texture view: a 2D map as one layer, a cube's six faces as six) for the passes that
+    // make them. Empty for the other filters.
+    engine::gl::Texture moments;
+    engine::gl::Texture mapLayers;
 
     // (Re)creates the map when size, format or shape changed (a new texture holds nothing:
     // its rendered keys are reset), with the comparison state and filter the lookup needs.
     void ensureMap();
+    // After ensureMap: the same for the moments and the map's layer view, or frees them when
+    // the lookup reads none.
+    void ensureMoments();
+    engine::TextureDesc momentsDesc() const;
     // --stats' summary of the settings in effect, keyed as in extras.shadow (the tools read
     // ShadowView::settings instead, through shadowmap/ShadowViewSettings.h).
     nlohmann::json settingsJson() const;

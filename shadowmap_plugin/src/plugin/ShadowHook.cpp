@@ -30,7 +30,7 @@ engine::LightVisibilityHook ShadowHook::build(const engine::Frame& frame, const 
         block.pointFar[slot].x = 1.0f;
     }
     block.eyeToWorld = glm::mat4(glm::mat3(glm::dmat3(eyeToWorld)));
-    std::vector<std::pair<int, unsigned>> units;      // texture unit, map (comparing)
+    std::vector<std::pair<int, unsigned>> units;      // texture unit, map (comparing) or moments
     // texture unit, map read as raw depth: the comparison view's, and the lookups' that
     // compare depths themselves
     std::vector<std::pair<int, unsigned>> rawUnits;
@@ -92,7 +92,9 @@ engine::LightVisibilityHook ShadowHook::build(const engine::Frame& frame, const 
         // Without map caching nothing is reused: a depth pass whose map no pass reads
         // would be culled, and timing runs (bench, cache_maps false) would time nothing.
         if (cacheMaps) shadeKeys[light.slot] = shadeKey.value();
-        (mapLookup.comparesInHardware() ? units : rawUnits).emplace_back(unit, light.map.id());
+        // A moments lookup reads the moments through their own (filtering) state.
+        if (mapLookup.momentChannels() > 0) units.emplace_back(unit, light.moments.id());
+        else (mapLookup.comparesInHardware() ? units : rawUnits).emplace_back(unit, light.map.id());
         if (debuggable) rawUnits.emplace_back(rawUnit, light.map.id());
         lookups.push_back(lookup);
     }

@@ -1,6 +1,7 @@
 #include "plugin/ShadowMapPlugin.h"
 
 #include "plugin/DepthPasses.h"
+#include "plugin/MomentsPasses.h"
 #include "technique/DepthFormatGl.h"
 #include "technique/LightPlanner.h"
 #include "technique/Techniques.h"
@@ -58,6 +59,8 @@ void ShadowMapPlugin::reloadSettings(const engine::Scene& scene) {
         for (LightShadow& old : previous)
             if (old.slot == light.slot) {
                 light.map = std::move(old.map);
+                light.moments = std::move(old.moments);
+                light.mapLayers = std::move(old.mapLayers);
                 light.renderedKey = old.renderedKey;
                 light.renderedUnseen = std::move(old.renderedUnseen);  // what that map lacks
             }
@@ -83,6 +86,7 @@ void ShadowMapPlugin::addPasses(engine::Frame& frame) {
             planLight(light, context, engine::kFirstPluginTextureUnit + light.slot, maxTextureUnits_);
         if (shadowed) {
             light.ensureMap();
+            light.ensureMoments();
             planUnseenShadows(light, context);
             decideCache(light, frame.scene(), sceneGeneration_, cacheMaps_);
             keepCachedMapsThatHoldTheNeededCasters(light);
@@ -92,14 +96,22 @@ void ShadowMapPlugin::addPasses(engine::Frame& frame) {
                                            shape.arrayLayers(),
                                            shape.target == MapShape::Target::Cube};
             engine::ResourceHandle map = frame.graph().importTexture(light.mapResource(), desc, light.map.id());
+            engine::ResourceHandle moments;  // vsm, evsm: what the lit pass reads instead of the map
+            if (light.moments.id())
+                moments = frame.graph().importTexture(light.momentsResource(), light.momentsDesc(), light.moments.id());
             if (light.frame.cacheHit) {
                 ++cacheHits_;  // the map is an input nobody writes this frame: no depth pass
             } else {
                 ++cacheMisses_;
                 addDepthPasses(light, frame, map, *depth_, closedMeshes_);  // moves map to its last version
+                if (moments.valid()) {
+                    if (!moments_) moments_ = std::make_unique<MomentsRenderer>();
+                    addMomentsPasses(light, frame, map, moments, *moments_);
+                }
             }
-            light.frame.map = map;  // the version the lit pass reads
+            light.frame.map = map;  // the version the lit pass (and its comparison view) reads
             maps.push_back(map);
+            if (moments.valid()) maps.push_back(moments);
         }
         for (const std::string& warning : light.frame.warnings) warnOnce(light, warning);
     }

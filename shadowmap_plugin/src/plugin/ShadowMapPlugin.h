@@ -7,6 +7,7 @@
 #include "plugin/DepthRenderer.h"
 #include "plugin/LightResolver.h"
 #include "plugin/LightShadow.h"
+#include "plugin/MomentsRenderer.h"
 #include "plugin/ShadowHook.h"
 #include "shadowmap/ShadowSettings.h"
 
@@ -45,6 +46,7 @@ private:
     std::vector<LightShadow> lights_;           // one per lit-pass light slot
     std::vector<bool> closedMeshes_;            // per mesh: closed, not double-sided
     std::unique_ptr<DepthRenderer> depth_;      // created with the first frame (needs GL)
+    std::unique_ptr<MomentsRenderer> moments_;  // created with the first frame with a vsm or evsm light
     int maxTextureUnits_ = 16;                  // GL_MAX_TEXTURE_IMAGE_UNITS
     ShadowHook hook_;
     std::set<std::string> warned_;              // warnings already printed

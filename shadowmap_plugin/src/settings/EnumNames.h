@@ -5,7 +5,7 @@ namespace shadowmap::names {
 
 inline constexpr const char* kVariants[] = {"standard", "woo", "backface", "none"};
 inline constexpr const char* kDepthFormats[] = {"d16", "d24", "d32f"};
-inline constexpr const char* kFilters[] = {"nearest", "pcf", "pcss"};
+inline constexpr const char* kFilters[] = {"nearest", "pcf", "pcss", "vsm", "evsm"};
 inline constexpr const char* kProjections[] = {"uniform", "lispsm"};
 
 } // namespace shadowmap::names

@@ -71,7 +71,9 @@ std::vector<SettingKey> makeKeys() {
     filter.choices = choicesOf(names::kFilters);
     filter.description = "`nearest` one tap, `pcf` 2×2 bilinear percentage-closer filtering, `pcss` "
                          "percentage-closer soft shadows: a penumbra as wide as the light's size makes it "
-                         "(needs `light_radius` or `angular_diameter`)";
+                         "(needs `light_radius` or `angular_diameter`), `vsm` and `evsm` filterable maps of depth "
+                         "moments, blurred by `filter_radius` and read with one filtered fetch (light may bleed where "
+                         "occluders overlap)";
     keys.push_back(filter);
 
     SettingKey taps = makeKey("filter_taps", SettingKind::Integer);
@@ -88,8 +90,29 @@ std::vector<SettingKey> makeKeys() {
     filterRadius.maximum = kMaxFilterRadius;
     filterRadius.values = "0 … " + engine::formatNumber(kMaxFilterRadius) + ", texels";
     filterRadius.description = "`pcf`: filter over a disk of this radius (`filter_taps` rotated taps) instead of "
-                               "one 2×2 tap; 0: the one tap";
+                               "one 2×2 tap; 0: the one tap. `vsm`, `evsm`: the moments' box blur, this many texels "
+                               "each side";
     keys.push_back(filterRadius);
+
+    SettingKey bleed = makeKey("bleed_reduction", SettingKind::Number);
+    bleed.minimum = 0;
+    bleed.maximum = kMaxBleedReduction;
+    bleed.values = "0 … " + engine::formatNumber(kMaxBleedReduction);
+    bleed.description = "`vsm`, `evsm`: the share of Chebyshev's bound cut off as light bleeding where occluders "
+                        "overlap (the rest stretched over 0 … 1); higher darkens penumbrae too";
+    keys.push_back(bleed);
+
+    SettingKey exponents = makeKey("evsm_exponents", SettingKind::NumberPair);
+    exponents.values = "`[positive, negative]`, each in (0, " + engine::formatNumber(kMaxEvsmExponent) + "]";
+    exponents.description = "`evsm`: the exponents of its depth warps; larger bleeds less, and 32-bit moments "
+                            "overflow beyond " + engine::formatNumber(kMaxEvsmExponent);
+    keys.push_back(exponents);
+
+    SettingKey mipmaps = makeKey("moments_mipmaps", SettingKind::Boolean);
+    mipmaps.values = "`true`, `false`";
+    mipmaps.description = "`vsm`, `evsm`: mipmap a 2D map's moments (spot, one directional map) and read them "
+                          "trilinearly and anisotropically; cascades and cube maps read their first level";
+    keys.push_back(mipmaps);
 
     SettingKey normalOffset = makeKey("normal_offset", SettingKind::Number);
     normalOffset.minimum = 0;

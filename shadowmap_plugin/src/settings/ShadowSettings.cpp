@@ -42,7 +42,8 @@ const char* toString(Projection projection) { return names::kProjections[static_
 
 glm::vec2 defaultPolygonOffset(Variant variant, Filter filter, bool reversedZ) {
     if (variant != Variant::Standard) return glm::vec2(0.0f);
-    // pcss's taps are 2x2 bilinear comparisons, like pcf's one tap.
+    // pcss's taps are 2x2 bilinear comparisons, like pcf's one tap; vsm's and evsm's moments
+    // are read bilinearly too, and an offset map keeps a receiver's mean behind it.
     return glm::vec2(filter == Filter::Nearest ? 1.0f : 2.0f, reversedZ ? 128.0f : 8.0f);
 }
 
@@ -210,6 +211,31 @@ void applySettings(ShadowSettings& settings, const nlohmann::json& json, const s
                                         json["lispsm_n_scale"].dump());
         settings.lispsmNScale = scale;
     }
+    if (json.contains("bleed_reduction")) {
+        const double reduction = json_read::readNumber(json["bleed_reduction"], source, key("bleed_reduction"));
+        if (!(reduction >= 0.0 && reduction <= kMaxBleedReduction))
+            engine::throwInputError(source, key("bleed_reduction"),
+                                    "must be in [0, " + engine::formatNumber(kMaxBleedReduction) + "], got " +
+                                        json["bleed_reduction"].dump());
+        settings.bleedReduction = reduction;
+    }
+    if (json.contains("evsm_exponents")) {
+        const auto& exponents = json["evsm_exponents"];
+        const std::string expected = "must be [positive, negative], each in (0, " +
+                                     engine::formatNumber(kMaxEvsmExponent) + "] (e^(2c) in 32-bit float), got " +
+                                     exponents.dump();
+        if (!exponents.is_array() || exponents.size() != 2)
+            engine::throwInputError(source, key("evsm_exponents"), expected);
+        glm::vec2 value;
+        for (int i = 0; i < 2; ++i) {
+            const double c = json_read::readNumber(exponents[i], source, key("evsm_exponents") + "[" + std::to_string(i) + "]");
+            if (!(c > 0.0 && c <= kMaxEvsmExponent)) engine::throwInputError(source, key("evsm_exponents"), expected);
+            value[i] = static_cast<float>(c);
+        }
+        settings.evsmExponents = value;
+    }
+    if (json.contains("moments_mipmaps"))
+        settings.momentsMipmaps = json_read::readBool(json["moments_mipmaps"], source, key("moments_mipmaps"));
     if (json.contains("light_radius")) settings.lightRadius = readSize("light_radius", "world units");
     if (json.contains("angular_diameter")) settings.angularDiameter = readSize("angular_diameter", "radians");
 }
@@ -237,11 +263,27 @@ void checkProjectionKeyForType(const nlohmann::json& json, engine::Light::Type t
 void checkFilterForType(const ShadowSettings& settings, engine::Light::Type type, const std::string& source,
                         const std::string& object) {
     if (settings.variant == Variant::None) return;
-    if (settings.filterRadius > 0.0 && settings.filter != Filter::Pcf)
+    if (settings.filterRadius > 0.0 && settings.filter != Filter::Pcf && !readsMoments(settings.filter))
         engine::throwInputError(source, object + ".filter_radius",
-                                std::string("widens pcf's kernel, and this light's filter is \"") +
+                                std::string("widens pcf's kernel and blurs vsm's and evsm's moments, and this light's "
+                                            "filter is \"") +
                                     toString(settings.filter) + "\": use filter \"pcf\", or filter_radius 0");
     const bool directional = type == engine::Light::Type::Directional;
+    if (readsMoments(settings.filter)) {
+        if (directional && settings.projection == Projection::Lispsm)
+            engine::throwInputError(source, object + ".projection",
+                                    std::string("\"lispsm\" warps the map's depth along its warp axis, and \"") +
+                                        toString(settings.filter) +
+                                        "\" filters depth linear in the distance from the light: use projection "
+                                        "\"uniform\" with it");
+        // A perspective map's moments hold the distance from near as a fraction of far - near.
+        const bool infiniteFar = std::isinf(settings.farPlane) || (settings.reversedZ && settings.farPlane == 0.0);
+        if (!directional && infiniteFar)
+            engine::throwInputError(source, object + ".far_plane",
+                                    std::string("\"") + toString(settings.filter) +
+                                        "\" stores the distance from the light as a fraction of far - near, and this "
+                                        "light's far plane is infinite (reversed_z's default): set far_plane");
+    }
     if (directional && settings.projection == Projection::Lispsm && settings.filter == Filter::Pcss)
         engine::throwInputError(source, object + ".projection",
                                 "\"lispsm\" warps the map, and pcss's penumbra search assumes an unwarped one: use "

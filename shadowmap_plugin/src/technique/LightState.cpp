@@ -22,4 +22,11 @@ std::string LightState::firstLayerResource(int layer) const {
     return "shadow_first_layer_" + std::to_string(slot) + layerSuffix(frame.kind, layer);
 }
 
+std::string LightState::momentsResource() const { return "shadow_moments_" + std::to_string(slot); }
+std::string LightState::momentsPass(int layer) const { return depthPass(layer) + "_moments"; }
+std::string LightState::momentsBlurPass(int layer) const { return depthPass(layer) + "_moments_blur"; }
+std::string LightState::momentsRowsResource(int layer) const {
+    return "shadow_moments_rows_" + std::to_string(slot) + layerSuffix(frame.kind, layer);
+}
+
 } // namespace shadowmap

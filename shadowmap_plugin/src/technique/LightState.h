@@ -76,6 +76,13 @@ struct LightState {
     std::string depthPass(int layer) const;
     std::string firstLayerPass(int layer) const;
     std::string firstLayerResource(int layer) const;
+    // vsm, evsm: the moments texture as imported, per layer the pass making its moments from
+    // the depth map (along s when blurred) and the blur's pass along t with the rows between
+    // them.
+    std::string momentsResource() const;
+    std::string momentsPass(int layer) const;
+    std::string momentsBlurPass(int layer) const;
+    std::string momentsRowsResource(int layer) const;
 };
 
 } // namespace shadowmap

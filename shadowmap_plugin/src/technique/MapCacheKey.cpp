@@ -20,6 +20,13 @@ void addSettings(engine::Hasher& hasher, const LightState& light, std::uint64_t 
     hasher.add(s.standardPolygonOffset().x);
     hasher.add(s.standardPolygonOffset().y);
     hasher.add(static_cast<int>(light.frame.kind));
+    // vsm, evsm: the moments made with the map hold its blur and warp.
+    if (readsMoments(s.filter)) {
+        hasher.add(static_cast<int>(s.filter));
+        hasher.add(s.filterRadius);
+        hasher.add(s.evsmExponents);
+        hasher.add(s.momentsMipmaps);
+    }
 }
 
 // What the light's passes draw with any of `views` (the casters, and the receivers that cast

@@ -1,8 +1,9 @@
 #pragma once
 // How the lit pass reads a light's map: one axis of a shadow technique (Techniques.h).
 // The hardware depth comparison, nearest or bilinear (GL_LINEAR on a comparing texture is
-// 2x2 percentage-closer filtering), and percentage-closer soft shadows, which read raw
-// depths; each in lookup/, its GLSL in shaders/lookup/.
+// 2x2 percentage-closer filtering), percentage-closer soft shadows, which read raw depths,
+// and variance maps, which read moments made from them; each in lookup/, its GLSL in
+// shaders/lookup/.
 #include "shadowmap/ShadowSettings.h"
 
 #include "engine/util/Hasher.h"
@@ -18,6 +19,9 @@ public:
     // false: the lookup reads the map's depths and compares them itself, through a plain
     // sampler (sampler2D, sampler2DArray, samplerCube) with comparison off.
     virtual bool comparesInHardware() const { return true; }
+    // > 0: the lookup reads a filterable map of this many moments per texel, made from the
+    // depth map by the plugin's moments passes (lookup/MomentsLookup.h), not the depth map.
+    virtual int momentChannels() const { return 0; }
     // What, beyond the map, decides the shade this lookup gives a pixel.
     virtual void addShadeKey(engine::Hasher& key) const { key.add(filter()); }
     // Its GLSL: source defining <glslName>2D, <glslName>Array and <glslName>Cube, the fetch

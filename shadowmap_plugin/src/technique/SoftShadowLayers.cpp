@@ -16,7 +16,11 @@ bool perspective(const LightState& light) { return light.type != engine::Light::
 
 glm::vec4 softLayer(const LightView& view, const LightState& light) {
     const double size = light.settings.lightSize(light.type);
-    if (!(size > 0.0)) return glm::vec4(0.0f);
+    // The depth terms always: the moments lookups (vsm, evsm) read them too.
+    const glm::vec2 depthTerms = perspective(light)
+                                     ? glm::vec2(static_cast<float>(view.nearPlane), finiteOrZero(view.farPlane))
+                                     : glm::vec2(0.0f, static_cast<float>(view.farPlane - view.nearPlane));
+    if (!(size > 0.0)) return glm::vec4(0.0f, 0.0f, depthTerms);
     // Map coordinates per unit of tangent (perspective) or of world distance (orthographic):
     // the projection's x and y scale, halved by the scale-bias to [0, 1]. A perspective
     // light's edge spreads by its radius per unit of (d_receiver - d_blocker) / (d_receiver
@@ -24,16 +28,13 @@ glm::vec4 softLayer(const LightView& view, const LightState& light) {
     const double spread = perspective(light) ? size : std::tan(0.5 * size);
     const glm::vec2 scale(static_cast<float>(0.5 * view.projection[0][0] * spread),
                           static_cast<float>(0.5 * view.projection[1][1] * spread));
-    if (perspective(light))
-        return glm::vec4(scale, static_cast<float>(view.nearPlane), finiteOrZero(view.farPlane));
-    return glm::vec4(scale, 0.0f, static_cast<float>(view.farPlane - view.nearPlane));
+    return glm::vec4(scale, depthTerms);
 }
 
 glm::vec4 softCubeLayer(const PointLightViews& views, const LightState& light) {
-    const double size = light.settings.lightSize(light.type);
-    if (!(size > 0.0)) return glm::vec4(0.0f);
-    // The lookup offsets directions on the face's plane at unit distance: tangent units.
-    const float radius = static_cast<float>(size);
+    // The lookup offsets directions on the face's plane at unit distance: tangent units (0
+    // for a light without a size; the depth terms always, as softLayer's).
+    const float radius = static_cast<float>(std::max(light.settings.lightSize(light.type), 0.0));
     return glm::vec4(radius, radius, static_cast<float>(views.nearPlane), finiteOrZero(views.farPlane));
 }
 

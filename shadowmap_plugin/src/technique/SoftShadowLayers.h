@@ -2,8 +2,8 @@
 // The uniform block's entries a soft filter (pcss) reads for one light: how large the light
 // is in each layer's map coordinates and how the layer's window depth turns into distance
 // (shaders/shadow_data.glsl, softLayers, says what each component holds).
-// Each projection packs its layers with these; a light without a size packs zeros, and its
-// hard lookup never reads them.
+// Each projection packs its layers with these; a light without a size packs zero sizes (its
+// hard lookup never reads them) and the depth terms, which the moments lookups read.
 #include "plugin/ShadowBlock.h"
 #include "technique/LightState.h"
 

@@ -4,6 +4,7 @@
 #include "technique/depth/StandardDepth.h"
 #include "technique/depth/WooDepth.h"
 #include "technique/lookup/HardwareCompareLookup.h"
+#include "technique/lookup/MomentsLookup.h"
 #include "technique/lookup/PcssLookup.h"
 #include "technique/lookup/WidePcfLookup.h"
 #include "technique/projection/CascadedMapProjection.h"
@@ -34,8 +35,10 @@ const HardwareCompareLookup kNearest(Filter::Nearest, false);
 const HardwareCompareLookup kPcf(Filter::Pcf, true);
 const PcssLookup kPcss;
 const WidePcfLookup kWidePcf;
+const MomentsLookup kVsm(Filter::Vsm, 2, "vsm");
+const MomentsLookup kEvsm(Filter::Evsm, 4, "evsm");
 // A filter's first entry is its lookup; wide pcf is pcf's with a filter radius.
-const MapLookup* const kLookups[] = {&kNearest, &kPcf, &kPcss, &kWidePcf};
+const MapLookup* const kLookups[] = {&kNearest, &kPcf, &kPcss, &kWidePcf, &kVsm, &kEvsm};
 
 // The entry whose key matches, or nullptr.
 template <typename Entry, std::size_t N, typename Key, typename KeyOf>

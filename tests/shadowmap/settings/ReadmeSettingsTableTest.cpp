@@ -22,6 +22,8 @@ std::string defaultCell(const shadowmap::SettingKey& key) {
     if (value.is_null()) return key.defaultNote;
     if (value.is_string()) return "`" + value.get<std::string>() + "`";
     if (value.is_boolean()) return value.get<bool>() ? "`true`" : "`false`";
+    if (value.is_array()) return "[" + engine::formatNumber(value[0].get<double>()) + ", " +
+                                 engine::formatNumber(value[1].get<double>()) + "]";
     return engine::formatNumber(value.get<double>());
 }
 

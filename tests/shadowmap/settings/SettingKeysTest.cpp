@@ -28,7 +28,7 @@ TEST(SettingKeys, EveryChoiceParsesAndPrintsBackTheSame) {
     EXPECT_EQ(shadowmap::settingKey("variant").choices,
               (std::vector<std::string>{"standard", "woo", "backface", "none"}));
     EXPECT_EQ(shadowmap::settingKey("depth_format").choices, (std::vector<std::string>{"d16", "d24", "d32f"}));
-    EXPECT_EQ(shadowmap::settingKey("filter").choices, (std::vector<std::string>{"nearest", "pcf", "pcss"}));
+    EXPECT_EQ(shadowmap::settingKey("filter").choices, (std::vector<std::string>{"nearest", "pcf", "pcss", "vsm", "evsm"}));
 }
 
 TEST(SettingKeys, DefaultsAreTheDefaults) {

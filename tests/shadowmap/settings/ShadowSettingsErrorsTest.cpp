@@ -51,7 +51,8 @@ const double kInfinity = std::numeric_limits<double>::infinity();
 TEST(ShadowSettingsErrors, UnknownKeyListsTheKnownOnes) {
     std::string known;
     for (const shadowmap::SettingKey& key : shadowmap::settingKeys()) known += (known.empty() ? "" : ", ") + key.name;
-    EXPECT_EQ(known, "variant, resolution, depth_format, filter, filter_taps, filter_radius, normal_offset, polygon_offset, dimming, near_plane, far_plane, "
+    EXPECT_EQ(known, "variant, resolution, depth_format, filter, filter_taps, filter_radius, bleed_reduction, evsm_exponents, "
+                     "moments_mipmaps, normal_offset, polygon_offset, dimming, near_plane, far_plane, "
                      "reversed_z, polygon_offset_clamp, cascades, cascade_lambda, cascade_blend, stable, shadow_distance, shadow_fade, "
                      "light_radius, angular_diameter, cull_unseen_casters, projection, lispsm_n_scale");
     expectNamed({"unknown key", {{"colour", "red"}}, "colour", "unknown key (known: " + known + ")"});
@@ -83,7 +84,7 @@ TEST(ShadowSettingsErrors, BadChoicesNameTheKnownValues) {
     expectNamed({"variant type", {{"variant", 3}}, "variant", "must be a string"});
     expectNamed({"depth format", {{"depth_format", "d32"}}, "depth_format",
                  "unknown depth format \"d32\" (known: d16, d24, d32f)"});
-    expectNamed({"filter", {{"filter", "linear"}}, "filter", "unknown filter \"linear\" (known: nearest, pcf, pcss)"});
+    expectNamed({"filter", {{"filter", "linear"}}, "filter", "unknown filter \"linear\" (known: nearest, pcf, pcss, vsm, evsm)"});
     expectNamed({"reversed_z type", {{"reversed_z", "yes"}}, "reversed_z", "must be true or false"});
 }
 
@@ -165,16 +166,21 @@ TEST(ShadowSettingsErrors, FilterRadiusIsInRange) {
 
 // pcss without a size would silently be a hard shadow: an error naming the key to set, for
 // the light's own type; a light without a shadow needs no size.
+namespace {
+// checkFilterForType's message for these settings on a light of this type; "no error" if none.
+std::string filterErrorFor(const nlohmann::json& json, engine::Light::Type type) {
+    try {
+        shadowmap::checkFilterForType(shadowmap::parseSettings(json, kSource, kObject), type, kSource, kObject);
+    } catch (const engine::InputError& error) {
+        return error.what();
+    }
+    return "no error";
+}
+} // namespace
+
 TEST(ShadowSettingsErrors, PcssOnALightWithoutASizeIsNamed) {
     using Type = engine::Light::Type;
-    auto messageFor = [](const nlohmann::json& json, Type type) -> std::string {
-        try {
-            shadowmap::checkFilterForType(shadowmap::parseSettings(json, kSource, kObject), type, kSource, kObject);
-        } catch (const engine::InputError& error) {
-            return error.what();
-        }
-        return "no error";
-    };
+    const auto messageFor = filterErrorFor;
     const std::string prefix = std::string(kSource) + ": " + kObject + ".filter: \"pcss\" softens the shadow by the "
                                                                       "light's size, and this light has none: set ";
     EXPECT_EQ(messageFor({{"filter", "pcss"}}, Type::Spot), prefix + "light_radius, or use filter \"pcf\"");
@@ -186,12 +192,39 @@ TEST(ShadowSettingsErrors, PcssOnALightWithoutASizeIsNamed) {
     EXPECT_EQ(messageFor({{"filter", "pcss"}, {"angular_diameter", 0.01}}, Type::Directional), "no error");
     EXPECT_EQ(messageFor({{"filter", "pcss"}, {"variant", "none"}}, Type::Spot), "no error");
     // filter_radius widens pcf only: with another filter it would silently do nothing.
-    const std::string radius = std::string(kSource) + ": " + kObject + ".filter_radius: widens pcf's kernel, and ";
+    const std::string radius = std::string(kSource) + ": " + kObject +
+                               ".filter_radius: widens pcf's kernel and blurs vsm's and evsm's moments, and ";
     EXPECT_EQ(messageFor({{"filter", "nearest"}, {"filter_radius", 2}}, Type::Spot),
               radius + "this light's filter is \"nearest\": use filter \"pcf\", or filter_radius 0");
     EXPECT_NE(messageFor({{"filter", "pcss"}, {"light_radius", 0.1}, {"filter_radius", 2}}, Type::Spot), "no error");
     EXPECT_EQ(messageFor({{"filter", "pcf"}, {"filter_radius", 2}}, Type::Spot), "no error");
     EXPECT_EQ(messageFor({{"filter", "nearest"}, {"filter_radius", 0}}, Type::Spot), "no error");
+    EXPECT_EQ(messageFor({{"filter", "vsm"}, {"filter_radius", 2}}, Type::Spot), "no error");
+    EXPECT_EQ(messageFor({{"filter", "evsm"}, {"filter_radius", 2}}, Type::Point), "no error");
+}
+
+TEST(ShadowSettingsErrors, MomentsFiltersNeedALinearFiniteDepth) {
+    using Type = engine::Light::Type;
+    const auto messageFor = filterErrorFor;
+    // lispsm's depth is not linear in the distance from the light.
+    const std::string lispsm = messageFor({{"filter", "vsm"}, {"projection", "lispsm"}}, Type::Directional);
+    EXPECT_NE(lispsm.find(std::string(kObject) + ".projection: \"lispsm\" warps"), std::string::npos) << lispsm;
+    EXPECT_EQ(messageFor({{"filter", "evsm"}, {"projection", "lispsm"}, {"variant", "none"}}, Type::Directional),
+              "no error");
+    // A perspective map's moments are fractions of far - near: an infinite far has none.
+    for (const nlohmann::json& infinite :
+         {nlohmann::json{{"filter", "vsm"}, {"far_plane", "infinite"}},
+          nlohmann::json{{"filter", "evsm"}, {"depth_format", "d32f"}, {"reversed_z", true}}}) {
+        const std::string message = messageFor(infinite, Type::Point);
+        EXPECT_NE(message.find(std::string(kObject) + ".far_plane: "), std::string::npos) << message;
+        EXPECT_NE(message.find("set far_plane"), std::string::npos) << message;
+    }
+    EXPECT_EQ(messageFor({{"filter", "evsm"}, {"depth_format", "d32f"}, {"reversed_z", true}, {"far_plane", 40}},
+                         Type::Spot),
+              "no error");
+    // A directional light's depth is linear and its far finite, whatever the settings.
+    EXPECT_EQ(messageFor({{"filter", "vsm"}, {"depth_format", "d32f"}, {"reversed_z", true}}, Type::Directional),
+              "no error");
 }
 
 TEST(ShadowSettingsErrors, PolygonOffsetIsTwoFiniteNumbers) {

@@ -34,6 +34,9 @@ std::vector<KeyChange> oneChangePerKey() {
         {"filter_taps", [](ShadowSettings& s) { s.filterTaps = 40; }},
         {"filter_radius", [](ShadowSettings& s) { s.filterRadius = 2.73; }},
         {"normal_offset", [](ShadowSettings& s) { s.normalOffset = 1.37; }},
+        {"bleed_reduction", [](ShadowSettings& s) { s.bleedReduction = 0.37; }},
+        {"evsm_exponents", [](ShadowSettings& s) { s.evsmExponents = glm::vec2(33.3f, 4.3f); }},
+        {"moments_mipmaps", [](ShadowSettings& s) { s.momentsMipmaps = false; }},
         {"polygon_offset", [](ShadowSettings& s) { s.polygonOffset = glm::vec2(1.1f, 4.3f); }},
         {"dimming", [](ShadowSettings& s) { s.dimming = 0.73f; }},
         {"near_plane", [](ShadowSettings& s) { s.nearPlane = 0.1; }},
@@ -69,7 +72,9 @@ TEST(ShadowSettingsRoundTrip, DefaultsPrintAsDocumented) {
     // planes, no explicit offset, no reversal, no clamp, no shadow distance, a light without
     // a size, casters whose shadow nobody sees left out.
     const nlohmann::json expected = {{"variant", "standard"}, {"resolution", 2048}, {"depth_format", "d24"},
-                                     {"filter", "pcf"},       {"filter_taps", 16},      {"filter_radius", 0.0},   {"normal_offset", 0.25},   {"dimming", 0.4},     {"reversed_z", false},
+                                     {"filter", "pcf"},       {"filter_taps", 16},      {"filter_radius", 0.0},   {"normal_offset", 0.25},
+                                     {"bleed_reduction", 0.2},     {"evsm_exponents", {40.0, 5.0}},
+                                     {"moments_mipmaps", true},    {"dimming", 0.4},     {"reversed_z", false},
                                      {"polygon_offset_clamp", 0.0}, {"cascades", "auto"},
                                      {"cascade_lambda", 0.75},     {"cascade_blend", 0.0},
                                      {"stable", true},             {"shadow_distance", 0.0},

@@ -450,12 +450,12 @@ TEST(ViewerState, KeysCycleTheSelectedLightsSettings) {
     EXPECT_EQ(scene.lights[1].extras["shadow"]["resolution"], 512);
     for (int i = 0; i < 3; ++i) state.addDimming(0.05);  // 0.4 -> 0.55, rounded to 0.01
     EXPECT_EQ(scene.lights[1].extras["shadow"]["dimming"], 0.55);
-    state.toggleFilter();
+    state.toggleFilter();  // pcf -> vsm: pcss needs a size this light has not
     state.cycleDepthFormat();  // d24 -> d32f
     const nlohmann::json saved = state.savedShadow(1);
     // The variant was never chosen for this light: it stays the config's.
     EXPECT_EQ(saved, nlohmann::json({{"resolution", 512}, {"depth_format", "d32f"},
-                                     {"filter", "nearest"}, {"dimming", 0.55}, {"near_plane", 0.5}}));
+                                     {"filter", "vsm"}, {"dimming", 0.55}, {"near_plane", 0.5}}));
     EXPECT_TRUE(state.select("key"));
     EXPECT_FALSE(state.select("moon"));
     EXPECT_EQ(state.selected(), 0);
