@@ -112,6 +112,11 @@ bool lists(const std::vector<std::string>& filters, shadowmap::Filter filter) {
     return std::find(filters.begin(), filters.end(), shadowmap::toString(filter)) != filters.end();
 }
 
+// Whether --filters lists a filter that reads depth moments (vsm, evsm).
+bool listsMoments(const std::vector<std::string>& filters) {
+    return lists(filters, shadowmap::Filter::Vsm) || lists(filters, shadowmap::Filter::Evsm);
+}
+
 // Axes that would multiply no row are refused rather than ignored: the sweep would not
 // measure what the command line asked for.
 void checkAxes(const BenchOptions& options) {
@@ -121,13 +126,18 @@ void checkAxes(const BenchOptions& options) {
                                     " and " + std::to_string(options.angularDiameters.size()) +
                                     " values; the k-th of each make the k-th light size step, so list as many of each");
     const bool pcf = lists(options.filters, shadowmap::Filter::Pcf);
-    if (!options.filterRadii.empty() && !pcf)
-        throw std::invalid_argument("--filter-radii: only pcf has a filter radius, and --filters lists no pcf");
+    const bool moments = listsMoments(options.filters);
+    if (!options.filterRadii.empty() && !pcf && !moments)
+        throw std::invalid_argument("--filter-radii: only pcf, vsm and evsm have a filter radius, and --filters lists "
+                                    "none of them");
     const bool widePcf = pcf && std::any_of(options.filterRadii.begin(), options.filterRadii.end(),
                                             [](double radius) { return radius > 0.0; });
     if (!options.filterTaps.empty() && !widePcf && !lists(options.filters, shadowmap::Filter::Pcss))
         throw std::invalid_argument("--filter-taps: only pcss and pcf with a --filter-radii value above 0 take taps, "
                                     "and the sweep has neither");
+    if (!options.bleedReductions.empty() && !moments)
+        throw std::invalid_argument("--bleed-reductions: only vsm and evsm have a bleed reduction, and --filters lists "
+                                    "neither");
     if (!options.stables.empty() && !options.projections.empty() &&
         std::all_of(options.projections.begin(), options.projections.end(),
                     [](shadowmap::Projection projection) { return projection == shadowmap::Projection::Lispsm; }))
@@ -167,9 +177,12 @@ const char* benchUsage() {
         "                       spot and point lights light_radius R[k] (world units), directional\n"
         "                       lights angular_diameter A[k] (radians); both given: equal lengths;\n"
         "                       one given: the other type of light keeps its own size\n"
-        "  [--filter-radii F,...] pcf rows only: filter_radius " + bounds("filter_radius") + " texels\n"
+        "  [--filter-radii F,...] pcf, vsm and evsm rows: filter_radius " + bounds("filter_radius") +
+        " texels (pcf: the disk's\n"
+        "                       radius; vsm, evsm: the moments' box blur, texels each side)\n"
         "  [--filter-taps T,...] pcss rows and pcf rows with a filter radius > 0: filter_taps " +
         bounds("filter_taps") + "\n"
+        "  [--bleed-reductions B,...] vsm and evsm rows only: bleed_reduction " + bounds("bleed_reduction") + "\n"
         "  [--normal-offsets N,...] every row: normal_offset " + bounds("normal_offset") + " texels\n"
         "  Directional lights only (each setting still applies to all of a scene's lights: a spot or\n"
         "  point light keeps its own value, and its row is written once, for the first value listed,\n"
@@ -181,10 +194,12 @@ const char* benchUsage() {
         "                       so lispsm rows keep the scene's value, which the plugin ignores there;\n"
         "                       one map (cascades 1 without a shadow_distance) is fitted either way,\n"
         "                       so its stable and unstable rows agree but for timing noise\n"
-        "  A step a scene's lights refuse (pcss at a size of 0, pcss with lispsm) is left out with one note.\n"
+        "  A step a scene's lights refuse (pcss at a size of 0, pcss, vsm or evsm with lispsm, vsm or\n"
+        "  evsm on a spot or point light with an infinite far plane) is left out with one note.\n"
         "  Labels (progress, summary, plot) add what is set: lr<R> ad<A> (a size step; per light in\n"
-        "  the summary and plot: size<S>, the size it had), fr<F>, taps<T>, no<N>, uniform|lispsm,\n"
-        "  c<1..4|auto>, stable|unstable, e.g. \"standard 1024 d24 pcss lr0.1 ad0.05 taps32 no0.25\",\n"
+        "  the summary and plot: size<S>, the size it had), fr<F>, taps<T>, br<B>, no<N>,\n"
+        "  uniform|lispsm, c<1..4|auto>, stable|unstable, e.g.\n"
+        "  \"standard 1024 d24 pcss lr0.1 ad0.05 taps32 no0.25\", \"standard 1024 d24 vsm fr2 br0.2\",\n"
         "  \"woo 2048 d24 pcf lispsm c2\", \"standard 2048 d24 pcf uniform cauto unstable\".\n"
         "\n"
         "Renders every scene with every combination of the listed settings applied to all of its\n"
@@ -194,13 +209,14 @@ const char* benchUsage() {
         "                       frame_ms,acne,leak,error,error_noedge,area_acne,area_leak,area_error,\n"
         "                       shimmer,near_error,near_error_noedge,light_size,filter_radius,\n"
         "                       filter_taps,normal_offset,soft_error,soft_error_noedge,penumbra_error,\n"
-        "                       texel_m_mean,texel_m_p95,projection,cascades,stable\n"
+        "                       texel_m_mean,texel_m_p95,projection,cascades,stable,bleed_reduction\n"
         "                       (errors in percent; light_size: the radius or angular diameter the\n"
         "                       light had, 0: none; filter_radius, filter_taps, normal_offset,\n"
-        "                       projection, cascades, stable: empty where not swept (projection,\n"
-        "                       cascades, stable: always on spot and point lights' rows); soft_*,\n"
-        "                       penumbra_error: against the soft truth, the visible fraction of the\n"
-        "                       light, for a light with a size only;\n"
+        "                       projection, cascades, stable, bleed_reduction: empty where not swept\n"
+        "                       or not applying (projection, cascades, stable: always on spot and\n"
+        "                       point lights' rows; bleed_reduction: on rows other than vsm, evsm);\n"
+        "                       soft_*, penumbra_error: against the soft truth, the visible fraction\n"
+        "                       of the light, for a light with a size only;\n"
         "                       texel_m_*: a map texel's size on screen in pixels, mean and 95th\n"
         "                       percentile over the evaluated pixels)\n"
         "  DIR/summary.md       per light: the most accurate setting within 2, 5, 10, 20, 50 ms of\n"
@@ -208,7 +224,8 @@ const char* benchUsage() {
         "                       soft error for a light with a size, else the area error)\n"
         "  DIR/time_vs_error.gp and .png  (one panel per scene; the png needs gnuplot)\n"
         "\n"
-        "Defaults (the default sweep: 324 rows, about 6 minutes on 2 cores):\n"
+        "Defaults (the default sweep: 540 rows; its 324 rows before vsm and evsm took about 6 minutes\n"
+        "on 2 cores):\n"
         "  --config   <source>/content/engine.json (installed: <prefix>/share/shadow-engine/engine.json)\n"
         "  --scene    <source>/content/scenes/showcase.gltf and, when assimp-testmodels is\n"
         "             installed, /usr/share/assimp/models/glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb;\n"
@@ -257,6 +274,7 @@ BenchOptions parseBenchOptions(int argc, char** argv) {
         else if (flag == "--angular-diameters") options.angularDiameters = parseSettingNumbers(flag, value, "angular_diameter");
         else if (flag == "--filter-radii") options.filterRadii = parseSettingNumbers(flag, value, "filter_radius");
         else if (flag == "--filter-taps") options.filterTaps = parseSettingIntegers(flag, value, "filter_taps");
+        else if (flag == "--bleed-reductions") options.bleedReductions = parseSettingNumbers(flag, value, "bleed_reduction");
         else if (flag == "--normal-offsets") options.normalOffsets = parseSettingNumbers(flag, value, "normal_offset");
         else if (flag == "--projections") options.projections = parseProjections(flag, value);
         else if (flag == "--cascades") options.cascades = parseCascades(flag, value);

@@ -31,8 +31,9 @@ struct BenchOptions {
     // (spot and point lights take the radius, directional lights the diameter); given both,
     // the lists have one length; given one, the other type of light keeps its own size.
     std::vector<double> lightRadii, angularDiameters;
-    std::vector<double> filterRadii;  // --filter-radii: pcf rows only
+    std::vector<double> filterRadii;  // --filter-radii: pcf, vsm and evsm rows (vsm, evsm: the moments' blur)
     std::vector<int> filterTaps;      // --filter-taps: pcss rows and pcf rows with a filter radius > 0
+    std::vector<double> bleedReductions;  // --bleed-reductions: vsm and evsm rows only
     std::vector<double> normalOffsets;  // --normal-offsets: every row
     // Directional lights only (a spot or point light keeps its own value, and its row is
     // written once, not once per value): --projections uniform,lispsm; --cascades auto,1..4

@@ -19,14 +19,15 @@ struct ShadowSetting {
     std::string variant;  // standard | woo | backface
     int resolution = 0;   // texels per side
     std::string depthFormat;  // d16 | d24 | d32f
-    std::string filter;       // nearest | pcf | pcss
+    std::string filter;       // nearest | pcf | pcss | vsm | evsm
     // The optional axes (SweepAxes.h); unset: the key is not written, so the light keeps the
     // value its scene or the engine config gives it. (Initialised, so that the four-field
     // brace lists the sweep builds settings with need not spell them out.)
     std::optional<double> lightRadius = std::nullopt;      // spot and point lights, world units
     std::optional<double> angularDiameter = std::nullopt;  // directional lights, radians
-    std::optional<double> filterRadius = std::nullopt;     // pcf only, texels
+    std::optional<double> filterRadius = std::nullopt;     // pcf, vsm, evsm: texels (vsm, evsm: the moments' blur)
     std::optional<int> filterTaps = std::nullopt;          // pcss, and pcf with a filter radius
+    std::optional<double> bleedReduction = std::nullopt;   // vsm, evsm only
     std::optional<double> normalOffset = std::nullopt;     // texels
     // Directional lights only (spot and point lights keep their own): the projection, the
     // cascade count (shadowmap::kAutoCascades for "auto"), and whether cascades are stable.
@@ -41,9 +42,10 @@ struct ShadowSetting {
     bool operator==(const ShadowSetting&) const = default;
 
     // "woo 2048 d24 pcf", then what the sweep set: "lr0.1 ad0.05" (light radius, angular
-    // diameter), "fr2" (filter radius), "taps32", "no0.25" (normal offset), "uniform" or
-    // "lispsm" (projection), "c2" or "cauto" (cascades), "stable" or "unstable", e.g.
-    // "standard 1024 d24 pcss lr0.1 ad0.05 taps32 no0.25" or "woo 2048 d24 pcf lispsm c2".
+    // diameter), "fr2" (filter radius), "taps32", "br0.2" (bleed reduction), "no0.25"
+    // (normal offset), "uniform" or "lispsm" (projection), "c2" or "cauto" (cascades),
+    // "stable" or "unstable", e.g. "standard 1024 d24 pcss lr0.1 ad0.05 taps32 no0.25",
+    // "standard 1024 d24 vsm fr2 br0.2" or "woo 2048 d24 pcf lispsm c2".
     std::string label() const { return labelWithSize(sizeLabel()); }
 
     // The size step's part of the label: " lr0.1 ad0.05", "" without one.
@@ -52,7 +54,8 @@ struct ShadowSetting {
     // The label with `size` (a light size part) where the sizes stand.
     std::string labelWithSize(const std::string& size) const {
         return variant + " " + std::to_string(resolution) + " " + depthFormat + " " + filter + size +
-               labelPart(" fr", filterRadius) + labelPart(" taps", filterTaps) + labelPart(" no", normalOffset) +
+               labelPart(" fr", filterRadius) + labelPart(" taps", filterTaps) + labelPart(" br", bleedReduction) +
+               labelPart(" no", normalOffset) +
                (projection ? std::string(" ") + shadowmap::toString(*projection) : std::string()) +
                (cascades ? " c" + cascadesText(*cascades) : std::string()) +
                (stable ? (*stable ? " stable" : " unstable") : std::string());

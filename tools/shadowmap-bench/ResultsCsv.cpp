@@ -59,7 +59,8 @@ std::string resultsCsv(const std::vector<BenchRow>& rows) {
                engine::formatNumber(row.lightSize) + "," + optionalSetting(row.setting.filterRadius) + "," +
                optionalSetting(row.setting.filterTaps) + "," + optionalSetting(row.setting.normalOffset) + "," +
                optional(row.softError) + "," + optional(row.softErrorNoEdge) + "," + optional(row.penumbraError) + "," +
-               optional(row.texelMean) + "," + optional(row.texelP95) + "," + directionalAxes(row.setting) + "\n";
+               optional(row.texelMean) + "," + optional(row.texelP95) + "," + directionalAxes(row.setting) + "," +
+               optionalSetting(row.setting.bleedReduction) + "\n";
     }
     return csv;
 }

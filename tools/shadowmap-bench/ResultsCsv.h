@@ -10,7 +10,8 @@
 // size of the light's map texels in pixels, mean and 95th percentile over the evaluation
 // set, docs/metrics.md; empty where no pixel has one), projection ("uniform" | "lispsm"),
 // cascades ("auto" | 1..4) and stable ("true" | "false"): the directional lights' axes,
-// empty where the sweep did not set them, and always on a spot or point light's rows.
+// empty where the sweep did not set them, and always on a spot or point light's rows;
+// bleed_reduction (vsm and evsm rows with --bleed-reductions; empty elsewhere).
 // Written here, read back by --merge (Shards.h).
 #include "BenchRow.h"
 
@@ -24,8 +25,8 @@ inline constexpr const char* kResultsCsvHeader =
     "scene,light,variant,resolution,depth_format,filter,shadow_ms,frame_ms,acne,leak,error,error_noedge,"
     "area_acne,area_leak,area_error,shimmer,near_error,near_error_noedge,"
     "light_size,filter_radius,filter_taps,normal_offset,soft_error,soft_error_noedge,penumbra_error,"
-    "texel_m_mean,texel_m_p95,projection,cascades,stable";
-inline constexpr std::size_t kResultsCsvColumns = 30;
+    "texel_m_mean,texel_m_p95,projection,cascades,stable,bleed_reduction";
+inline constexpr std::size_t kResultsCsvColumns = 31;
 
 std::string resultsCsv(const std::vector<BenchRow>& rows);
 

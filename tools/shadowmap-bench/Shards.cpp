@@ -124,6 +124,7 @@ std::vector<BenchRow> parseResultsCsv(const std::string& text, const std::string
         row.lightSize = number(f[18], file, line);
         for (auto [field, figure] : {std::pair{15, &row.shimmer}, {16, &row.nearError}, {17, &row.nearErrorNoEdge},
                                      {19, &row.setting.filterRadius}, {21, &row.setting.normalOffset},
+                                     {30, &row.setting.bleedReduction},
                                      {22, &row.softError}, {23, &row.softErrorNoEdge}, {24, &row.penumbraError},
                                      {25, &row.texelMean}, {26, &row.texelP95}})
             if (!f[field].empty()) *figure = number(f[field], file, line);

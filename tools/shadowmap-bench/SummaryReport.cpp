@@ -102,7 +102,8 @@ std::string summaryMarkdown(const std::vector<BenchRow>& rows, const SweepDescri
             "(docs/soft-shadows.md). Ranking: a light with a size (light_size > 0) is ranked by its "
             "soft error, the truth that models that light; a point light by its area error. "
             "A setting's label adds what the sweep set and the light's size: size (radius or angular "
-            "diameter), fr (filter radius), taps, no (normal offset), and for a directional light its "
+            "diameter), fr (filter radius: pcf's disk, vsm's and evsm's blur), taps, br (bleed reduction), "
+            "no (normal offset), and for a directional light its "
             "projection (uniform, lispsm), c (cascades: a count or auto) and stable or unstable.\n\n";
     text += concat({"Machine: ", sweep.cpuModel, ", ", std::to_string(sweep.cores), " cores; ", sweep.glRenderer,
                     ", ", sweep.glVersion, ". Sweep wall time: ", format("%.0f", sweep.seconds), " s.\n\n"});

@@ -129,7 +129,9 @@ BenchScene loadBenchScene(const BenchOptions& options, const std::string& path, 
 
 // Why `bench`'s lights refuse `setting` (the plugin's message naming the first light that
 // does), or nullopt when all accept it: a soft filter needs each light to have a size (from
-// the size step, its extras.shadow or the config's defaults); filter_radius widens pcf only.
+// the size step, its extras.shadow or the config's defaults); filter_radius widens pcf and
+// blurs vsm's and evsm's moments only; vsm and evsm refuse lispsm and a spot or point
+// light's infinite far plane (shadowmap::checkFilterForType).
 std::optional<std::string> refusal(const BenchScene& bench, const ShadowSetting& setting,
                                    const shadowmap::ShadowSettings& defaults) {
     for (int instance = 0; instance < bench.shadowedLights; ++instance) {

@@ -51,6 +51,17 @@ bool isFilter(const ShadowSetting& setting, shadowmap::Filter filter) {
     return setting.filter == shadowmap::toString(filter);
 }
 
+// The filters that read depth moments (vsm, evsm): filter_radius blurs their moments, and
+// bleed_reduction cuts their light bleeding.
+bool readsMoments(const ShadowSetting& setting) {
+    return isFilter(setting, shadowmap::Filter::Vsm) || isFilter(setting, shadowmap::Filter::Evsm);
+}
+
+// The filters that read filter_radius: pcf's disk, vsm's and evsm's blur.
+bool takesFilterRadius(const ShadowSetting& setting) {
+    return isFilter(setting, shadowmap::Filter::Pcf) || readsMoments(setting);
+}
+
 // The filters that read filter_taps: pcss, and pcf widened by a filter radius.
 bool takesTaps(const ShadowSetting& setting) {
     return isFilter(setting, shadowmap::Filter::Pcss) ||
@@ -76,11 +87,13 @@ std::vector<ShadowSetting> expandAxes(const std::vector<ShadowSetting>& settings
     std::vector<ShadowSetting> out =
         expand(settings, [&](const ShadowSetting& setting) { return perSizeStep(setting, options); });
     out = expand(out, [&](const ShadowSetting& setting) {
-        return perValue(setting, options.filterRadii, &ShadowSetting::filterRadius,
-                        isFilter(setting, shadowmap::Filter::Pcf));
+        return perValue(setting, options.filterRadii, &ShadowSetting::filterRadius, takesFilterRadius(setting));
     });
     out = expand(out, [&](const ShadowSetting& setting) {
         return perValue(setting, options.filterTaps, &ShadowSetting::filterTaps, takesTaps(setting));
+    });
+    out = expand(out, [&](const ShadowSetting& setting) {
+        return perValue(setting, options.bleedReductions, &ShadowSetting::bleedReduction, readsMoments(setting));
     });
     out = expand(out, [&](const ShadowSetting& setting) {
         return perValue(setting, options.normalOffsets, &ShadowSetting::normalOffset, true);
@@ -127,6 +140,7 @@ nlohmann::json lightShadow(const ShadowSetting& setting, engine::Light::Type typ
     write(directional ? "angular_diameter" : "light_radius", directional ? setting.angularDiameter : setting.lightRadius);
     write("filter_radius", setting.filterRadius);
     write("filter_taps", setting.filterTaps);
+    write("bleed_reduction", setting.bleedReduction);
     write("normal_offset", setting.normalOffset);
     if (directional) {
         if (setting.projection) shadow["projection"] = shadowmap::toString(*setting.projection);

@@ -1,6 +1,6 @@
 #pragma once
 // The sweep's optional axes (--light-radii with --angular-diameters, --filter-radii,
-// --filter-taps, --normal-offsets, and the directional lights' --projections, --cascades,
+// --filter-taps, --bleed-reductions, --normal-offsets, and the directional lights' --projections, --cascades,
 // --stables; BenchOptions.h) and how one setting is written into a
 // light: the one place that knows which axis applies to which row and which key to which
 // type of light.
@@ -16,14 +16,15 @@
 namespace shadowmap_bench {
 
 // Every setting of `settings` times the axes that apply to it, in this order: each light size
-// step, each filter radius (pcf only), each tap count (pcss, and pcf with a filter radius
-// > 0), each normal offset, each projection, each cascade count, each stable value (rows
+// step, each filter radius (pcf, vsm, evsm), each tap count (pcss, and pcf with a filter
+// radius > 0), each bleed reduction (vsm, evsm), each normal offset, each projection, each cascade count, each stable value (rows
 // whose projection is not lispsm: a warp is never stable). An axis not given, or not applying, leaves the setting as it is
 // (the field unset), so with no axis given the list comes back unchanged.
 std::vector<ShadowSetting> expandAxes(const std::vector<ShadowSetting>& settings, const BenchOptions& options);
 
 // The keys of a light's extras.shadow that `setting` writes for a light of `type`: variant,
-// resolution, depth_format, filter, and each optional field that is set; of the size step
+// resolution, depth_format, filter, and each optional field that is set (filter_radius,
+// filter_taps, bleed_reduction, normal_offset); of the size step
 // only the key of the light's type (light_radius for spot and point, angular_diameter for
 // directional), since the plugin refuses the other; projection, cascades and stable for a
 // directional light only (a spot or point light refuses projection "lispsm").

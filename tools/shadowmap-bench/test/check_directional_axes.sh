@@ -19,7 +19,7 @@ sweep() {
 sweep --out "$out/single" 2> "$out/log" || { cat "$out/log"; exit 1; }
 
 csv=$out/single/results.csv
-header='scene,light,variant,resolution,depth_format,filter,shadow_ms,frame_ms,acne,leak,error,error_noedge,area_acne,area_leak,area_error,shimmer,near_error,near_error_noedge,light_size,filter_radius,filter_taps,normal_offset,soft_error,soft_error_noedge,penumbra_error,texel_m_mean,texel_m_p95,projection,cascades,stable'
+header='scene,light,variant,resolution,depth_format,filter,shadow_ms,frame_ms,acne,leak,error,error_noedge,area_acne,area_leak,area_error,shimmer,near_error,near_error_noedge,light_size,filter_radius,filter_taps,normal_offset,soft_error,soft_error_noedge,penumbra_error,texel_m_mean,texel_m_p95,projection,cascades,stable,bleed_reduction'
 [[ "$(head -n 1 "$csv")" == "$header" ]] || { echo "bad header: $(head -n 1 "$csv")"; exit 1; }
 # The sun: uniform x 2 cascade counts x 2 stables + lispsm x 2 cascade counts (stable is not
 # swept for a warp) = 6 rows; the spot and point lights one row each: 8 rows.
@@ -27,9 +27,9 @@ rows=$(tail -n +2 "$csv" | wc -l)
 [[ $rows -eq 8 ]] || { echo "expected 8 rows (6 sun, 1 spot, 1 point), got $rows"; cat "$csv"; exit 1; }
 # Columns 28-30: projection, cascades, stable. The sun's rows: each combination once, lispsm
 # rows without stable; the spot and point lights' rows: all three empty. Every row is
-# measured (positive time, errors in [0, 100]) and has 30 fields.
+# measured (positive time, errors in [0, 100]) and has 31 fields.
 awk -F, 'NR > 1 {
-  if (NF != 30) { print NF " fields, expected 30: " $0; bad = 1 }
+  if (NF != 31) { print NF " fields, expected 31: " $0; bad = 1 }
   if (!($7 > 0)) { print "no shadow time: " $0; bad = 1 }
   for (i = 9; i <= 15; ++i) if (!($i >= 0 && $i <= 100)) { print "error out of [0,100]: " $0; bad = 1 }
   if ($2 == "sun") {

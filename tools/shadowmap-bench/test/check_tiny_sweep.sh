@@ -12,7 +12,7 @@ trap 'rm -rf "$out"' EXIT
   --width 64 --height 48 --frames 1 --out "$out"
 
 csv=$out/results.csv
-header='scene,light,variant,resolution,depth_format,filter,shadow_ms,frame_ms,acne,leak,error,error_noedge,area_acne,area_leak,area_error,shimmer,near_error,near_error_noedge,light_size,filter_radius,filter_taps,normal_offset,soft_error,soft_error_noedge,penumbra_error,texel_m_mean,texel_m_p95,projection,cascades,stable'
+header='scene,light,variant,resolution,depth_format,filter,shadow_ms,frame_ms,acne,leak,error,error_noedge,area_acne,area_leak,area_error,shimmer,near_error,near_error_noedge,light_size,filter_radius,filter_taps,normal_offset,soft_error,soft_error_noedge,penumbra_error,texel_m_mean,texel_m_p95,projection,cascades,stable,bleed_reduction'
 [[ "$(head -n 1 "$csv")" == "$header" ]] || { echo "bad header: $(head -n 1 "$csv")"; exit 1; }
 rows=$(tail -n +2 "$csv" | wc -l)
 [[ $rows -eq 3 ]] || { echo "expected 3 rows (the showcase's lights), got $rows"; exit 1; }
@@ -35,9 +35,10 @@ awk -F, 'NR > 1 {
   for (i = 20; i <= 25; ++i) if ($i != "") { print "column " i " filled without its axis or a sized light: " $0; bad = 1 }
   # Every light has evaluated pixels, so a texel size on screen (mean, p95): positive numbers.
   for (i = 26; i <= 27; ++i) if ($i !~ /^[0-9]+(\.[0-9]+)?$/ || !($i > 0)) { print "texel m not a positive number: " $i " in " $0; bad = 1 }
-  # projection, cascades, stable: empty without --projections, --cascades, --stables.
-  for (i = 28; i <= 30; ++i) if ($i != "") { print "column " i " filled without its axis: " $0; bad = 1 }
-  if (NF != 30) { print NF " fields, expected 30: " $0; bad = 1 }
+  # projection, cascades, stable, bleed_reduction: empty without --projections, --cascades,
+  # --stables, --bleed-reductions.
+  for (i = 28; i <= 31; ++i) if ($i != "") { print "column " i " filled without its axis: " $0; bad = 1 }
+  if (NF != 31) { print NF " fields, expected 31: " $0; bad = 1 }
 } END { exit bad }' "$csv"
 [[ -s $out/summary.md ]] || { echo "summary.md missing or empty"; exit 1; }
 # It cites the metric definitions by a file the repository has.
