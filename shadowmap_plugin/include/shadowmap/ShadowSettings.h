@@ -30,13 +30,15 @@
 //   filter_radius   0 .. 16 texels: pcf over a disk of this       0 (one 2x2 tap)
 //                   radius (filter_taps rotated taps) instead of one 2x2 tap; vsm and
 //                   evsm: the moments' separable box blur, this many texels each side
-//   bleed_reduction 0 .. 0.95: vsm, evsm: the share of Chebyshev's  0.2
+//   bleed_reduction 0 .. 0.95: vsm, evsm: the share of Chebyshev's  0.3
 //                   bound cut off as light bleeding (the rest stretched to [0, 1])
 //   evsm_exponents  [positive, negative], each in (0, 40]: evsm's  [40, 5]
 //                   depth warps e^(c u) and -e^(-c u) (ShadowLimits.h says why 40)
-//   moments_mipmaps true: vsm and evsm 2D maps (spot, one            true
+//   moments_mipmaps true: vsm and evsm 2D maps (spot, one            false
 //                   directional map) are mipmapped and read trilinearly, anisotropically
-//                   where the GL can; cascades and cube maps read their first level
+//                   where the GL can; cascades and cube maps read their first level. Off
+//                   by default: on the showcase the coarser levels softened edges into
+//                   9x the spot's and 4x the sun's error (docs/filterable-maps.md)
 //   normal_offset   0 .. 8 texels: the lookup moves the receiver  0.25
 //                   along its normal by this many texels of the map at the receiver,
 //                   times the sine of the light's angle to the normal (none facing the
@@ -198,7 +200,7 @@ struct ShadowSettings {
     // whether a 2D map's moments are mipmapped.
     double bleedReduction = kDefaultBleedReduction;
     glm::vec2 evsmExponents{kDefaultEvsmExponents[0], kDefaultEvsmExponents[1]};
-    bool momentsMipmaps = true;
+    bool momentsMipmaps = false;
 
     // The offset a two-sided depth draw needs: the explicit one, else the standard
     // variant's default for this filter and depth direction.
