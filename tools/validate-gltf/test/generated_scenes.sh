@@ -9,7 +9,8 @@ here=$(cd "$(dirname "$0")" && pwd)
 scripts=$here/../../scripts
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-for generator in make_showcase.py make_masked_scenes.py make_outdoor.py make_animated_bench.py make_lamps.py; do
+for generator in make_showcase.py make_masked_scenes.py make_outdoor.py make_animated_bench.py make_lamps.py \
+    make_stacked_occluders.py; do
   python3 "$scripts/$generator" "$work" > /dev/null
 done
 "$node" "$here/../validate.mjs" --validator "$validator" "$work"
