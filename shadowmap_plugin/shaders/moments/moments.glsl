@@ -7,8 +7,11 @@
 // depth z. Moments of a window depth would not do: a perspective map's depth crowds toward 1
 // (d24 at 10 m of a 0.1 m near plane: 0.99), where E[z^2] - E[z]^2 cancels every digit of a
 // float. Orthographic maps (directional lights) are linear already; perspective ones (spot,
-// cube faces) give the distance d from near as a fraction of far - near, in forms without
-// cancellation: u = (d - n) / (f - n) = n z / (f - z (f - n)), reversed n (1 - z) / (z (f - n) + n).
+// cube faces) give the distance d from near as a fraction of far - near:
+// u = (d - n) / (f - n) = n z / (f - z (f - n)), reversed n (1 - z) / (z (f - n) + n). The
+// forward denominator cancels toward n as z nears 1, losing about log2(f / n) bits, as many
+// as the stored z's own spacing there already lost (tests/shadowmap/gl/MomentsPassTest.cpp
+// bounds it).
 // near, far: the layer's planes (perspective only; far finite, as the settings require).
 float momentsDepth(float z, bool perspective, bool reversed, float near, float far) {
     if (!perspective) return reversed ? 1.0 - z : z;

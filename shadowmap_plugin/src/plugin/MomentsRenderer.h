@@ -9,6 +9,8 @@
 
 #include <glm/glm.hpp>
 
+#include <map>
+
 namespace shadowmap {
 
 // How one layer's window depths become the moments' depth (shaders/moments/moments.glsl).
@@ -22,7 +24,8 @@ struct MomentsDepth {
 
 class MomentsRenderer {
 public:
-    // Compiles both programs: built on the first frame with a vsm or evsm light, never after.
+    // Compiles the blur; the first pass's program per kind of layer (vsm or evsm,
+    // perspective or not, reversed or not) is compiled with the first layer of its kind.
     MomentsRenderer();
 
     // The moments of layer `layer` of `mapLayers` (the map as a 2D array), box-blurred by
@@ -32,7 +35,10 @@ public:
     void blur(unsigned rows, float radius, glm::ivec2 step) const;
 
 private:
-    engine::gl::Program fromDepth_, blur_;
+    const engine::gl::Program& fromDepthProgram(const MomentsDepth& depth) const;
+
+    mutable std::map<unsigned, engine::gl::Program> fromDepth_;  // by kind of layer (kindOf)
+    engine::gl::Program blur_;
     // Texels as stored: no comparison (the depth map compares on its own state), and
     // complete whatever the source's filters (texelFetch of an incomplete texture reads 0).
     engine::gl::Sampler texelSampler_;
