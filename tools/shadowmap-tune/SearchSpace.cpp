@@ -129,14 +129,21 @@ std::array<long, 3> expectedCost(const Candidate& candidate) {
     // cascades "auto" (kAutoCascades, 0) is the count the view needs, at least one: counted
     // as one, or every auto setting's texels would be 0 and resolution would rank nothing.
     const long cascades = std::max(settings.cascades, 1);
-    const long texels = static_cast<long>(settings.resolution) * settings.resolution * passes * cascades;
-    // A 2x2 bilinear comparison reads 4 texels; pcss's blocker search reads fewer than its
-    // filter and grows with it, so it ranks nothing differently and is left out.
+    // vsm and evsm also render the moments from the depth map: one full-map pass, two with
+    // a blur (filter_radius > 0: rows, then columns; MomentsPasses.cpp).
+    const long momentsPasses =
+        shadowmap::readsMoments(settings.filter) ? (settings.filterRadius > 0.0 ? 2 : 1) : 0;
+    const long texels = static_cast<long>(settings.resolution) * settings.resolution * (passes + momentsPasses) * cascades;
+    // A 2x2 bilinear comparison reads 4 texels, and so does vsm's and evsm's one bilinear
+    // fetch of the moments (8 trilinear, with moments_mipmaps); pcss's blocker search reads
+    // fewer than its filter and grows with it, so it ranks nothing differently and is left out.
     constexpr long kBilinearTexels = 4;
     const bool tapped = settings.filter == shadowmap::Filter::Pcss ||
                         (settings.filter == shadowmap::Filter::Pcf && settings.filterRadius > 0.0);
-    const long taps = tapped ? kBilinearTexels * settings.filterTaps
-                             : settings.filter == shadowmap::Filter::Pcf ? kBilinearTexels : 1;
+    const long taps = tapped                                      ? kBilinearTexels * settings.filterTaps
+                      : settings.filter == shadowmap::Filter::Pcf ? kBilinearTexels
+                      : shadowmap::readsMoments(settings.filter)  ? kBilinearTexels * (settings.momentsMipmaps ? 2 : 1)
+                                                                  : 1;
     const long bytes = settings.depthFormat == shadowmap::DepthFormat::D16 ? 2 : settings.depthFormat == shadowmap::DepthFormat::D24 ? 3 : 4;
     return {texels, taps, bytes};
 }

@@ -38,7 +38,10 @@ struct SettingDimension {
 };
 
 // The values the user allows (--variants, --resolutions, --depth-formats, --filters,
-// --filter-taps).
+// --filter-taps). vsm and evsm are filters like the others: they keep the light's own
+// filter_radius, bleed_reduction and evsm_exponents (keys the tuner does not own), and a
+// light that refuses them (lispsm, a spot or point light's infinite far plane) never gets
+// them: the tuner checks every candidate as the plugin would (SceneMeasurer::valid).
 struct SearchLimits {
     std::vector<std::string> variants, depthFormats, filters;
     std::vector<int> resolutions;
@@ -75,10 +78,11 @@ std::string describe(const Candidate& candidate, const std::vector<SettingDimens
 bool usesPolygonOffset(const Candidate& candidate);
 
 // What a setting is expected to cost, from what it draws and reads rather than from a
-// measurement: compared lexicographically, the depth texels it renders (resolution squared
-// x passes x cascades; woo draws two passes), then the texels the filter reads (1 nearest,
-// 4 pcf, 4 per tap for pcss and wide pcf), then the depth
-// format's bytes. Measured times cannot rank settings of similar cost (one setting's times
+// measurement: compared lexicographically, the texels it renders (resolution squared
+// x passes x cascades; woo draws two depth passes, vsm and evsm one or, blurred, two
+// moments passes after the depth pass), then the texels the filter reads (1 nearest,
+// 4 pcf and one bilinear fetch of vsm's or evsm's moments, 8 trilinear, 4 per tap for pcss
+// and wide pcf), then the depth format's bytes. Measured times cannot rank settings of similar cost (one setting's times
 // scatter by 30 % and more between runs), and a choice that follows noise differs between
 // two runs, or between a shard and the single run; the search ranks by this where errors tie.
 std::array<long, 3> expectedCost(const Candidate& candidate);

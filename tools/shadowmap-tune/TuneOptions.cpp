@@ -21,6 +21,12 @@ constexpr int kDefaultOrbitViews = 4;
 // for a penumbra smoothed over a few pixels).
 const std::vector<int> kDefaultPcssTaps = {8, 16, 32};
 
+std::string joined(const std::vector<std::string>& items) {
+    std::string text;
+    for (const std::string& item : items) text += (text.empty() ? "" : ",") + item;
+    return text;
+}
+
 std::vector<std::string> knownVariants() {
     std::vector<std::string> variants = shadowmap::settingKey("variant").choices;
     std::erase(variants, shadowmap::toString(shadowmap::Variant::None));
@@ -42,6 +48,7 @@ ViewSpec parseViewSpec(const std::string& flag, const std::string& text) {
 }
 
 const char* tuneUsage() {
+    static const std::string filters = joined(shadowmap::settingKey("filter").choices);
     static const std::string defaultSize =
         std::to_string(tools::kDefaultImageWidth) + " --height " + std::to_string(tools::kDefaultImageHeight);
     static const std::string usage =
@@ -51,7 +58,7 @@ const char* tuneUsage() {
         "                  measured at it (a coarse map scores well on a small image and shows its\n"
         "                  texels on a large one); recorded in --out's asset.extras.shadowmap_tune\n"
         "  [--variants standard,woo,backface] [--resolutions 512,1024,2048]\n"
-        "  [--depth-formats d16,d24,d32f] [--filters nearest,pcf,pcss] [--filter-taps 8,16,32]\n"
+        "  [--depth-formats d16,d24,d32f] [--filters " + filters + "] [--filter-taps 8,16,32]\n"
         "  [--report REPORT.json]\n"
         "  [--key-light spot|point|directional] [--key-light-angles AZIMUTH,ELEVATION]   a scene\n"
         "                  without lights gets this key light (placed from its bounds as\n"
@@ -66,8 +73,11 @@ const char* tuneUsage() {
         "shadow passes per frame (--budget-ms), or the cheapest whose error is at most E percent\n"
         "(--max-error), over variant x resolution x depth format x filter (x filter taps for pcss,\n"
         "which only a light with a size takes), with the polygon and normal offsets fitted per\n"
-        "light. Error is acne + leak against ray-traced truth: the soft truth (the visible share\n"
-        "of the light) for a light with a size, else the area truth; pooled over the views:\n"
+        "light. vsm and evsm keep the light's own filter_radius (their blur) and bleed_reduction;\n"
+        "a setting the light refuses (pcss without a size, vsm or evsm with lispsm or a spot or\n"
+        "point light's infinite far plane, backface with open casters) is never tried. Error is\n"
+        "acne + leak against ray-traced truth: the soft truth (the visible share of the light)\n"
+        "for a light with a size, else the area truth; pooled over the views:\n"
         "every glTF camera, or N views around the scene. Writes the scene with each changed\n"
         "light's extras.shadow (every other byte kept when --out has the scene's container; the\n"
         "scene's buffers and images go with it to any folder or into a .glb) and prints\n"

@@ -244,6 +244,40 @@ TEST(TuneSearch, FilterTapsAreADimensionOfPcssOnly) {
     EXPECT_LT(expectedCost(coarse[1]), expectedCost(more));
 }
 
+// vsm and evsm are filters of the space like the others, without taps; their expected cost
+// counts the moments passes after the depth pass, so at equal error the search prefers the
+// filter that renders less (pcf), not the one that reads fewest texels.
+TEST(TuneSearch, MomentsFiltersAreCandidatesThatCostTheirPasses) {
+    SearchLimits limits{{"standard"}, {"d24"}, {"pcf", "vsm", "evsm"}, {1024, 2048}, {8, 16}};
+    const std::vector<SettingDimension> space = searchSpace(limits);
+    const std::vector<Candidate> coarse = coarseCandidates(space);
+    ASSERT_EQ(coarse.size(), 3u);
+    for (const Candidate& candidate : coarse) EXPECT_FALSE(candidate.contains("filter_taps"));
+    EXPECT_EQ(describe(coarse[1], space), "standard 1024 d24 vsm offset default");
+    EXPECT_EQ(describe(coarse[2], space), "standard 1024 d24 evsm offset default");
+    EXPECT_TRUE(usesPolygonOffset(coarse[1]));
+    EXPECT_EQ(refinedCandidates(space, coarse[1]).size(), 1u);  // 2048 only: no taps
+    const Candidate& pcf = coarse[0];
+    const Candidate& vsm = coarse[1];
+    const Candidate& evsm = coarse[2];
+    // One depth pass and one moments pass: dearer than pcf at its size, cheaper than the
+    // next size's depth pass alone (2 x 1024^2 < 2048^2).
+    EXPECT_LT(expectedCost(pcf), expectedCost(vsm));
+    EXPECT_EQ(expectedCost(vsm), expectedCost(evsm));
+    Candidate pcf2048 = pcf;
+    pcf2048["resolution"] = 2048;
+    EXPECT_LT(expectedCost(vsm), expectedCost(pcf2048));
+    // A blur is a second moments pass; mipmaps a trilinear read.
+    Candidate blurred = vsm;
+    blurred["filter_radius"] = 2;
+    EXPECT_LT(expectedCost(vsm), expectedCost(blurred));
+    EXPECT_EQ(expectedCost(blurred)[0], 3 * expectedCost(pcf)[0]);
+    Candidate mipmapped = vsm;
+    mipmapped["moments_mipmaps"] = true;
+    EXPECT_EQ(expectedCost(mipmapped)[0], expectedCost(vsm)[0]);
+    EXPECT_EQ(expectedCost(mipmapped)[1], 2 * expectedCost(pcf)[1]);
+}
+
 TEST(TuneSearch, KeepsTheCurrentSettingUnlessClearlyBeaten) {
     const Goal budget{Goal::Kind::Budget, 10.0};
     Measured current, choice;

@@ -28,6 +28,9 @@ test would compare ties, not variants.
                standard with its polygon offset clamped (GRAZING_CLAMP): the depth bias
                cannot grow with the floor's slope in the map, the floor shows acne, and
                only the normal offset removes it.
+  refusing.gltf  closed.gltf lit by a spot light whose far plane is infinite and a sun warped
+               by lispsm: lights that refuse vsm and evsm (their moments need a finite
+               depth range, and depth linear in the distance from the light).
 Each has two cameras (but sized_front, sized_side); the floor receives and casts nothing (it
 is open too).
 """
@@ -83,6 +86,10 @@ def main():
     sized = {**pinned, **SIZED_SETTING}
     for name, cameras in (("sized", ("front", "side")), ("sized_front", ("front",)), ("sized_side", ("side",))):
         scene(closed, shadow=sized, cameras=cameras).write(os.path.join(out, name + ".gltf"), name + ".bin")
+    refusing = scene(closed, shadow={**pinned, "far_plane": "infinite"})
+    refusing.light("sun", "directional", (4.0, 8.0, 3.0), (0.0, 0.0, 0.0), (1.0, 1.0, 1.0), 2.0,
+                   shadow={**pinned, "projection": "lispsm", "cascades": 1})
+    refusing.write(os.path.join(out, "refusing.gltf"), "refusing.bin")
     scene(closed[:1], shadow={**pinned, "variant": "standard", "polygon_offset_clamp": GRAZING_CLAMP},
           eye=GRAZING_EYE).write(
         os.path.join(out, "grazing.gltf"), "grazing.bin")
