@@ -4,11 +4,17 @@
 // point to the light (directional: the ray toward the light) crosses a box.
 //
 // Tolerance: pixels within 2 px of the analytic shadow edge are left out (a map texel
-// projects to up to ~1.5 px here and PCF blurs one more texel); of the rest at most 0.3%
-// may disagree by more than half. Measured on llvmpipe: 0 wrong pixels in all four scenes;
-// with the classic polygon offset (1, 4) of Kilgard's GDC 2000 slides the spot scene had 2.2% wrong (acne lines).
+// projects to up to ~1.5 px here and PCF blurs one more texel), plus 1.5 px per texel of a
+// moments map's blur; of the rest at most 0.3% may disagree by more than half. Measured on
+// llvmpipe: 0 wrong pixels in all four scenes, every variant and moments case; with the
+// classic polygon offset (1, 4) of Kilgard's GDC 2000 slides the spot scene had 2.2% wrong
+// (acne lines).
 #include "../../gl/GlTestContext.h"
 #include "AnalyticShadows.h"
+
+#include <cmath>
+#include <ostream>
+#include <string>
 
 namespace {
 
@@ -29,18 +35,52 @@ engine::FrameCamera camera() {
     return engine::test::cameraLooking({0, 16, 7}, {0, 0, 0.5}, kWidth, kHeight);
 }
 
-// Every light type under every variant: all of them must match the analytic truth.
+// One way of making and reading the map: a variant with pcf, or a moments filter (vsm,
+// evsm), blurred or not, with mipmaps or not (only a spot light's 2D map has levels).
+struct MaskCase {
+    const char* variant;
+    const char* filter = "pcf";
+    double filterRadius = 0.0;
+    bool mipmaps = false;
+};
+
+std::string caseName(const ::testing::TestParamInfo<MaskCase>& info) {
+    const MaskCase& c = info.param;
+    if (std::string(c.filter) == "pcf") return c.variant;
+    return std::string(c.filter) + "_radius" + std::to_string(static_cast<int>(c.filterRadius)) +
+           (c.mipmaps ? "_mipmaps" : "");
+}
+
+// gtest prints a case by its name instead of its bytes.
+void PrintTo(const MaskCase& c, std::ostream* out) { *out << caseName({c, 0}); }
+
+// A 1024 texel map's texel on the floor of these views is at most about 1.5 pixels wide: a
+// blur of r texels each side widens the edge band the comparison leaves out by r times that.
+constexpr double kPixelsPerTexel = 1.5;
+
+// The comparison's edge band for this blur radius (ShadowMaskTest's 2 pixels unblurred).
+int edgeRadius(double filterRadius) { return 2 + static_cast<int>(std::ceil(filterRadius * kPixelsPerTexel)); }
+
+// Every light type under every variant and moments filter: all of them must match the
+// analytic truth.
 class ShadowMask : public engine::test::ShadowPluginTest,
-                   public ::testing::WithParamInterface<const char*> {
+                   public ::testing::WithParamInterface<MaskCase> {
 protected:
-    static nlohmann::json shadow() { return {{"variant", GetParam()}}; }
+    static nlohmann::json shadow() {
+        const MaskCase& c = GetParam();
+        nlohmann::json settings = {{"variant", c.variant}, {"filter", c.filter}};
+        if (c.filterRadius > 0.0) settings["filter_radius"] = c.filterRadius;
+        if (c.mipmaps) settings["moments_mipmaps"] = true;
+        return settings;
+    }
 
     static void SetUpTestSuite() { loadPlugin({{"resolution", 1024}}); }
 
     engine::test::MaskStats compare(const engine::Scene& scene,
                                     const std::function<bool(const glm::dvec3&)>& inside) {
         const auto mask = engine::test::renderShadowMask(plugins(), scene, camera(), 0);
-        return engine::test::compareFloorMask(mask, scene, 0, camera(), {kFloor, kBox}, 0.0, 9.9, inside);
+        return engine::test::compareFloorMask(mask, scene, 0, camera(), {kFloor, kBox}, 0.0, 9.9, inside,
+                                              edgeRadius(GetParam().filterRadius));
     }
 };
 
@@ -67,7 +107,9 @@ TEST_P(ShadowMask, DirectionalLightMatchesAnalyticVisibility) {
     SceneBuilder builder;
     builder.addLight("sun", Light::Type::Directional, {-5, 6, -5}, {0, 0, 0}, shadow());
     const auto result = compare(boxOverFloor(builder), kEverywhere);
-    EXPECT_GT(result.truthShadowed, 200);
+    // The sun's shadow is the narrowest: a blur's wider edge band leaves 116 of its pixels
+    // evaluated at radius 2 (324 unblurred).
+    EXPECT_GT(result.truthShadowed, GetParam().filterRadius > 0.0 ? 100 : 200);
     EXPECT_LE(result.wrongFraction(), 0.003);
 }
 
@@ -81,7 +123,7 @@ TEST_P(ShadowMask, PointLightMatchesAnalyticVisibility) {
 
 TEST_P(ShadowMask, LightUnderTheFloorShadowsItsWholeTop) {
     // The slab stands between the light and every floor-top point the camera sees.
-    if (std::string(GetParam()) == "backface")
+    if (std::string(GetParam().variant) == "backface")
         GTEST_SKIP() << "backface maps hold the faces turned away from the light, here the "
                         "floor's top itself: the shade of a face turned away is undefined by "
                         "design (N.L = 0 darkens it, and the evaluation set of docs/metrics.md leaves it out)";
@@ -117,7 +159,8 @@ TEST_P(ShadowMask, SpotLightNeverLightsWhatIsBehindIt) {
 namespace {
 
 // Each spot instance's mask against the analytic shadow, inside its own cone.
-void expectEverySpotInstanceMatches(const std::vector<engine::RenderPlugin*>& plugins, const engine::Scene& scene) {
+void expectEverySpotInstanceMatches(const std::vector<engine::RenderPlugin*>& plugins, const engine::Scene& scene,
+                                    int edge) {
     for (int slot = 0; slot < static_cast<int>(scene.lightInstances.size()); ++slot) {
         const engine::LightInstance& placed = scene.lightInstances[slot];
         const double cone = scene.lights[placed.light].outerConeAngle;
@@ -125,7 +168,8 @@ void expectEverySpotInstanceMatches(const std::vector<engine::RenderPlugin*>& pl
             return std::acos(glm::dot(glm::normalize(p - placed.position()), placed.direction())) < cone - 0.03;
         };
         const auto mask = engine::test::renderShadowMask(plugins, scene, camera(), slot);
-        const auto result = engine::test::compareFloorMask(mask, scene, slot, camera(), {kFloor, kBox}, 0.0, 9.9, inCone);
+        const auto result =
+            engine::test::compareFloorMask(mask, scene, slot, camera(), {kFloor, kBox}, 0.0, 9.9, inCone, edge);
         EXPECT_GT(result.truthShadowed, 200) << "slot " << slot;
         EXPECT_GT(result.truthLit, 1000) << "slot " << slot;
         EXPECT_LE(result.wrongFraction(), 0.003) << "slot " << slot;
@@ -144,7 +188,7 @@ TEST_P(ShadowMask, OneLightPlacedByTwoNodesShadowsFromBoth) {
     builder.addNode(second);
     const engine::Scene scene = boxOverFloor(builder);
     ASSERT_EQ(scene.lightInstances.size(), 2u);
-    expectEverySpotInstanceMatches(plugins(), scene);
+    expectEverySpotInstanceMatches(plugins(), scene, edgeRadius(GetParam().filterRadius));
 }
 
 TEST_P(ShadowMask, UnnamedLightsOnUnnamedNodesEachShadow) {
@@ -154,7 +198,15 @@ TEST_P(ShadowMask, UnnamedLightsOnUnnamedNodesEachShadow) {
         const int node = builder.addLight("", Light::Type::Spot, position, target, shadow());
         builder.scene.nodes[node].name.clear();
     }
-    expectEverySpotInstanceMatches(plugins(), boxOverFloor(builder));
+    expectEverySpotInstanceMatches(plugins(), boxOverFloor(builder), edgeRadius(GetParam().filterRadius));
 }
 
-INSTANTIATE_TEST_SUITE_P(Variants, ShadowMask, ::testing::Values("standard", "woo", "backface"));
+INSTANTIATE_TEST_SUITE_P(Variants, ShadowMask,
+                         ::testing::Values(MaskCase{"standard"}, MaskCase{"woo"}, MaskCase{"backface"}), caseName);
+// Filterable maps (docs/filterable-maps.md), held to the same bound off the (wider) edges.
+INSTANTIATE_TEST_SUITE_P(Moments, ShadowMask,
+                         ::testing::Values(MaskCase{"standard", "vsm"}, MaskCase{"standard", "vsm", 2.0},
+                                           MaskCase{"standard", "evsm"}, MaskCase{"standard", "evsm", 2.0},
+                                           MaskCase{"standard", "vsm", 2.0, true},
+                                           MaskCase{"woo", "evsm", 1.0, true}),
+                         caseName);

@@ -499,10 +499,10 @@ TEST(ViewerState, KeysCycleThroughWhatThePluginAccepts) {
               rotatedFrom(shadowmap::settingKey("variant").choices, shadowmap::toString(defaults.variant)));
     EXPECT_EQ(visit("depth_format", &ViewerState::cycleDepthFormat),
               rotatedFrom(shadowmap::settingKey("depth_format").choices, shadowmap::toString(defaults.depthFormat)));
-    // Without a size the light takes only the hard filters: the key skips pcss.
-    EXPECT_EQ(visit("filter", &ViewerState::toggleFilter),
-              rotatedFrom({shadowmap::toString(shadowmap::Filter::Nearest), shadowmap::toString(shadowmap::Filter::Pcf)},
-                          shadowmap::toString(defaults.filter)));
+    // Without a size the light takes every filter but pcss: the key skips it.
+    std::vector<std::string> withoutPcss = shadowmap::settingKey("filter").choices;
+    withoutPcss.erase(std::find(withoutPcss.begin(), withoutPcss.end(), shadowmap::toString(shadowmap::Filter::Pcss)));
+    EXPECT_EQ(visit("filter", &ViewerState::toggleFilter), rotatedFrom(withoutPcss, shadowmap::toString(defaults.filter)));
     // With one it visits every filter.
     state.set(0, "light_radius", 0.1);
     EXPECT_EQ(visit("filter", &ViewerState::toggleFilter),

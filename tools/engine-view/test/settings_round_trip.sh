@@ -10,7 +10,8 @@ set sun variant woo
 set spot_light resolution 1024
 set spot_light polygon_offset [1.5, 6]
 select point_light
-# point_light: standard -> woo, 1024 -> 2048, pcf -> nearest, offset units +1, dimming +0.05
+# point_light: standard -> woo, 1024 -> 2048, pcf -> vsm (the filter key's next; pcss needs a
+# size), offset units +1, dimming +0.05
 key V
 key R
 key P
@@ -46,7 +47,7 @@ lights = {l["name"]: l["extras"]["shadow"] for l in json.loads(saved)["extension
 expected = {
     "spot_light": {"variant": "standard", "resolution": 1024, "filter": "pcf", "polygon_offset": [1.5, 6]},
     "sun": {"variant": "woo", "resolution": 2048, "filter": "pcf"},
-    "point_light": {"variant": "woo", "resolution": 2048, "filter": "nearest", "dimming": 0.45,
+    "point_light": {"variant": "woo", "resolution": 2048, "filter": "vsm", "dimming": 0.45,
                     "polygon_offset": [0.0, 1.0]},
 }
 if lights != expected:
