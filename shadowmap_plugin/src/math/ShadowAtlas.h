@@ -1,5 +1,5 @@
 #pragma once
-// The shadow atlas's allocator (issue 35, "Many shadowed lights"): where in one square depth
+// The shadow atlas's allocator, for scenes with many shadowed lights: where in one square depth
 // texture of `atlasSize` texels per side each map lives (a spot's map, a cube face, a
 // cascade: one request each). No GL: the plugin renders into and reads from the rectangles
 // it hands out.
@@ -36,8 +36,8 @@
 // lookup around the point it shades: pcss, PcssLookup::reachTexels = kMaxRadiusTexels (32,
 // its blocker search and filter radius) + 1 for its 2x2 comparisons' far texel. Wide pcf
 // reaches kMaxFilterRadius (16) + 1 = 17, less. This holds only if the lookup clamps the
-// point it shades (after normal offset) into its map's rectangle before the taps, as the
-// issue asks. Mipmapped moments (moments_mipmaps) read the whole map at coarse levels and
+// point it shades (after normal offset) into its map's rectangle before the taps, as every
+// lookup into a shared atlas must. Mipmapped moments (moments_mipmaps) read the whole map at coarse levels and
 // cannot share an atlas with any border.
 #include <compare>
 #include <cstdint>
