@@ -5,6 +5,9 @@
 
 #include <epoxy/gl.h>
 
+#include <algorithm>
+#include <memory>
+
 namespace shadowmap {
 
 namespace {
