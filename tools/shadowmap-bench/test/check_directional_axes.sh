@@ -6,6 +6,7 @@
 # note; and that two shards merged equal the single run.
 # Usage: check_directional_axes.sh BENCH_BINARY CONTENT_DIR
 set -euo pipefail
+source "$(dirname "$0")/results_columns.sh"
 bench=$1 content=$2
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
@@ -19,8 +20,7 @@ sweep() {
 sweep --out "$out/single" 2> "$out/log" || { cat "$out/log"; exit 1; }
 
 csv=$out/single/results.csv
-header='scene,light,variant,resolution,depth_format,filter,shadow_ms,frame_ms,acne,leak,error,error_noedge,area_acne,area_leak,area_error,shimmer,near_error,near_error_noedge,light_size,filter_radius,filter_taps,normal_offset,soft_error,soft_error_noedge,penumbra_error,texel_m_mean,texel_m_p95,projection,cascades,stable,bleed_reduction'
-[[ "$(head -n 1 "$csv")" == "$header" ]] || { echo "bad header: $(head -n 1 "$csv")"; exit 1; }
+check_results_header "$csv"
 # The sun: uniform x 2 cascade counts x 2 stables + lispsm x 2 cascade counts (stable is not
 # swept for a warp) = 6 rows; the spot and point lights one row each: 8 rows.
 rows=$(tail -n +2 "$csv" | wc -l)

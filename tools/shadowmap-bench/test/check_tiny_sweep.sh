@@ -3,6 +3,7 @@
 # (the exact header, one row per light, numbers in range) and summary.md.
 # Usage: check_tiny_sweep.sh BENCH_BINARY CONTENT_DIR
 set -euo pipefail
+source "$(dirname "$0")/results_columns.sh"
 bench=$1 content=$2
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
@@ -12,8 +13,7 @@ trap 'rm -rf "$out"' EXIT
   --width 64 --height 48 --frames 1 --out "$out"
 
 csv=$out/results.csv
-header='scene,light,variant,resolution,depth_format,filter,shadow_ms,frame_ms,acne,leak,error,error_noedge,area_acne,area_leak,area_error,shimmer,near_error,near_error_noedge,light_size,filter_radius,filter_taps,normal_offset,soft_error,soft_error_noedge,penumbra_error,texel_m_mean,texel_m_p95,projection,cascades,stable,bleed_reduction'
-[[ "$(head -n 1 "$csv")" == "$header" ]] || { echo "bad header: $(head -n 1 "$csv")"; exit 1; }
+check_results_header "$csv"
 rows=$(tail -n +2 "$csv" | wc -l)
 [[ $rows -eq 3 ]] || { echo "expected 3 rows (the showcase's lights), got $rows"; exit 1; }
 # Every light's shadow passes ran and took time (a map nobody reads would be culled and
