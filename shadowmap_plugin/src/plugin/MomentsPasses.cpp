@@ -10,20 +10,25 @@
 
 namespace shadowmap {
 
+MomentsDepth momentsKind(const LightShadow& light) {
+    MomentsDepth kind;
+    kind.perspective = light.type != engine::Light::Type::Directional;
+    kind.reversed = light.settings.reversedZ;
+    kind.evsm = light.settings.filter == Filter::Evsm;
+    return kind;
+}
+
 namespace {
 
 // How a layer's window depths become the moments' depth: its planes are the ones the lookup
 // reads from softLayers (the same functions pack both).
 MomentsDepth momentsDepth(const LightShadow& light, int layer) {
-    MomentsDepth depth;
-    depth.perspective = light.type != engine::Light::Type::Directional;
-    depth.reversed = light.settings.reversedZ;
+    MomentsDepth depth = momentsKind(light);
     const glm::vec4 terms = light.frame.kind == MapKind::Cube      ? softCubeLayer(light.frame.pointViews, light)
                             : light.frame.kind == MapKind::Cascades ? softLayer(light.frame.cascades.cascades[layer], light)
                                                                     : softLayer(light.frame.view, light);
     depth.nearPlane = terms.z;
     depth.farPlane = terms.w;
-    depth.evsm = light.settings.filter == Filter::Evsm;
     depth.exponents = light.settings.evsmExponents;
     return depth;
 }

@@ -11,6 +11,9 @@
 
 namespace shadowmap {
 
+// The kind of this light's layers (MomentsDepth's flags; planes and exponents unset).
+MomentsDepth momentsKind(const LightShadow& light);
+
 // `map`: the map's version the depth passes left; `moments`: the light's imported moments,
 // moved on to the version the last pass wrote.
 void addMomentsPasses(LightShadow& light, engine::Frame& frame, engine::ResourceHandle map,

@@ -25,8 +25,13 @@ struct MomentsDepth {
 class MomentsRenderer {
 public:
     // Compiles the blur; the first pass's program per kind of layer (vsm or evsm,
-    // perspective or not, reversed or not) is compiled with the first layer of its kind.
+    // perspective or not, reversed or not) is compiled by prepare, or else with the first
+    // layer of its kind.
     MomentsRenderer();
+
+    // Compiles the first pass's program for layers of this kind (only its flags count), so
+    // that a light whose map first renders after warm-up compiles nothing then.
+    void prepare(const MomentsDepth& kind) const { fromDepthProgram(kind); }
 
     // The moments of layer `layer` of `mapLayers` (the map as a 2D array), box-blurred by
     // `radius` texels along `step` (radius 0: each texel's own).

@@ -78,6 +78,12 @@ void ShadowMapPlugin::addPasses(engine::Frame& frame) {
         depth_ = std::make_unique<DepthRenderer>();
         glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);  // PCF across cube face edges
     }
+    // Every moments light's programs, on the first frame, whether or not its map renders now.
+    for (const LightShadow& light : lights_) {
+        if (light.settings.variant == Variant::None || mapLookupFor(light.settings).momentChannels() == 0) continue;
+        if (!moments_) moments_ = std::make_unique<MomentsRenderer>();
+        moments_->prepare(momentsKind(light));
+    }
     const PlanContext context = planContext(frame.scene(), frame.camera());
     std::vector<engine::ResourceHandle> maps;
     for (LightShadow& light : lights_) {
@@ -104,10 +110,7 @@ void ShadowMapPlugin::addPasses(engine::Frame& frame) {
             } else {
                 ++cacheMisses_;
                 addDepthPasses(light, frame, map, *depth_, closedMeshes_);  // moves map to its last version
-                if (moments.valid()) {
-                    if (!moments_) moments_ = std::make_unique<MomentsRenderer>();
-                    addMomentsPasses(light, frame, map, moments, *moments_);
-                }
+                if (moments.valid()) addMomentsPasses(light, frame, map, moments, *moments_);
             }
             light.frame.map = map;  // the version the lit pass (and its comparison view) reads
             maps.push_back(map);
