@@ -63,6 +63,7 @@ TrialResult SettingTrial::measure() {
     else renderer_.reloadSettings();
 
     std::vector<double> frameMs;
+    std::vector<double> allFrames;  // every view's timed frames, for the tail
     std::map<int, std::vector<LightResult>> bySlot;  // per light instance, one per view
     for (const engine::FrameCamera& camera : views_) {
         // Untimed until nothing new compiles (llvmpipe compiles at first draw; new maps are
@@ -72,11 +73,14 @@ TrialResult SettingTrial::measure() {
         renderer_.warmUp(warmup, 1, 5);
         ViewResult view = evaluator_.evaluate(camera, frames_);
         frameMs.push_back(view.frameMs);
+        allFrames.insert(allFrames.end(), view.frameTimes.begin(), view.frameTimes.end());
         for (LightResult& light : view.lights) bySlot[light.slot].push_back(std::move(light));
     }
 
     TrialResult result;
     result.frameMs = tools::median(frameMs);
+    result.frameP99Ms = tools::percentile(allFrames, 0.99);
+    result.frameMaxMs = tools::percentile(allFrames, 1.0);
     for (auto& [slot, views] : bySlot) {
         LightResult pooled = views.front();
         std::vector<double> ms;

@@ -45,6 +45,9 @@ const char* rankedFigure(RankingTruth truth);
 
 struct TrialResult {
     double frameMs = 0.0;             // median over the views' median frame times
+    // The tail beside it, over every timed frame of every view (the frames the views'
+    // medians come from), nearest rank as tools::percentile: p99 and max, ms.
+    double frameP99Ms = 0.0, frameMaxMs = 0.0;
     std::vector<LightResult> lights;  // per shadowed light instance; every error figure (soft
                                       // ones included) pooled over views, shadowMs the
                                       // median over views

@@ -48,6 +48,7 @@ ViewResult ShadowEvaluator::evaluate(const engine::FrameCamera& camera, int fram
         }
     }
     result.frameMs = tools::median(frameMs);
+    result.frameTimes = frameMs;
     if (frames > 0) result.image = renderer_.readColor();
 
     // One more frame, untimed, with every shadowed light's mask.

@@ -69,6 +69,7 @@ struct LightShimmer {
 
 struct ViewResult {
     double frameMs = 0.0;  // median over the timed frames
+    std::vector<double> frameTimes;  // every timed frame's wall time, ms, in render order
     std::vector<LightResult> lights;
     std::vector<std::uint8_t> image;  // the last timed frame, RGBA8, top row first
 };

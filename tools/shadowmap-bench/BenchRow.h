@@ -78,6 +78,9 @@ struct BenchRow {
     double lightSize = 0.0;
     double shadowMs = 0.0;  // median wall time of the light's shadow passes
     double frameMs = 0.0;   // median wall time of the whole frame (all lights)
+    // The tail beside it: p99 and max over the same timed frames (every view's), nearest
+    // rank (tools::percentile; under 100 frames the p99 is the max).
+    double frameP99Ms = 0.0, frameMaxMs = 0.0;
     // Percent of the evaluation set (docs/metrics.md), against the one-ray-per-pixel truth.
     double acne = 0.0, leak = 0.0, error = 0.0, errorNoEdge = 0.0;
     // The same against the area truth (lit fraction of each pixel's footprint): the figure

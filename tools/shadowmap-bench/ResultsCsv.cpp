@@ -60,7 +60,8 @@ std::string resultsCsv(const std::vector<BenchRow>& rows) {
                optionalSetting(row.setting.filterTaps) + "," + optionalSetting(row.setting.normalOffset) + "," +
                optional(row.softError) + "," + optional(row.softErrorNoEdge) + "," + optional(row.penumbraError) + "," +
                optional(row.texelMean) + "," + optional(row.texelP95) + "," + directionalAxes(row.setting) + "," +
-               optionalSetting(row.setting.bleedReduction) + "\n";
+               optionalSetting(row.setting.bleedReduction) + "," + number(row.frameP99Ms, 3) + "," +
+               number(row.frameMaxMs, 3) + "\n";
     }
     return csv;
 }

@@ -114,6 +114,8 @@ std::vector<BenchRow> parseResultsCsv(const std::string& text, const std::string
         row.setting = {f[2], static_cast<int>(number(f[3], file, line)), f[4], f[5]};
         row.shadowMs = number(f[6], file, line);
         row.frameMs = number(f[7], file, line);
+        row.frameP99Ms = number(f[31], file, line);
+        row.frameMaxMs = number(f[32], file, line);
         row.acne = number(f[8], file, line);
         row.leak = number(f[9], file, line);
         row.error = number(f[10], file, line);

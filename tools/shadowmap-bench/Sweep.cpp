@@ -42,7 +42,7 @@ const engine::Light& instanceLight(const engine::Scene& scene, int instance) {
     return scene.lights[scene.lightInstances[instance].light];
 }
 
-BenchRow makeRow(const BenchScene& scene, const ShadowSetting& setting, double frameMs,
+BenchRow makeRow(const BenchScene& scene, const ShadowSetting& setting, const evaluation::TrialResult& measured,
                  const evaluation::LightResult& light) {
     BenchRow row;
     row.scene = scene.name;
@@ -56,7 +56,9 @@ BenchRow makeRow(const BenchScene& scene, const ShadowSetting& setting, double f
     const bool directional = type == engine::Light::Type::Directional;
     row.lightSize = directional ? light.view.angularDiameter : light.view.lightRadius;
     row.shadowMs = light.shadowMs;
-    row.frameMs = frameMs;
+    row.frameMs = measured.frameMs;
+    row.frameP99Ms = measured.frameP99Ms;
+    row.frameMaxMs = measured.frameMaxMs;
     row.acne = 100.0 * light.errors.acne;
     row.leak = 100.0 * light.errors.leak;
     row.error = 100.0 * light.errors.error;
@@ -254,7 +256,7 @@ SweepRows runSweep(std::vector<BenchScene>& scenes, const engine::RendererConfig
             for (const evaluation::LightResult& light : measured.lights) {
                 // A spot or point light got the same as in an earlier job: its row is there.
                 if (!writesRowFor(setting, instanceLight(scene.scene, light.slot).type)) continue;
-                rows.push_back(makeRow(scene, setting, measured.frameMs, light));
+                rows.push_back(makeRow(scene, setting, measured, light));
                 for (const evaluation::LightShimmer& moving : shimmer)
                     if (moving.slot == light.slot) rows.back().shimmer = 100.0 * moving.count.fraction();
                 onRow(rows.back(), static_cast<int>(rows.size()), total);

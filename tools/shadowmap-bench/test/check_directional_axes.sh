@@ -27,9 +27,9 @@ rows=$(tail -n +2 "$csv" | wc -l)
 [[ $rows -eq 8 ]] || { echo "expected 8 rows (6 sun, 1 spot, 1 point), got $rows"; cat "$csv"; exit 1; }
 # Columns 28-30: projection, cascades, stable. The sun's rows: each combination once, lispsm
 # rows without stable; the spot and point lights' rows: all three empty. Every row is
-# measured (positive time, errors in [0, 100]) and has 31 fields.
+# measured (positive time, errors in [0, 100]) and has 33 fields.
 awk -F, 'NR > 1 {
-  if (NF != 31) { print NF " fields, expected 31: " $0; bad = 1 }
+  if (NF != 33) { print NF " fields, expected 33: " $0; bad = 1 }
   if (!($7 > 0)) { print "no shadow time: " $0; bad = 1 }
   for (i = 9; i <= 15; ++i) if (!($i >= 0 && $i <= 100)) { print "error out of [0,100]: " $0; bad = 1 }
   if ($2 == "sun") {
@@ -60,7 +60,8 @@ echo "ok: 8 rows, the directional axes on the sun only"
 sweep --shard 1/2 --out "$out/shard1" 2> /dev/null
 sweep --shard 2/2 --out "$out/shard2" 2> /dev/null
 "$bench" --merge "$out/shard1" --merge "$out/shard2" --out "$out/merged" 2> /dev/null
-without_times() { cut -d, -f1-6,9- "$1"; }
+# Times: columns 7-8 (shadow_ms, frame_ms) and 32-33 (frame_p99_ms, frame_max_ms).
+without_times() { cut -d, -f1-6,9-31 "$1"; }
 diff <(without_times "$csv") <(without_times "$out/merged/results.csv") \
   || { echo "the merged shards differ from the single run"; exit 1; }
 echo "ok: two shards merged equal the single run"

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Two shards merged equal a single run: the same rows in the same order with the same
 # errors (errors are deterministic: the same settings render the same pixels); only the
-# times (columns 7-8, wall clock) differ. The sweep has three light size steps per filter,
+# times (columns 7-8 and 32-33, wall clock) differ, and the merge keeps each shard's row,
+# times included, exactly as the shard wrote it. The sweep has three light size steps per filter,
 # so shard 1 runs two jobs in a row that differ only in the size step (pcf at steps 1 and
 # 3): the merge must deal them back as two jobs, and keep the size and soft columns. Then a
 # merge missing a shard is refused.
@@ -28,9 +29,14 @@ for k in 1 2; do
 done
 # Merged in either order of the folders.
 "$bench" --merge "$out/shard2" --merge "$out/shard1" --out "$out/merged"
-without_times() { cut -d, -f1-6,9- "$1"; }
+# Times: columns 7-8 (shadow_ms, frame_ms) and 32-33 (frame_p99_ms, frame_max_ms).
+without_times() { cut -d, -f1-6,9-31 "$1"; }
 diff <(without_times "$out/single/results.csv") <(without_times "$out/merged/results.csv") \
   || { echo "the merged shards differ from the single run"; exit 1; }
+# --merge reads every column back (the times too): its rows are the shards' rows.
+diff <(tail -q -n +2 "$out/shard1/results.csv" "$out/shard2/results.csv" | sort) \
+  <(tail -n +2 "$out/merged/results.csv" | sort) \
+  || { echo "the merged rows are not the shards' rows (a column not read back?)"; exit 1; }
 awk -F, 'NR > 1 && ($19 <= 0 || $23 == "") { print "a merged row without its size or soft error: " $0; bad = 1 }
          END { exit bad }' "$out/merged/results.csv"
 [[ -s $out/merged/summary.md ]] || { echo "no merged summary.md"; exit 1; }

@@ -38,7 +38,11 @@ awk -F, 'NR > 1 {
   # projection, cascades, stable, bleed_reduction: empty without --projections, --cascades,
   # --stables, --bleed-reductions.
   for (i = 28; i <= 31; ++i) if ($i != "") { print "column " i " filled without its axis: " $0; bad = 1 }
-  if (NF != 31) { print NF " fields, expected 31: " $0; bad = 1 }
+  if (NF != 33) { print NF " fields, expected 33: " $0; bad = 1 }
+  # frame_p99_ms, frame_max_ms: the tail of the frames frame_ms is the median of, so
+  # median <= p99 <= max, all positive.
+  for (i = 32; i <= 33; ++i) if ($i !~ /^[0-9]+(\.[0-9]+)?$/ || !($i > 0)) { print "frame tail not a positive number: " $i " in " $0; bad = 1 }
+  if (!($32 >= $8 && $33 >= $32)) { print "frame times not median <= p99 <= max: " $0; bad = 1 }
 } END { exit bad }' "$csv"
 [[ -s $out/summary.md ]] || { echo "summary.md missing or empty"; exit 1; }
 # It cites the metric definitions by a file the repository has.
