@@ -57,13 +57,7 @@ echo "ok: 8 rows, the directional axes on the sun only"
 
 # Shards: the sweep's 6 jobs dealt to 2 shards; a spot or point light's row comes from the
 # first job of its group whichever shard runs it, so the merge equals the single run.
-sweep --shard 1/2 --out "$out/shard1" 2> /dev/null
-sweep --shard 2/2 --out "$out/shard2" 2> /dev/null
-"$bench" --merge "$out/shard1" --merge "$out/shard2" --out "$out/merged" 2> /dev/null
-# Times: columns 7-8 (shadow_ms, frame_ms) and 32-33 (frame_p99_ms, frame_max_ms).
-without_times() { cut -d, -f1-6,9-31 "$1"; }
-diff <(without_times "$csv") <(without_times "$out/merged/results.csv") \
-  || { echo "the merged shards differ from the single run"; exit 1; }
+check_shards_merge_to "$csv" "$out" "$bench"
 echo "ok: two shards merged equal the single run"
 
 # pcss with lispsm: the sun refuses it (the plugin's message), so that job is left out with

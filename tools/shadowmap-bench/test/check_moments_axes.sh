@@ -67,11 +67,5 @@ grep -Eq 'vsm fr[02] br0(\.4)?' "$out/single/summary.md" || { echo "summary.md l
 grep -q '^\[33/33\]' "$out/log" || { echo "progress does not count to the 33 rows:"; cat "$out/log"; exit 1; }
 echo "ok: 33 rows, filter radii on pcf, vsm and evsm, bleed reductions on vsm and evsm"
 
-sweep --shard 1/2 --out "$out/shard1" 2> /dev/null
-sweep --shard 2/2 --out "$out/shard2" 2> /dev/null
-"$bench" --merge "$out/shard1" --merge "$out/shard2" --out "$out/merged" 2> /dev/null
-# Times: columns 7-8 (shadow_ms, frame_ms) and 32-33 (frame_p99_ms, frame_max_ms).
-without_times() { cut -d, -f1-6,9-31 "$1"; }
-diff <(without_times "$csv") <(without_times "$out/merged/results.csv") \
-  || { echo "the merged shards differ from the single run"; exit 1; }
+check_shards_merge_to "$csv" "$out" "$bench"
 echo "ok: two shards merged equal the single run"

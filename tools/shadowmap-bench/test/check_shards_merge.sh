@@ -8,6 +8,7 @@
 # merge missing a shard is refused.
 # Usage: check_shards_merge.sh BENCH_BINARY CONTENT_DIR
 set -euo pipefail
+source "$(dirname "$0")/results_columns.sh"
 bench=$1 content=$2
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
@@ -29,9 +30,7 @@ for k in 1 2; do
 done
 # Merged in either order of the folders.
 "$bench" --merge "$out/shard2" --merge "$out/shard1" --out "$out/merged"
-# Times: columns 7-8 (shadow_ms, frame_ms) and 32-33 (frame_p99_ms, frame_max_ms).
-without_times() { cut -d, -f1-6,9-31 "$1"; }
-diff <(without_times "$out/single/results.csv") <(without_times "$out/merged/results.csv") \
+diff <(results_without_times "$out/single/results.csv") <(results_without_times "$out/merged/results.csv") \
   || { echo "the merged shards differ from the single run"; exit 1; }
 # --merge reads every column back (the times too): its rows are the shards' rows.
 diff <(tail -q -n +2 "$out/shard1/results.csv" "$out/shard2/results.csv" | sort) \

@@ -6,3 +6,19 @@ results_header='scene,light,variant,resolution,depth_format,filter,shadow_ms,fra
 check_results_header() {
   [[ "$(head -n 1 "$1")" == "$results_header" ]] || { echo "bad header: $(head -n 1 "$1")"; exit 1; }
 }
+
+# Results file $1 without its timing columns, which differ from run to run: 7-8 (shadow_ms,
+# frame_ms) and 32-33 (frame_p99_ms, frame_max_ms).
+results_without_times() { cut -d, -f1-6,9-31 "$1"; }
+
+# Runs the caller's sweep() as two shards into $2/shard1 and $2/shard2, merges them with
+# shadowmap-bench $3 into $2/merged, and exits with a message unless the merge equals the
+# single run's results file $1 but for the times.
+check_shards_merge_to() {
+  local single=$1 out=$2 bench=$3
+  sweep --shard 1/2 --out "$out/shard1" 2> /dev/null
+  sweep --shard 2/2 --out "$out/shard2" 2> /dev/null
+  "$bench" --merge "$out/shard1" --merge "$out/shard2" --out "$out/merged" 2> /dev/null
+  diff <(results_without_times "$single") <(results_without_times "$out/merged/results.csv") \
+    || { echo "the merged shards differ from the single run"; exit 1; }
+}
