@@ -15,7 +15,7 @@
 // InputError naming the source (config file or scene), the light and the key.
 //
 //   key             values                               default
-//   variant         "standard" | "woo" | "backface" | "none"   "standard"
+//   variant         "standard" | "woo" | "backface" | "none" | "volume"   "standard"
 //   resolution      1 .. GL_MAX_TEXTURE_SIZE (texels/side)     2048
 //   depth_format    "d16" | "d24" | "d32f"                     "d24"
 //   filter          "nearest" (1 tap) | "pcf" (2x2 bilinear)   "pcf"
@@ -159,7 +159,8 @@
 
 namespace shadowmap {
 
-enum class Variant { Standard, Woo, Backface, None };
+// volume: stenciled shadow volumes (exact hard shadows, no map; plugin/VolumePasses.h).
+enum class Variant { Standard, Woo, Backface, None, Volume };
 enum class DepthFormat { D16, D24, D32F };
 enum class Filter { Nearest, Pcf, Pcss, Vsm, Evsm };
 enum class Projection { Uniform, Lispsm };

@@ -110,6 +110,11 @@ DepthDrawCounts DepthRenderer::draw(const engine::Frame& frame, engine::PassCont
                 continue;
             const unsigned features =
                 engine::materialFeatures(scene, gpu, primitive, engine::MaterialUse::ShadowCasting);
+            if (style.cullsSingleSidedBackFaces) {
+                const bool doubleSided = primitive.material >= 0 && scene.materials[primitive.material].doubleSided;
+                if (doubleSided) glDisable(GL_CULL_FACE);
+                else glEnable(GL_CULL_FACE);
+            }
             const engine::gl::Program& drawing = use(features);
             drawing.set("uLightModelViewProjection", lightModelViewProjection);
             engine::applyMaterial(drawing, scene, gpu, primitive, features, engine::MaterialUse::ShadowCasting);

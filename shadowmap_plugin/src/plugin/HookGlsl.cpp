@@ -53,10 +53,17 @@ HookGlsl::Code generate(const std::vector<HookGlsl::Lookup>& lookups) {
     std::string lookupFunctions, declarations, dispatch, debugDispatch, texgenOutputs, texgen;
     std::set<std::string> written;
     for (const HookGlsl::Lookup& lookup : lookups)
-        if (written.insert(lookup.glslName).second)
+        if (!lookup.screen && written.insert(lookup.glslName).second)
             lookupFunctions += std::string(mapLookupNamed(lookup.glslName).glsl()) + mapShapeFunctions(lookup.glslName);
     for (const HookGlsl::Lookup& lookup : lookups) {
         const std::string slot = std::to_string(lookup.slot);
+        if (lookup.screen) {
+            declarations += "layout(binding = " + std::to_string(lookup.unit) + ") uniform sampler2D uShadowVisibility" +
+                            slot + ";\n";
+            dispatch += "    if (lightSlot == " + slot + ") return texelFetch(uShadowVisibility" + slot +
+                        ", ivec2(gl_FragCoord.xy), 0).r;\n";
+            continue;
+        }
         const SamplerTypes types = samplerTypes(lookup.glslName);
         const std::string suffix = "_" + lookup.glslName + "(";
         if (lookup.cascades > 0) {

@@ -22,6 +22,9 @@ public:
         int rawUnit = -1;       // unit of its raw-depth sampler for the comparison view; -1: none
         int cascades = 0;       // > 0: a 2D array map of that many cascades (directional)
         std::string glslName;   // its MapLookup's glslName(): which functions read the map
+        // A visibility per camera pixel (variant volume) on `unit`, read at the fragment: no
+        // map, no lookup functions, no coordinates.
+        bool screen = false;
         auto operator<=>(const Lookup&) const = default;
     };
     struct Code {

@@ -120,11 +120,21 @@ nlohmann::json LightShadow::settingsJson() const {
             {"dimming", jsonNumber(settings.dimming)}};
 }
 
+void LightShadow::ensureVisibility(int width, int height) {
+    if (visibility.id() && visibility.width() == width && visibility.height() == height) return;
+    visibility = engine::gl::Texture::create2D(GL_R8, width, height);
+    visibility.setParameter(GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    visibility.setParameter(GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    visibilityKey = 0;
+}
+
 nlohmann::json LightShadow::stats() const {
     nlohmann::json out = settingsJson();
     out.update({{"light", name},
                 {"slot", slot},
-                {"map", frame.kind == MapKind::None ? "none" : mapProjection(frame.kind)->name()},
+                {"map", frame.kind == MapKind::None     ? "none"
+                        : frame.kind == MapKind::Screen ? "volumes"
+                                                        : mapProjection(frame.kind)->name()},
                 {"faces_rendered", frame.facesRendered},
                 {"faces_skipped", frame.facesSkipped},
                 {"draws", frame.draws},
@@ -134,6 +144,10 @@ nlohmann::json LightShadow::stats() const {
     if (!frame.skipReason.empty()) out["skip_reason"] = frame.skipReason;
     if (const DepthTechnique* technique = depthTechnique(settings.variant)) technique->addStats(*this, out);
     if (frame.kind != MapKind::None) out["cache"] = frame.cacheHit ? "hit" : "miss";
+    if (frame.kind == MapKind::Screen) {
+        out["silhouette_edges"] = frame.silhouetteEdges;
+        out["cap_triangles"] = frame.capTriangles;
+    }
     if (const MapProjection* projection = mapProjection(frame.kind)) projection->addStats(*this, out);
     if (frame.autoCascades) {
         // cascades: auto: what it weighed for 1..4 (CascadeNeed; null where a count gives no
@@ -161,7 +175,12 @@ engine::ShadowView LightShadow::view() const {
     // The settings API's printer, so the tools read them back with its parser (usedSettings).
     out.settings = printUsedSettings(settings);
     (type == engine::Light::Type::Directional ? out.angularDiameter : out.lightRadius) = settings.lightSize(type);
-    out.hasMap = frame.kind != MapKind::None;
+    // volume: no map to show; its passes still say what it cost.
+    out.hasMap = frame.kind != MapKind::None && frame.kind != MapKind::Screen;
+    if (frame.kind == MapKind::Screen) {
+        out.renderedThisFrame = !frame.cacheHit;
+        out.passes = frame.passes;
+    }
     out.skipReason = frame.skipReason;
     out.cube = frame.kind == MapKind::Cube;
     if (const MapProjection* projection = mapProjection(frame.kind)) projection->describe(*this, out);

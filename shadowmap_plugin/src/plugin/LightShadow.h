@@ -22,6 +22,10 @@ struct LightShadow : LightState {
     // make them. Empty for the other filters.
     engine::gl::Texture moments;
     engine::gl::Texture mapLayers;
+    // volume (plugin/VolumePasses.h): 1 where the light reaches the camera's pixel, else 0
+    // (R8, the camera's size), and the key of what it was last made from (0: nothing).
+    engine::gl::Texture visibility;
+    std::uint64_t visibilityKey = 0;
 
     // (Re)creates the map when size, format or shape changed (a new texture holds nothing:
     // its rendered keys are reset), with the comparison state and filter the lookup needs.
@@ -30,6 +34,8 @@ struct LightShadow : LightState {
     // the lookup reads none.
     void ensureMoments();
     engine::TextureDesc momentsDesc() const;
+    // volume: (re)creates the visibility texture at the camera's size.
+    void ensureVisibility(int width, int height);
     // --stats' summary of the settings in effect, keyed as in extras.shadow (the tools read
     // ShadowView::settings instead, through shadowmap/ShadowViewSettings.h).
     nlohmann::json settingsJson() const;

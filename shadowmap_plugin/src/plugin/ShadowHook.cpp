@@ -47,6 +47,17 @@ engine::LightVisibilityHook ShadowHook::build(const engine::Frame& frame, const 
         // Outside a spot light's frustum is outside its cone: never lit by it. Directional
         // frusta hold every visible receiver, so what lies outside has nothing to fear.
         const float outsideShade = light.type == engine::Light::Type::Spot ? 0.0f : 1.0f;
+        if (plan.kind == MapKind::Screen) {
+            // volume: the visibility texture, read at the pixel; nothing to project or bias.
+            const int unit = kFirstUnit + light.slot;
+            params[light.slot] = glm::vec4(0.0f, 0.0f, light.settings.dimming, 1.0f);
+            if (cacheMaps) shadeKeys[light.slot] = plan.mapKey;
+            units.emplace_back(unit, light.visibility.id());
+            HookGlsl::Lookup lookup{light.slot, unit, false, -1, 0, toString(Variant::Volume)};
+            lookup.screen = true;
+            lookups.push_back(lookup);
+            continue;
+        }
         const MapProjection* projection = mapProjection(plan.kind);
         if (!projection) {
             if (plan.emptyFrustum) params[light.slot] = glm::vec4(0.0f, 0.0f, 0.0f, outsideShade);

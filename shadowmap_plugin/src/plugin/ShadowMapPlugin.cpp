@@ -2,6 +2,7 @@
 
 #include "plugin/DepthPasses.h"
 #include "plugin/MomentsPasses.h"
+#include "plugin/VolumePasses.h"
 #include "technique/DepthFormatGl.h"
 #include "technique/LightPlanner.h"
 #include "technique/Techniques.h"
@@ -47,6 +48,7 @@ void ShadowMapPlugin::resolve(const engine::Scene& scene) {
 void ShadowMapPlugin::prepareScene(const engine::Scene& scene) {
     resolve(scene);
     ++sceneGeneration_;  // new geometry: no map is still right
+    volumes_.reset();      // its meshes' adjacency is the old scene's
     cacheHits_ = cacheMisses_ = 0;
 }
 
@@ -62,6 +64,8 @@ void ShadowMapPlugin::reloadSettings(const engine::Scene& scene) {
                 light.moments = std::move(old.moments);
                 light.mapLayers = std::move(old.mapLayers);
                 light.renderedKey = old.renderedKey;
+                light.visibility = std::move(old.visibility);
+                light.visibilityKey = old.visibilityKey;
                 light.renderedUnseen = std::move(old.renderedUnseen);  // what that map lacks
             }
 }
@@ -84,13 +88,30 @@ void ShadowMapPlugin::addPasses(engine::Frame& frame) {
         if (!moments_) moments_ = std::make_unique<MomentsRenderer>();
         moments_->prepare(momentsKind(light));
     }
+    for (const LightShadow& light : lights_) {
+        if (light.settings.variant != Variant::Volume) continue;
+        if (!volumes_) {
+            volumes_ = std::make_unique<VolumeRenderer>();
+            materialsWithoutVolumes_ = volumes_->prepareScene(frame.scene());
+        }
+        for (const std::string& material : materialsWithoutVolumes_)
+            warnOnce(light, "alpha-tested material \"" + material +
+                                "\" casts no shadow volume (a volume cannot test a texture): use a map variant "
+                                "for this light where its cutouts matter");
+    }
     const PlanContext context = planContext(frame.scene(), frame.camera());
     std::vector<engine::ResourceHandle> maps;
     for (LightShadow& light : lights_) {
         // Each shadowed light samples its map on unit kFirstPluginTextureUnit + slot.
         const bool shadowed =
             planLight(light, context, engine::kFirstPluginTextureUnit + light.slot, maxTextureUnits_);
-        if (shadowed) {
+        if (shadowed && light.frame.kind == MapKind::Screen) {
+            const engine::ResourceHandle visibility =
+                addVolumePass(light, frame, *volumes_, *depth_, sceneGeneration_, cacheMaps_);
+            (light.frame.cacheHit ? cacheHits_ : cacheMisses_) += 1;
+            light.frame.map = visibility;
+            maps.push_back(visibility);
+        } else if (shadowed) {
             light.ensureMap();
             light.ensureMoments();
             planUnseenShadows(light, context);

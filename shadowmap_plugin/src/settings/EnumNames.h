@@ -3,7 +3,7 @@
 // parsing, printing and the allowed-values table all read.
 namespace shadowmap::names {
 
-inline constexpr const char* kVariants[] = {"standard", "woo", "backface", "none"};
+inline constexpr const char* kVariants[] = {"standard", "woo", "backface", "none", "volume"};
 inline constexpr const char* kDepthFormats[] = {"d16", "d24", "d32f"};
 inline constexpr const char* kFilters[] = {"nearest", "pcf", "pcss", "vsm", "evsm"};
 inline constexpr const char* kProjections[] = {"uniform", "lispsm"};

@@ -33,6 +33,9 @@ struct DepthPassStyle {
     // Also draw the receivers that cast no shadow (a --ground, a glTF cast_shadows: false):
     // Woo's peel, whose second layer must see them (DepthTechnique::drawsNonCastingReceivers).
     bool drawsNonCastingReceivers = false;
+    // Cull back faces of single-sided materials, as the lit pass draws them: the camera's depth
+    // for shadow volumes must hold the surface the lit pass will shade (plugin/VolumeRenderer.h).
+    bool cullsSingleSidedBackFaces = false;
     unsigned inputTexture = 0;
     std::vector<DepthUniform> uniforms;
     // Reversed Z (ShadowSettings reversed_z, d32f): glClipControl(GL_LOWER_LEFT,

@@ -92,6 +92,23 @@ bool planLight(LightState& light, const PlanContext& context, int textureUnit, i
         plan.skipReason = "the light emits nothing";
         return false;
     }
+    const auto noUnitLeft = [&] {
+        if (textureUnit < maxTextureUnits) return false;
+        plan.skipReason = "no texture unit left for its " +
+                          std::string(light.settings.variant == Variant::Volume ? "visibility" : "map") +
+                          " (GL_MAX_TEXTURE_IMAGE_UNITS " + std::to_string(maxTextureUnits) + ")";
+        plan.warnings.push_back(plan.skipReason);
+        return true;
+    };
+    if (light.settings.variant == Variant::Volume) {
+        // Exact and hard: no map, so nothing of a map's settings applies (said once).
+        if (light.settings.filter != Filter::Pcf && light.settings.filter != Filter::Nearest)
+            plan.warnings.push_back(std::string("variant volume gives hard shadows: filter \"") +
+                                    toString(light.settings.filter) + "\" ignored");
+        if (noUnitLeft()) return false;
+        plan.kind = MapKind::Screen;
+        return true;
+    }
     const bool directional = light.type == engine::Light::Type::Directional;
     // Cascades slice a directional light's parallel projection; a spot or point light's
     // perspective already spends its texels near the light (said once when set; auto is silent).
@@ -125,12 +142,7 @@ bool planLight(LightState& light, const PlanContext& context, int textureUnit, i
         plan.emptyFrustum = true;
         return false;
     }
-    if (textureUnit >= maxTextureUnits) {
-        plan.skipReason = "no texture unit left for its map (GL_MAX_TEXTURE_IMAGE_UNITS " +
-                          std::to_string(maxTextureUnits) + ")";
-        plan.warnings.push_back(plan.skipReason);
-        return false;
-    }
+    if (noUnitLeft()) return false;
     plan.kind = projection.kind();
     return true;
 }

@@ -29,4 +29,7 @@ std::string LightState::momentsRowsResource(int layer) const {
     return "shadow_moments_rows_" + std::to_string(slot) + layerSuffix(frame.kind, layer);
 }
 
+std::string LightState::visibilityResource() const { return "shadow_visibility_" + std::to_string(slot); }
+std::string LightState::volumePass() const { return "shadow_" + std::to_string(slot) + "_" + name + "_volumes"; }
+
 } // namespace shadowmap

@@ -17,8 +17,9 @@
 
 namespace shadowmap {
 
-// How the map is laid out and projected (one MapProjection each, Techniques.h).
-enum class MapKind { None = 0, Map2D = 1, Cube = 2, Cascades = 3 };
+// How the map is laid out and projected (one MapProjection each, Techniques.h). Screen: no
+// map, a visibility per camera pixel (variant volume: plugin/VolumePasses.h), no projection.
+enum class MapKind { None = 0, Map2D = 1, Cube = 2, Cascades = 3, Screen = 4 };
 
 struct LightShadowFrame {
     MapKind kind = MapKind::None;
@@ -37,6 +38,8 @@ struct LightShadowFrame {
     std::vector<std::string> warnings;
     int facesRendered = 0, facesSkipped = 0;
     std::uint64_t draws = 0, triangles = 0, castersCulled = 0;
+    // volume: the silhouette edges extruded and the cap triangles drawn this frame.
+    std::uint64_t silhouetteEdges = 0, capTriangles = 0;
     // Casters left out because their shadow reaches no visible receiver (UnseenShadows.h),
     // counted per layer drawn; and per map layer (layerIndex), which ones: empty when none is.
     std::uint64_t castersUnseen = 0;
@@ -83,6 +86,9 @@ struct LightState {
     std::string momentsPass(int layer) const;
     std::string momentsBlurPass(int layer) const;
     std::string momentsRowsResource(int layer) const;
+    // volume: its visibility per camera pixel as imported, and the pass that makes it.
+    std::string visibilityResource() const;
+    std::string volumePass() const;
 };
 
 } // namespace shadowmap

@@ -12,7 +12,10 @@
 
 namespace shadowmap {
 
-// The variant's technique; nullptr for Variant::None (no map).
+// Whether the variant's shadow comes from a depth map: not none (no shadow), not volume
+// (stenciled volumes per camera pixel: plugin/VolumeRenderer.h).
+inline bool usesDepthMap(Variant variant) { return variant != Variant::None && variant != Variant::Volume; }
+// The variant's technique; nullptr for the variants without a map (usesDepthMap).
 const DepthTechnique* depthTechnique(Variant variant);
 // Every depth technique's programs (DepthTechnique::programs), each once.
 std::vector<const DepthProgram*> depthPrograms();

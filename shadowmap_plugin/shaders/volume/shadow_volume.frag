@@ -1,0 +1,2 @@
+// Shadow volumes only count in the stencil buffer: no colour, no depth.
+void main() {}

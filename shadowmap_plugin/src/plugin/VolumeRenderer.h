@@ -1,0 +1,67 @@
+#pragma once
+// Stenciled shadow volumes (Everitt and Kilgard 2002) for the lights whose variant is volume:
+// the camera's depth (drawn once per frame), then per light its casters' volumes counted in
+// the stencil buffer with z-fail (Carmack's reverse: only the volume faces behind the nearest
+// surface count, so a camera standing inside a volume needs no special case), extruded to
+// infinity and depth-clamped, and the count resolved into the light's visibility texture
+// (1 where it is 0). Exact at every pixel centre, whatever the light's type or distance.
+//
+// The volumes are made on the CPU from each mesh's edge adjacency (math/ShadowVolumeMesh.h),
+// in camera-relative eye space composed in double.
+#include "math/ShadowVolumeMesh.h"
+#include "plugin/DepthRenderer.h"
+#include "plugin/LightShadow.h"
+
+#include "engine/gl/Buffer.h"
+#include "engine/gl/Framebuffer.h"
+#include "engine/gl/Program.h"
+#include "engine/gl/Texture.h"
+#include "engine/gl/VertexArray.h"
+#include "engine/render/Frame.h"
+
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace shadowmap {
+
+struct VolumeCounts {
+    std::uint64_t casters = 0;          // mesh instances that cast a volume
+    std::uint64_t volumeTriangles = 0;  // triangles drawn into the stencil buffer
+    std::uint64_t silhouetteEdges = 0;
+    std::uint64_t capTriangles = 0;
+};
+
+class VolumeRenderer {
+public:
+    VolumeRenderer();
+
+    // Each mesh's edge adjacency, from its casting primitives: once per scene. Returns the
+    // names of the alpha-tested materials left out (a volume has no texture to test).
+    std::vector<std::string> prepareScene(const engine::Scene& scene);
+
+    // Inside the light's volume pass: makes light.visibility for this frame's camera.
+    VolumeCounts render(const engine::Frame& frame, engine::PassContext& context, DepthRenderer& depth,
+                        const LightShadow& light);
+
+private:
+    void ensureTargets(int width, int height);
+    void drawCameraDepth(const engine::Frame& frame, engine::PassContext& context, DepthRenderer& depth);
+    // The volumes of every caster, in eye space, into scratch_.
+    VolumeCounts buildVolumes(const engine::Frame& frame, const LightShadow& light);
+    void upload();
+
+    std::vector<ShadowVolumeMesh> meshes_;  // per Scene::meshes; empty ones cast nothing
+    engine::gl::Program volumeProgram_, resolveProgram_;
+    engine::gl::Texture depthStencil_;
+    engine::gl::Framebuffer framebuffer_;
+    // The frame whose camera depth depthStencil_ holds (all volume lights of a frame share it).
+    std::uint64_t depthFrame_ = std::numeric_limits<std::uint64_t>::max();
+    engine::gl::Buffer points_;
+    std::size_t pointCapacity_ = 0;
+    engine::gl::VertexArray pointArray_, empty_;
+    std::vector<glm::vec4> scratch_;
+};
+
+} // namespace shadowmap

@@ -1,0 +1,164 @@
+// Stenciled shadow volumes (variant volume) against visibility computed analytically: boxes
+// over a floor slab lit by each light type, a grazing light, the camera inside a volume, an
+// open double-sided sheet and two intersecting boxes. Volumes are exact at pixel centres, so
+// pixels at the shadow's edges are evaluated too (edgeRadius 0), unlike the map tests.
+//
+// Tolerance: the bound, 0.02% of the evaluated floor pixels (2 of the ~10,000 here),
+// edges included. Measured on llvmpipe: see each test's comment.
+#include "../../gl/GlTestContext.h"
+#include "AnalyticShadows.h"
+
+#include <string>
+
+namespace {
+
+using engine::Light;
+using engine::test::SceneBuilder;
+
+constexpr int kWidth = 160, kHeight = 120;
+// A pixel centre on an analytic edge is decided by rounding on both sides (the truth's
+// segment test in double, the rasterizer's fixed-point coverage): 0.02% of the evaluated
+// pixels (2 here) is the bound volumes are held to.
+constexpr double kMaxWrongFraction = 0.0002;
+const engine::Aabb kFloor{{-10, -0.2, -10}, {10, 0, 10}};
+const engine::Aabb kBox{{-1, 1, -1}, {1, 3, 1}};
+const nlohmann::json kVolume = {{"variant", "volume"}};
+
+engine::FrameCamera overview() { return engine::test::cameraLooking({0, 16, 7}, {0, 0, 0.5}, kWidth, kHeight); }
+
+const auto kEverywhere = [](const glm::dvec3&) { return true; };
+
+// A square sheet of two triangles at height y, one-sided geometry with a double-sided
+// material: it shadows whichever side faces the light.
+int addSheet(SceneBuilder& builder, double y, double half) {
+    engine::Material twoSided = builder.scene.materials.front();
+    twoSided.doubleSided = true;
+    builder.scene.materials.push_back(twoSided);
+    engine::Primitive primitive;
+    const float h = static_cast<float>(half);
+    primitive.positions = {{-h, 0, -h}, {h, 0, -h}, {h, 0, h}, {-h, 0, h}};
+    primitive.normals.assign(4, {0, 1, 0});
+    primitive.indices = {0, 2, 1, 0, 3, 2};  // counter-clockwise seen from above
+    primitive.material = static_cast<int>(builder.scene.materials.size()) - 1;
+    engine::Mesh mesh;
+    mesh.name = "sheet";
+    mesh.primitives.push_back(primitive);
+    builder.scene.meshes.push_back(mesh);
+    engine::Node node;
+    node.name = "sheet";
+    node.mesh = static_cast<int>(builder.scene.meshes.size()) - 1;
+    node.local = glm::translate(glm::dmat4(1.0), glm::dvec3(0, y, 0));
+    return builder.addNode(node);
+}
+
+class ShadowVolume : public engine::test::ShadowPluginTest {
+protected:
+    static void SetUpTestSuite() { loadPlugin(nlohmann::json::object()); }
+
+    engine::test::MaskStats compare(const engine::Scene& scene, const engine::FrameCamera& camera,
+                                    const std::vector<engine::Aabb>& occluders,
+                                    const std::function<bool(const glm::dvec3&)>& inside = kEverywhere) {
+        const auto mask = engine::test::renderShadowMask(plugins(), scene, camera, 0);
+        return engine::test::compareFloorMask(mask, scene, 0, camera, occluders, 0.0, 9.9, inside, 0);
+    }
+};
+
+} // namespace
+
+TEST_F(ShadowVolume, SpotLightIsExactEdgesIncluded) {
+    SceneBuilder builder;
+    builder.addLight("spot", Light::Type::Spot, {-4, 8, -4}, {1.5, 0, 1.5}, kVolume);
+    builder.addBox("floor", kFloor.min, kFloor.max);
+    builder.addBox("box", kBox.min, kBox.max);
+    const engine::Scene scene = builder.build();
+    const glm::dvec3 apex(-4, 8, -4);
+    const glm::dvec3 axis = glm::normalize(glm::dvec3(1.5, 0, 1.5) - apex);
+    // Inside the cone (outside it the light reaches nothing, whatever the visibility says).
+    const auto inCone = [&](const glm::dvec3& p) { return std::acos(glm::dot(glm::normalize(p - apex), axis)) < 0.7; };
+    const auto result = compare(scene, overview(), {kFloor, kBox}, inCone);
+    EXPECT_GT(result.truthShadowed, 200);
+    EXPECT_GT(result.truthLit, 1000);
+    EXPECT_LE(result.wrongFraction(), kMaxWrongFraction);
+}
+
+TEST_F(ShadowVolume, DirectionalLightIsExactEdgesIncluded) {
+    SceneBuilder builder;
+    builder.addLight("sun", Light::Type::Directional, {-5, 6, -5}, {0, 0, 0}, kVolume);
+    builder.addBox("floor", kFloor.min, kFloor.max);
+    builder.addBox("box", kBox.min, kBox.max);
+    const auto result = compare(builder.build(), overview(), {kFloor, kBox});
+    EXPECT_GT(result.truthShadowed, 200);
+    EXPECT_LE(result.wrongFraction(), kMaxWrongFraction);
+}
+
+TEST_F(ShadowVolume, PointLightIsExactEdgesIncluded) {
+    SceneBuilder builder;
+    builder.addLight("bulb", Light::Type::Point, {0.3, 5, 0.2}, {0.3, 0, 0.2}, kVolume);
+    builder.addBox("floor", kFloor.min, kFloor.max);
+    builder.addBox("box", kBox.min, kBox.max);
+    const auto result = compare(builder.build(), overview(), {kFloor, kBox});
+    EXPECT_GT(result.truthShadowed, 200);
+    EXPECT_LE(result.wrongFraction(), kMaxWrongFraction);
+}
+
+// The sun 10 degrees above the horizon: a shadow five times longer than the box is tall,
+// whose sides meet the floor at a grazing angle.
+TEST_F(ShadowVolume, GrazingLightIsExactEdgesIncluded) {
+    SceneBuilder builder;
+    const double elevation = glm::radians(10.0);
+    builder.addLight("low sun", Light::Type::Directional, {-std::cos(elevation), std::sin(elevation), -0.3}, {0, 0, 0},
+                     kVolume);
+    builder.addBox("floor", kFloor.min, kFloor.max);
+    builder.addBox("box", kBox.min, kBox.max);
+    const auto result = compare(builder.build(), overview(), {kFloor, kBox});
+    EXPECT_GT(result.truthShadowed, 500);
+    EXPECT_LE(result.wrongFraction(), kMaxWrongFraction);
+}
+
+// The camera under the box, inside its volume, looking out across the floor: z-fail counts
+// only what lies behind the nearest surface, so the volume faces in front of the camera (or
+// clipped by its near plane) change nothing.
+TEST_F(ShadowVolume, CameraInsideAVolumeIsExact) {
+    SceneBuilder builder;
+    builder.addLight("bulb", Light::Type::Point, {0.3, 6, 0.2}, {0.3, 0, 0.2}, kVolume);
+    builder.addBox("floor", kFloor.min, kFloor.max);
+    builder.addBox("box", kBox.min, kBox.max);
+    const engine::FrameCamera camera = engine::test::cameraLooking({0.2, 0.6, 0.1}, {4, 0, 3}, kWidth, kHeight);
+    const auto result = compare(builder.build(), camera, {kFloor, kBox});
+    EXPECT_GT(result.truthShadowed, 200);
+    EXPECT_GT(result.truthLit, 200);
+    EXPECT_LE(result.wrongFraction(), kMaxWrongFraction);
+}
+
+// An open mesh: a double-sided sheet shadows the floor whether its triangles face the light
+// or face away from it (turned over by a half turn about x).
+TEST_F(ShadowVolume, OpenSheetShadowsWhicheverSideFacesTheLight) {
+    for (const bool turnedOver : {false, true}) {
+        SCOPED_TRACE(turnedOver ? "triangles facing away from the light" : "triangles facing the light");
+        SceneBuilder builder;
+        builder.addLight("bulb", Light::Type::Point, {0.4, 6, 0.3}, {0.4, 0, 0.3}, kVolume);
+        builder.addBox("floor", kFloor.min, kFloor.max);
+        const int sheet = addSheet(builder, 2.0, 1.0);
+        if (turnedOver)
+            builder.scene.nodes[sheet].local = glm::translate(glm::dmat4(1.0), glm::dvec3(0, 2, 0)) *
+                                               glm::rotate(glm::dmat4(1.0), glm::pi<double>(), glm::dvec3(1, 0, 0));
+        const engine::Aabb sheetBox{{-1, 2, -1}, {1, 2, 1}};
+        const auto result = compare(builder.build(), overview(), {kFloor, sheetBox});
+        EXPECT_GT(result.truthShadowed, 200);
+        EXPECT_LE(result.wrongFraction(), kMaxWrongFraction);
+    }
+}
+
+// Two boxes that overlap: a floor point behind both is inside two volumes (count 2), one
+// behind either inside one; every such point is shadowed.
+TEST_F(ShadowVolume, IntersectingCastersAreExact) {
+    SceneBuilder builder;
+    builder.addLight("sun", Light::Type::Directional, {-5, 6, -5}, {0, 0, 0}, kVolume);
+    builder.addBox("floor", kFloor.min, kFloor.max);
+    const engine::Aabb second{{0, 1.5, -0.5}, {2.5, 2.5, 0.5}};
+    builder.addBox("box", kBox.min, kBox.max);
+    builder.addBox("crossing box", second.min, second.max);
+    const auto result = compare(builder.build(), overview(), {kFloor, kBox, second});
+    EXPECT_GT(result.truthShadowed, 300);
+    EXPECT_LE(result.wrongFraction(), kMaxWrongFraction);
+}
