@@ -1,0 +1,279 @@
+#include "math/ShadowVolumeMesh.h"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstdlib>
+#include <numeric>
+#include <stdexcept>
+#include <string>
+#include <unordered_map>
+#include <utility>
+
+namespace shadowmap {
+
+namespace {
+
+constexpr std::uint32_t kUnset = 0xffffffffu;
+
+// A position's bits, -0 made +0 so that the two zeros weld (they are equal positions).
+struct WeldKey {
+    std::uint32_t x = 0, y = 0, z = 0;
+    bool operator==(const WeldKey&) const = default;
+};
+
+struct WeldKeyHash {
+    std::size_t operator()(const WeldKey& k) const noexcept {
+        std::uint64_t h = k.x * 0x9E3779B97F4A7C15ull;
+        h = (h ^ (h >> 29) ^ k.y) * 0xBF58476D1CE4E5B9ull;
+        h = (h ^ (h >> 31) ^ k.z) * 0x94D049BB133111EBull;
+        return std::size_t(h ^ (h >> 32));
+    }
+};
+
+std::uint32_t bitsOf(float f) { return std::bit_cast<std::uint32_t>(f == 0.0f ? 0.0f : f); }
+
+WeldKey keyOf(const glm::vec3& p) { return {bitsOf(p.x), bitsOf(p.y), bitsOf(p.z)}; }
+
+// Maps input vertices to welded ones. Only positions some triangle refers to are welded: every
+// frame transforms every welded vertex, so an unused one would be work for nothing.
+class Welder {
+public:
+    explicit Welder(const std::vector<glm::vec3>& positions)
+        : positions_(positions), welded_(positions.size(), kUnset) {}
+
+    std::uint32_t weld(std::uint32_t index) {
+        if (index >= positions_.size())
+            throw std::invalid_argument("shadow volume mesh: index " + std::to_string(index) + " out of range (" +
+                                        std::to_string(positions_.size()) + " positions)");
+        if (welded_[index] != kUnset) return welded_[index];
+        const glm::vec3& p = positions_[index];
+        if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+            throw std::invalid_argument("shadow volume mesh: position " + std::to_string(index) + " is not finite");
+        const auto [found, added] = byPosition_.try_emplace(keyOf(p), std::uint32_t(unique_.size()));
+        if (added) unique_.emplace_back(p);
+        welded_[index] = found->second;
+        return found->second;
+    }
+
+    std::vector<glm::dvec3> take() { return std::move(unique_); }
+
+private:
+    const std::vector<glm::vec3>& positions_;
+    std::vector<std::uint32_t> welded_;
+    std::unordered_map<WeldKey, std::uint32_t, WeldKeyHash> byPosition_;
+    std::vector<glm::dvec3> unique_;
+};
+
+// Union-find over triangles, to find a closed mesh's connected pieces.
+class Pieces {
+public:
+    explicit Pieces(std::size_t count) : parent_(count) { std::iota(parent_.begin(), parent_.end(), 0u); }
+
+    std::uint32_t root(std::uint32_t t) {
+        while (parent_[t] != t) t = parent_[t] = parent_[parent_[t]];
+        return t;
+    }
+
+    void join(std::uint32_t s, std::uint32_t t) { parent_[root(s)] = root(t); }
+
+private:
+    std::vector<std::uint32_t> parent_;
+};
+
+// The volume's vertices for one light, each welded vertex transformed once.
+struct TransformedVertices {
+    std::vector<glm::vec4> finite;    // toTarget * (p, 1)
+    std::vector<glm::vec4> extruded;  // toTarget * (p - light, 0); one shared entry for a directional light
+    bool directional = false;
+
+    const glm::vec4& atInfinity(std::uint32_t v) const { return extruded[directional ? 0 : v]; }
+};
+
+void emit(std::vector<glm::vec4>& out, const glm::vec4& a, const glm::vec4& b, const glm::vec4& c) {
+    out.push_back(a);
+    out.push_back(b);
+    out.push_back(c);
+}
+
+// The side quad on edge from -> to (the direction the volume's surface traverses it): the
+// triangles (from, to, to at infinity) and (from, to at infinity, from at infinity). For a
+// directional light the second is degenerate (both points at infinity are the same) and is
+// left out.
+void emitSideQuad(std::vector<glm::vec4>& out, const TransformedVertices& vertices, std::uint32_t from,
+                  std::uint32_t to) {
+    emit(out, vertices.finite[from], vertices.finite[to], vertices.atInfinity(to));
+    if (!vertices.directional) emit(out, vertices.finite[from], vertices.atInfinity(to), vertices.atInfinity(from));
+}
+
+} // namespace
+
+ShadowVolumeMesh::ShadowVolumeMesh(const std::vector<glm::vec3>& positions, const std::vector<std::uint32_t>& indices) {
+    if (indices.size() % 3 != 0)
+        throw std::invalid_argument("shadow volume mesh: " + std::to_string(indices.size()) +
+                                    " indices is not a whole number of triangles");
+    // Adjacency entries are 2 * triangle + 1 in 32 bits.
+    if (indices.size() / 3 >= 0x7fffffffu)
+        throw std::invalid_argument("shadow volume mesh: too many triangles");
+    Welder welder(positions);
+    corners_.reserve(indices.size() / 3);
+    for (std::size_t i = 0; i < indices.size(); i += 3) {
+        const glm::u32vec3 c{welder.weld(indices[i]), welder.weld(indices[i + 1]), welder.weld(indices[i + 2])};
+        if (c.x == c.y || c.y == c.z || c.z == c.x) continue;
+        corners_.push_back(c);
+    }
+    positions_ = welder.take();
+    normals_.reserve(corners_.size());
+    for (const glm::u32vec3& c : corners_) {
+        const glm::dvec3& a = positions_[c.x];
+        normals_.push_back(glm::cross(positions_[c.y] - a, positions_[c.z] - a));
+    }
+    buildEdges();
+    classifyClosed();
+}
+
+// Sorts the triangles' 3 * T directed edges by their undirected (a < b) pair, so each edge's
+// triangles end up together: deterministic, and with no per-edge allocation.
+void ShadowVolumeMesh::buildEdges() {
+    struct DirectedEdge {
+        std::uint64_t key;       // a << 32 | b, a < b
+        std::uint32_t adjacent;  // 2 * triangle + (1 when traversed b -> a)
+    };
+    std::vector<DirectedEdge> directed;
+    directed.reserve(3 * corners_.size());
+    for (std::uint32_t t = 0; t < corners_.size(); ++t) {
+        const glm::u32vec3& c = corners_[t];
+        const std::uint32_t from[3] = {c.x, c.y, c.z}, to[3] = {c.y, c.z, c.x};
+        for (int i = 0; i < 3; ++i) {
+            const std::uint32_t a = std::min(from[i], to[i]), b = std::max(from[i], to[i]);
+            directed.push_back({std::uint64_t(a) << 32 | b, 2 * t + (from[i] == a ? 0u : 1u)});
+        }
+    }
+    std::sort(directed.begin(), directed.end(), [](const DirectedEdge& l, const DirectedEdge& r) {
+        return l.key != r.key ? l.key < r.key : l.adjacent < r.adjacent;
+    });
+    adjacency_.reserve(directed.size());
+    for (std::size_t i = 0; i < directed.size(); ++i) {
+        if (i == 0 || directed[i].key != directed[i - 1].key)
+            edges_.push_back({std::uint32_t(directed[i].key >> 32), std::uint32_t(directed[i].key),
+                              std::uint32_t(adjacency_.size())});
+        adjacency_.push_back(directed[i].adjacent);
+    }
+}
+
+// closed(): every edge has two triangles, one each way. closedOutward(): also every connected
+// piece's signed volume (the sum of its triangles' tetrahedra to a corner of the piece) is not
+// negative beyond rounding; a flat closed piece (a sheet doubled back to back) has volume 0 and
+// still gets the classic volume, which is right for it.
+void ShadowVolumeMesh::classifyClosed() {
+    closed_ = true;
+    for (std::size_t e = 0; e < edges_.size() && closed_; ++e) {
+        const std::size_t begin = edges_[e].firstAdjacent;
+        const std::size_t end = e + 1 < edges_.size() ? edges_[e + 1].firstAdjacent : adjacency_.size();
+        closed_ = end - begin == 2 && (adjacency_[begin] & 1u) != (adjacency_[begin + 1] & 1u);
+    }
+    closedOutward_ = false;
+    if (!closed_) return;
+    Pieces pieces(corners_.size());
+    for (const Edge& edge : edges_)
+        pieces.join(adjacency_[edge.firstAdjacent] >> 1, adjacency_[edge.firstAdjacent + 1] >> 1);
+    struct PieceVolume {
+        double sum = 0.0, magnitude = 0.0;
+    };
+    std::unordered_map<std::uint32_t, PieceVolume> volumes;
+    for (std::uint32_t t = 0; t < corners_.size(); ++t) {
+        const std::uint32_t root = pieces.root(t);
+        const glm::dvec3& origin = positions_[corners_[root].x];
+        const glm::u32vec3& c = corners_[t];
+        const double tetrahedron = glm::dot(positions_[c.x] - origin, normals_[t]);
+        PieceVolume& volume = volumes[root];
+        volume.sum += tetrahedron;
+        volume.magnitude += std::abs(tetrahedron);
+    }
+    // 1e-9 of the terms' magnitudes: far above the sum's rounding (about 1e-16 per term), far
+    // below any piece that truly encloses space the wrong way round (its sum is of the order of
+    // its magnitude).
+    closedOutward_ = std::all_of(volumes.begin(), volumes.end(),
+                                 [](const auto& entry) { return entry.second.sum >= -1e-9 * entry.second.magnitude; });
+}
+
+ShadowVolumeCounts ShadowVolumeMesh::appendVolume(const glm::dvec4& light, const glm::dmat4& toTarget,
+                                                  std::vector<glm::vec4>& out) const {
+    ShadowVolumeCounts counts;
+    const bool directional = light.w == 0.0;
+    const glm::dvec3 lightPoint = directional ? glm::dvec3(0.0) : glm::dvec3(light) / light.w;
+    const glm::dvec3 towardLight = glm::dvec3(light);
+
+    // Which triangles face the light, in double: n . (light - a) > 0, or n . direction > 0.
+    std::vector<std::uint8_t> facing(corners_.size());
+    std::size_t facingCount = 0;
+    for (std::size_t t = 0; t < corners_.size(); ++t) {
+        const glm::dvec3 toLight = directional ? towardLight : lightPoint - positions_[corners_[t].x];
+        facing[t] = glm::dot(normals_[t], toLight) > 0.0;
+        facingCount += facing[t];
+    }
+
+    TransformedVertices vertices;
+    vertices.directional = directional;
+    vertices.finite.resize(positions_.size());
+    vertices.extruded.resize(directional ? 1 : positions_.size());
+    for (std::size_t v = 0; v < positions_.size(); ++v)
+        vertices.finite[v] = glm::vec4(toTarget * glm::dvec4(positions_[v], 1.0));
+    if (directional)
+        vertices.extruded[0] = glm::vec4(toTarget * glm::dvec4(-towardLight, 0.0));
+    else
+        for (std::size_t v = 0; v < positions_.size(); ++v)
+            vertices.extruded[v] = glm::vec4(toTarget * glm::dvec4(positions_[v] - lightPoint, 0.0));
+
+    // The classic volume's far cap is the non-facing triangles as they are; the summed
+    // per-triangle volumes' far caps are every triangle turned to face the light, reversed.
+    // Either way a far cap triangle is (x, y, z) or (x, z, y) at infinity; none for a
+    // directional light, where all three corners are the same point.
+    const bool classic = closedOutward_;
+    const std::size_t nearCount = classic ? facingCount : corners_.size();
+    const std::size_t farCount = directional ? 0 : (classic ? corners_.size() - facingCount : corners_.size());
+    out.reserve(out.size() + 3 * (nearCount + farCount));
+    for (std::size_t t = 0; t < corners_.size(); ++t) {
+        const glm::u32vec3& c = corners_[t];
+        if (facing[t])
+            emit(out, vertices.finite[c.x], vertices.finite[c.y], vertices.finite[c.z]);
+        else if (!classic)
+            emit(out, vertices.finite[c.x], vertices.finite[c.z], vertices.finite[c.y]);
+        if (directional || (classic && facing[t])) continue;
+        if (facing[t])
+            emit(out, vertices.atInfinity(c.x), vertices.atInfinity(c.z), vertices.atInfinity(c.y));
+        else
+            emit(out, vertices.atInfinity(c.x), vertices.atInfinity(c.y), vertices.atInfinity(c.z));
+    }
+    counts.capTriangles = nearCount + farCount;
+
+    // Side quads. Each near cap triangle traverses its edges one way; the surface closes with
+    // a quad traversing the edge the other way. The edge's multiplicity m sums, over its
+    // triangles that have a near cap, +1 for a cap traversing it a -> b, -1 for b -> a (a
+    // classic silhouette edge: +-1; a summed edge: what does not cancel). m > 0: |m| quads on
+    // b -> a; m < 0: |m| quads on a -> b.
+    for (std::size_t e = 0; e < edges_.size(); ++e) {
+        const std::size_t begin = edges_[e].firstAdjacent;
+        const std::size_t end = e + 1 < edges_.size() ? edges_[e + 1].firstAdjacent : adjacency_.size();
+        long m = 0;
+        for (std::size_t i = begin; i < end; ++i) {
+            const std::uint32_t t = adjacency_[i] >> 1;
+            const long way = (adjacency_[i] & 1u) ? -1 : 1;
+            if (facing[t])
+                m += way;
+            else if (!classic)
+                m -= way;
+        }
+        const Edge& edge = edges_[e];
+        for (long k = 0; k < std::labs(m); ++k) {
+            if (m > 0)
+                emitSideQuad(out, vertices, edge.b, edge.a);
+            else
+                emitSideQuad(out, vertices, edge.a, edge.b);
+        }
+        counts.silhouetteEdges += std::uint64_t(std::labs(m));
+    }
+    return counts;
+}
+
+} // namespace shadowmap

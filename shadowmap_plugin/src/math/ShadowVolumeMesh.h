@@ -1,0 +1,105 @@
+#pragma once
+// Stenciled shadow volumes (Everitt & Kilgard, "Practical and Robust Stenciled Shadow Volumes
+// for Hardware-Accelerated Rendering", 2002) built on the CPU from a triangle mesh: the
+// triangles of the closed surface that bounds the region a mesh shadows from one light, for the
+// z-fail (Carmack's reverse) stencil count. No GL: the plugin draws what appendVolume() emits.
+//
+// Extrusion to infinity: each extruded vertex is a homogeneous point with w = 0 (the direction
+// away from the light), so the volume is closed without a far distance and a projection with an
+// infinite far plane never clips it. The mesh's edge adjacency is built once at load; each
+// frame only classifies the triangles and walks the edges, O(triangles + edges).
+//
+// Two formulations, chosen per mesh at load:
+//  - Closed and wound outward (closedOutward()): the classic volume. The near cap is the
+//    triangles that face the light, the far cap the others extruded to infinity, and a side quad
+//    stands on each silhouette edge (between a facing and a non-facing triangle). Inside it the
+//    count is the number of times the segment from the light (the ray toward a directional
+//    light) enters the solid: 0 when lit, 1 behind a convex caster. The less fill of the two.
+//  - Anything else (open, non-manifold, or a closed piece wound inward such as a single-shell
+//    room seen from inside): the sum of every triangle's own volume. Each triangle is turned to
+//    face the light; its near cap is itself, its far cap itself extruded with reversed winding;
+//    the side quads of one edge from all its triangles are summed, so an edge inside a region
+//    that faces one way cancels and an edge where the surface folds away from the light gets
+//    two quads. Inside it the count is the number of triangles the segment from the light
+//    crosses, whichever side faces the light: a two-sided sheet shadows from both sides. The
+//    classic volume would be wrong here: it needs a closed boundary, and it counts entries into
+//    the solid the fronts face away from, which for an inward-wound room is the world outside:
+//    lit from inside, the whole room would count -1 and the outside 0; lit from outside, the
+//    room 0. Non-zero means shadowed in both formulations, as the z-fail stencil test asks.
+// A light inside the solid of a closed outward mesh (a point light inside a closed bulb) gives
+// the count 1 everywhere outside it: shadowed, as an opaque shell around the light would.
+//
+// Winding: every emitted triangle is counter-clockwise seen from outside the volume it bounds,
+// in the mesh's object space, so the count is +1 inside (what the stencil ops assume). When
+// toTarget mirrors (negative determinant), the caller flips the front face as for any mirrored
+// draw. The math is in double so that a mesh far from the origin, carried to camera-relative
+// coordinates by toTarget, loses nothing before the single rounding to float.
+//
+// Directional lights extrude every vertex to the same point at infinity, so the far cap and
+// one of the two triangles of each side quad are degenerate by construction; they are not
+// emitted, to save fill.
+#include <glm/glm.hpp>
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace shadowmap {
+
+struct ShadowVolumeCounts {
+    std::uint64_t silhouetteEdges = 0;  // side quads emitted (an edge of multiplicity 2 counts 2)
+    std::uint64_t capTriangles = 0;     // near + far cap triangles emitted
+};
+
+// A mesh's edge adjacency, built once at load, from which each frame's volume is extruded.
+class ShadowVolumeMesh {
+public:
+    ShadowVolumeMesh() = default;
+    // positions: object space; indices: a triangle list (3 per triangle) into positions.
+    // Vertices are welded by exact position equality first (glTF splits vertices by normal/UV;
+    // -0 and +0 are equal). Degenerate triangles (two equal welded corners) are dropped.
+    // Throws std::invalid_argument when indices.size() is not a multiple of 3, an index is out
+    // of range, or a used position is not finite.
+    ShadowVolumeMesh(const std::vector<glm::vec3>& positions, const std::vector<std::uint32_t>& indices);
+
+    // Every edge has exactly two triangles that traverse it in opposite directions.
+    bool closed() const { return closed_; }
+    // closed() and every connected piece encloses a non-negative volume (wound outward): the
+    // meshes that get the classic volume.
+    bool closedOutward() const { return closedOutward_; }
+    std::size_t triangleCount() const { return corners_.size(); }
+    std::size_t edgeCount() const { return edges_.size(); }
+    std::size_t vertexCount() const { return positions_.size(); }  // after welding
+
+    // Appends the shadow volume's triangles to `out` as homogeneous points: each finite vertex
+    // is toTarget * (p, 1), each extruded vertex at infinity is toTarget * (p - light.xyz, 0) for
+    // a light at a point (light.w == 1), or toTarget * (-light.xyz, 0) for a directional light
+    // (light.w == 0, light.xyz = direction TOWARD the light). `light` is in the mesh's object
+    // space. All math in double; the output rounded to float at the end.
+    // Every emitted triangle is wound counter-clockwise seen from outside the volume it bounds.
+    // A light exactly at a vertex extrudes that vertex to (0, 0, 0, 0): keep lights off casters.
+    ShadowVolumeCounts appendVolume(const glm::dvec4& light, const glm::dmat4& toTarget,
+                                    std::vector<glm::vec4>& out) const;
+
+private:
+    // An undirected edge between welded vertices a < b; its triangles are
+    // adjacency_[firstAdjacent .. next edge's firstAdjacent), each 2 * triangle + (1 when that
+    // triangle traverses the edge b -> a, 0 when a -> b).
+    struct Edge {
+        std::uint32_t a = 0, b = 0;
+        std::uint32_t firstAdjacent = 0;
+    };
+
+    void buildEdges();
+    void classifyClosed();
+
+    std::vector<glm::dvec3> positions_;                // welded, object space
+    std::vector<glm::u32vec3> corners_;                // per triangle, welded indices, as given
+    std::vector<glm::dvec3> normals_;                  // per triangle, cross(b - a, c - a)
+    std::vector<Edge> edges_;
+    std::vector<std::uint32_t> adjacency_;             // see Edge; one past the last: adjacency_.size()
+    bool closed_ = false;
+    bool closedOutward_ = false;
+};
+
+} // namespace shadowmap
