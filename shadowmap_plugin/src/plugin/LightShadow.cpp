@@ -178,6 +178,7 @@ engine::ShadowView LightShadow::view() const {
     // volume: no map to show; its passes still say what it cost.
     out.hasMap = frame.kind != MapKind::None && frame.kind != MapKind::Screen;
     if (frame.kind == MapKind::Screen) {
+        out.hasScreenVisibility = true;
         out.renderedThisFrame = !frame.cacheHit;
         out.passes = frame.passes;
     }

@@ -51,7 +51,8 @@ std::vector<SettingKey> makeKeys() {
     variant.choices = choicesOf(names::kVariants);
     variant.description = "how the light's map is made: `standard` one depth pass with polygon offset, "
                           "`woo` the midpoint of the first two layers, `backface` back faces only "
-                          "(closed meshes), `none` no shadow and no pass";
+                          "(closed meshes), `none` no shadow and no pass, `volume` no map: stenciled shadow "
+                          "volumes, exact hard shadows per camera pixel";
     keys.push_back(variant);
 
     SettingKey resolution = makeKey("resolution", SettingKind::Integer);

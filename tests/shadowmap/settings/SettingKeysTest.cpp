@@ -26,7 +26,7 @@ TEST(SettingKeys, EveryChoiceParsesAndPrintsBackTheSame) {
     }
     // The enums' every value, in declaration order (the order tools cycle through).
     EXPECT_EQ(shadowmap::settingKey("variant").choices,
-              (std::vector<std::string>{"standard", "woo", "backface", "none"}));
+              (std::vector<std::string>{"standard", "woo", "backface", "none", "volume"}));
     EXPECT_EQ(shadowmap::settingKey("depth_format").choices, (std::vector<std::string>{"d16", "d24", "d32f"}));
     EXPECT_EQ(shadowmap::settingKey("filter").choices, (std::vector<std::string>{"nearest", "pcf", "pcss", "vsm", "evsm"}));
 }

@@ -80,7 +80,7 @@ TEST(ShadowSettingsErrors, ShadowDistanceAndFadeOutOfRangeAreNamed) {
 
 TEST(ShadowSettingsErrors, BadChoicesNameTheKnownValues) {
     expectNamed({"variant", {{"variant", "soft"}}, "variant",
-                 "unknown variant \"soft\" (known: standard, woo, backface, none)"});
+                 "unknown variant \"soft\" (known: standard, woo, backface, none, volume)"});
     expectNamed({"variant type", {{"variant", 3}}, "variant", "must be a string"});
     expectNamed({"depth format", {{"depth_format", "d32"}}, "depth_format",
                  "unknown depth format \"d32\" (known: d16, d24, d32f)"});
@@ -262,7 +262,7 @@ TEST(ShadowSettingsErrors, ACommandLineVariantNamesItsFlag) {
         FAIL() << "no error";
     } catch (const engine::InputError& error) {
         EXPECT_STREQ(error.what(), "--light sun=soft: variant: unknown variant \"soft\" (known: standard, woo, "
-                                   "backface, none)");
+                                   "backface, none, volume)");
     }
 }
 

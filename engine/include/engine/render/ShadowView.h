@@ -29,7 +29,7 @@ struct ShadowView {
     // instances may share one, or have none.
     int slot = -1;
     std::string name;
-    std::string variant;  // for people: "standard", "woo", "backface" or "none"
+    std::string variant;  // for people: "standard", "woo", "backface", "none" or "volume"
     bool castsShadows = false;  // the light is shadowed at all (its variant is not "none")
     // The effective per-light settings, keyed as in glTF extras.shadow: the plugin's to write
     // and to read (the shadow plugin's shadowmap/ShadowViewSettings.h: usedSettings), so
@@ -41,6 +41,9 @@ struct ShadowView {
     double angularDiameter = 0.0;  // directional lights: the cone's apex angle, radians
     // The map this frame; without one, skipReason says why (variant none, nothing in view...).
     bool hasMap = false;
+    // No map, but a visibility per camera pixel made this frame or kept from the last
+    // (stenciled shadow volumes): renderedThisFrame and passes say what it cost.
+    bool hasScreenVisibility = false;
     std::string skipReason;
     bool cube = false;                  // six layers, one per cube face
     std::vector<ShadowMapLayer> layers; // 1 (2D), 6 (cube) or one per cascade; empty without a map
@@ -60,8 +63,10 @@ struct ShadowView {
     std::vector<PassId> passes;
 };
 
-// The kind of `view`'s map as the tools report it: "none", "cube", "cascades" or "2d".
+// The kind of `view`'s map as the tools report it: "none", "cube", "cascades", "2d", or
+// "volumes" for a visibility per camera pixel.
 inline const char* mapKindName(const ShadowView& view) {
+    if (view.hasScreenVisibility) return "volumes";
     return !view.hasMap ? "none" : view.cube ? "cube" : view.cascadeSplits.empty() ? "2d" : "cascades";
 }
 
