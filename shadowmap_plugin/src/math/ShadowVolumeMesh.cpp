@@ -51,18 +51,23 @@ public:
         if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
             throw std::invalid_argument("shadow volume mesh: position " + std::to_string(index) + " is not finite");
         const auto [found, added] = byPosition_.try_emplace(keyOf(p), std::uint32_t(unique_.size()));
-        if (added) unique_.emplace_back(p);
+        if (added) {
+            unique_.emplace_back(p);
+            sources_.push_back(index);
+        }
         welded_[index] = found->second;
         return found->second;
     }
 
-    std::vector<glm::dvec3> take() { return std::move(unique_); }
+    std::vector<glm::dvec3> takePositions() { return std::move(unique_); }
+    std::vector<std::uint32_t> takeSources() { return std::move(sources_); }
 
 private:
     const std::vector<glm::vec3>& positions_;
     std::vector<std::uint32_t> welded_;
     std::unordered_map<WeldKey, std::uint32_t, WeldKeyHash> byPosition_;
     std::vector<glm::dvec3> unique_;
+    std::vector<std::uint32_t> sources_;  // per welded vertex, the input vertex it was first welded from
 };
 
 // Union-find over triangles, to find a closed mesh's connected pieces.
@@ -89,6 +94,17 @@ struct TransformedVertices {
 
     const glm::vec4& atInfinity(std::uint32_t v) const { return extruded[directional ? 0 : v]; }
 };
+
+// cross(b - a, c - a) per triangle: the normals the facing test reads.
+void computeNormals(const std::vector<glm::dvec3>& positions, const std::vector<glm::u32vec3>& corners,
+                    std::vector<glm::dvec3>& normals) {
+    normals.resize(corners.size());
+    for (std::size_t t = 0; t < corners.size(); ++t) {
+        const glm::u32vec3& c = corners[t];
+        const glm::dvec3& a = positions[c.x];
+        normals[t] = glm::cross(positions[c.y] - a, positions[c.z] - a);
+    }
+}
 
 void emit(std::vector<glm::vec4>& out, const glm::vec4& a, const glm::vec4& b, const glm::vec4& c) {
     out.push_back(a);
@@ -122,12 +138,10 @@ ShadowVolumeMesh::ShadowVolumeMesh(const std::vector<glm::vec3>& positions, cons
         if (c.x == c.y || c.y == c.z || c.z == c.x) continue;
         corners_.push_back(c);
     }
-    positions_ = welder.take();
-    normals_.reserve(corners_.size());
-    for (const glm::u32vec3& c : corners_) {
-        const glm::dvec3& a = positions_[c.x];
-        normals_.push_back(glm::cross(positions_[c.y] - a, positions_[c.z] - a));
-    }
+    positions_ = welder.takePositions();
+    sources_ = welder.takeSources();
+    inputVertexCount_ = positions.size();
+    computeNormals(positions_, corners_, normals_);
     buildEdges();
     classifyClosed();
 }
@@ -199,6 +213,32 @@ void ShadowVolumeMesh::classifyClosed() {
 
 ShadowVolumeCounts ShadowVolumeMesh::appendVolume(const glm::dvec4& light, const glm::dmat4& toTarget,
                                                   std::vector<glm::vec4>& out) const {
+    return emitVolume(light, toTarget, positions_, normals_, out);
+}
+
+// The posed positions and normals are made in locals, like the other per-call buffers of
+// emitVolume(): the method stays const and safe to call from several threads at once, for a
+// cost (two allocations the size of the welded vertices and of the triangles) that is small
+// beside the work on them (see PrintsTimeForLargeSphere).
+ShadowVolumeCounts ShadowVolumeMesh::appendVolume(const glm::dvec4& light, const glm::dmat4& toTarget,
+                                                  const std::vector<glm::vec3>& posed,
+                                                  std::vector<glm::vec4>& out) const {
+    if (posed.size() != inputVertexCount_)
+        throw std::invalid_argument("shadow volume mesh: " + std::to_string(posed.size()) +
+                                    " posed positions for a mesh built from " + std::to_string(inputVertexCount_));
+    std::vector<glm::dvec3> positions(sources_.size());
+    for (std::size_t v = 0; v < sources_.size(); ++v) positions[v] = glm::dvec3(posed[sources_[v]]);
+    std::vector<glm::dvec3> normals;
+    computeNormals(positions, corners_, normals);
+    return emitVolume(light, toTarget, positions, normals, out);
+}
+
+// positions: per welded vertex; normals: per triangle of corners_, cross(b - a, c - a) of those
+// positions. Everything else (corners_, edges_, adjacency_, closedOutward_) is the mesh's.
+ShadowVolumeCounts ShadowVolumeMesh::emitVolume(const glm::dvec4& light, const glm::dmat4& toTarget,
+                                                const std::vector<glm::dvec3>& positions,
+                                                const std::vector<glm::dvec3>& normals,
+                                                std::vector<glm::vec4>& out) const {
     ShadowVolumeCounts counts;
     const bool directional = light.w == 0.0;
     const glm::dvec3 lightPoint = directional ? glm::dvec3(0.0) : glm::dvec3(light) / light.w;
@@ -208,22 +248,22 @@ ShadowVolumeCounts ShadowVolumeMesh::appendVolume(const glm::dvec4& light, const
     std::vector<std::uint8_t> facing(corners_.size());
     std::size_t facingCount = 0;
     for (std::size_t t = 0; t < corners_.size(); ++t) {
-        const glm::dvec3 toLight = directional ? towardLight : lightPoint - positions_[corners_[t].x];
-        facing[t] = glm::dot(normals_[t], toLight) > 0.0;
+        const glm::dvec3 toLight = directional ? towardLight : lightPoint - positions[corners_[t].x];
+        facing[t] = glm::dot(normals[t], toLight) > 0.0;
         facingCount += facing[t];
     }
 
     TransformedVertices vertices;
     vertices.directional = directional;
-    vertices.finite.resize(positions_.size());
-    vertices.extruded.resize(directional ? 1 : positions_.size());
-    for (std::size_t v = 0; v < positions_.size(); ++v)
-        vertices.finite[v] = glm::vec4(toTarget * glm::dvec4(positions_[v], 1.0));
+    vertices.finite.resize(positions.size());
+    vertices.extruded.resize(directional ? 1 : positions.size());
+    for (std::size_t v = 0; v < positions.size(); ++v)
+        vertices.finite[v] = glm::vec4(toTarget * glm::dvec4(positions[v], 1.0));
     if (directional)
         vertices.extruded[0] = glm::vec4(toTarget * glm::dvec4(-towardLight, 0.0));
     else
-        for (std::size_t v = 0; v < positions_.size(); ++v)
-            vertices.extruded[v] = glm::vec4(toTarget * glm::dvec4(positions_[v] - lightPoint, 0.0));
+        for (std::size_t v = 0; v < positions.size(); ++v)
+            vertices.extruded[v] = glm::vec4(toTarget * glm::dvec4(positions[v] - lightPoint, 0.0));
 
     // The classic volume's far cap is the non-facing triangles as they are; the summed
     // per-triangle volumes' far caps are every triangle turned to face the light, reversed.

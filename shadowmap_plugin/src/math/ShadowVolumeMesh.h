@@ -81,6 +81,44 @@ public:
     ShadowVolumeCounts appendVolume(const glm::dvec4& light, const glm::dmat4& toTarget,
                                     std::vector<glm::vec4>& out) const;
 
+    // The same volume for the mesh posed: `posed` holds a position per input vertex (the
+    // constructor's `positions` indexing, same size), e.g. a skinned or morphed pose. The
+    // adjacency (welding, edges, closedness) is the one built from the rest positions; each welded
+    // vertex takes the posed position of the input vertex it was first welded from. Throws
+    // std::invalid_argument when posed.size() differs from the constructor's positions.size().
+    // Posed with the rest positions, the output is the other overload's, bit for bit.
+    //
+    // Seams: input vertices welded at rest may be posed apart (copies of a seam vertex with
+    // different skin weights or morph targets). They stay one vertex, at the posed position of
+    // the first of them the indices refer to (in index order); the other copies' posed positions
+    // are not read, so the surface cannot tear at a seam and a closed mesh stays closed by
+    // construction. Positions no triangle uses are not read either. Posed positions are not
+    // checked: a non-finite one gives non-finite output. Triangles dropped at rest stay dropped;
+    // one the pose collapses faces no light and shadows nothing, as its geometry says.
+    //
+    // Folds: closedOutward(), and so the formulation, is decided at rest and kept: a pose keeps
+    // the topology, so the posed surface is still closed and consistently wound, but it may cross
+    // itself or turn inside out. The summed per-triangle volumes count the triangles crossed
+    // whatever the pose: exact. The classic volume counts, at a point q, the triangles facing the
+    // light that the segment from q to the light crosses, plus the posed surface's winding number
+    // at the light (0 outside the solid and for a directional light); equivalently w(q) + n(q),
+    // w(q) the posed surface's winding number at q, n(q) the triangles facing away from the light
+    // that the segment crosses. With the light outside the solid:
+    //  - A pose that folds the surface into itself without turning any of it inside out (an arm
+    //    crossing the body: w = 2 in the overlap) keeps w >= 0 everywhere, and the count is
+    //    non-zero exactly in shadow, as at rest (2 behind the overlap).
+    //  - A pose that turns part of the surface inside out (a face pushed through the opposite one,
+    //    skin folded over itself at a joint bent too far) makes w < 0 in that part. Outside it the
+    //    count stays right; inside it, it is 0 wherever the segment crosses only triangles facing
+    //    away from the light: points in shadow there read as lit. Those counts are wrong, and a
+    //    per-frame signed volume would not catch it (a small turned part leaves it positive).
+    // The rest overload's caveats (light inside the solid, light at a vertex) hold as well.
+    // Const and thread-safe like the rest overload: the posed positions and normals go in per-call
+    // buffers. Each call gathers the pose and recomputes the triangles' normals: O(vertices +
+    // triangles) on top of the rest overload's work.
+    ShadowVolumeCounts appendVolume(const glm::dvec4& light, const glm::dmat4& toTarget,
+                                    const std::vector<glm::vec3>& posed, std::vector<glm::vec4>& out) const;
+
 private:
     // An undirected edge between welded vertices a < b; its triangles are
     // adjacency_[firstAdjacent .. next edge's firstAdjacent), each 2 * triangle + (1 when that
@@ -92,8 +130,15 @@ private:
 
     void buildEdges();
     void classifyClosed();
+    // The one implementation of both appendVolume() overloads. positions: per welded vertex;
+    // normals: per triangle, cross(b - a, c - a) of those positions.
+    ShadowVolumeCounts emitVolume(const glm::dvec4& light, const glm::dmat4& toTarget,
+                                  const std::vector<glm::dvec3>& positions, const std::vector<glm::dvec3>& normals,
+                                  std::vector<glm::vec4>& out) const;
 
     std::vector<glm::dvec3> positions_;                // welded, object space
+    std::vector<std::uint32_t> sources_;               // per welded vertex, the input vertex first welded into it
+    std::size_t inputVertexCount_ = 0;                 // the constructor's positions.size()
     std::vector<glm::u32vec3> corners_;                // per triangle, welded indices, as given
     std::vector<glm::dvec3> normals_;                  // per triangle, cross(b - a, c - a)
     std::vector<Edge> edges_;
