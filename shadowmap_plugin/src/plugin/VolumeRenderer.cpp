@@ -129,17 +129,17 @@ VolumeCounts VolumeRenderer::buildVolumes(const engine::Frame& frame, const Ligh
     scratch_.clear();
     for (const engine::MeshInstance& instance : scene.meshInstances) {
         if (!instance.castShadows || instance.mesh < 0) continue;
-        const engine::Mesh& mesh = scene.meshes[instance.mesh];
+        const ShadowVolumeMesh& volumeMesh = meshes_[instance.mesh];
+        if (volumeMesh.triangleCount() == 0) continue;
         ShadowVolumeCounts added;
         if (instance.deformed) {
-            // Posed vertices are relative to the deformed mesh's origin, in the frame `world`.
+            // The pose moves the vertices, not the adjacency built at load. Posed vertices are
+            // relative to the deformed mesh's origin, in the frame `world`.
             const glm::dmat4 model = glm::translate(instance.world, instance.deformed->origin);
-            const CastingGeometry posed = castingGeometry(scene, mesh, instance.deformed.get());
-            const ShadowVolumeMesh volumeMesh(posed.positions, posed.indices);
-            added = volumeMesh.appendVolume(lightInObject(placed, light.type, model), viewMatrix * model, scratch_);
+            const CastingGeometry posed = castingGeometry(scene, scene.meshes[instance.mesh], instance.deformed.get());
+            added = volumeMesh.appendVolume(lightInObject(placed, light.type, model), viewMatrix * model,
+                                            posed.positions, scratch_);
         } else {
-            const ShadowVolumeMesh& volumeMesh = meshes_[instance.mesh];
-            if (volumeMesh.triangleCount() == 0) continue;
             added = volumeMesh.appendVolume(lightInObject(placed, light.type, instance.world),
                                             viewMatrix * instance.world, scratch_);
         }
