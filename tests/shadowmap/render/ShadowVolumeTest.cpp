@@ -162,3 +162,54 @@ TEST_F(ShadowVolume, IntersectingCastersAreExact) {
     EXPECT_GT(result.truthShadowed, 300);
     EXPECT_LE(result.wrongFraction(), kMaxWrongFraction);
 }
+
+// The same scene 10^7 units up, where float spacing is 1.0: the volumes are composed in
+// double and rounded to float relative to the camera, so the shadow is as exact as at 0.
+TEST_F(ShadowVolume, CastersFarFromTheOriginAreExact) {
+    const glm::dvec3 far(0, 1e7, 0);
+    SceneBuilder builder;
+    builder.addLight("bulb", Light::Type::Point, glm::dvec3(0.3, 5, 0.2) + far, glm::dvec3(0.3, 0, 0.2) + far, kVolume);
+    const engine::Aabb floor{kFloor.min + far, kFloor.max + far}, box{kBox.min + far, kBox.max + far};
+    builder.addBox("floor", floor.min, floor.max);
+    builder.addBox("box", box.min, box.max);
+    const engine::Scene scene = builder.build();
+    const engine::FrameCamera camera =
+        engine::test::cameraLooking(glm::dvec3(0, 16, 7) + far, glm::dvec3(0, 0, 0.5) + far, kWidth, kHeight);
+    const auto mask = engine::test::renderShadowMask(plugins(), scene, camera, 0);
+    const auto result = engine::test::compareFloorMask(mask, scene, 0, camera, {floor, box}, far.y, 9.9, kEverywhere, 0);
+    EXPECT_GT(result.truthShadowed, 200);
+    EXPECT_LE(result.wrongFraction(), kMaxWrongFraction);
+}
+
+// A still camera, light and scene keep the visibility of the frame before: no volume pass.
+// Moving the light makes it again, and the mask follows.
+TEST_F(ShadowVolume, AStillFrameReusesTheVisibilityAndAMovedLightRemakesIt) {
+    SceneBuilder builder;
+    builder.addLight("sun", Light::Type::Directional, {-5, 6, -5}, {0, 0, 0}, kVolume);
+    builder.addBox("floor", kFloor.min, kFloor.max);
+    builder.addBox("box", kBox.min, kBox.max);
+    engine::Scene scene = builder.build();
+    engine::Renderer renderer({}, plugins());
+    renderer.setScene(scene);
+    engine::FrameRequest request;
+    request.camera = overview();
+    request.shadowMaskSlots = {0};
+    const auto rendered = [&] {
+        const engine::FrameResult result = renderer.renderFrame(request);
+        EXPECT_EQ(result.shadowViews.size(), 1u);
+        EXPECT_TRUE(result.shadowViews.at(0).hasScreenVisibility);
+        return result.shadowViews.at(0).renderedThisFrame;
+    };
+    EXPECT_TRUE(rendered());
+    const std::vector<std::uint8_t> first = renderer.readShadowMask(0);
+    EXPECT_FALSE(rendered());
+    EXPECT_EQ(renderer.readShadowMask(0), first);
+
+    scene.nodes[0].local = engine::test::placeLooking({5, 6, -5}, {0, 0, 0});
+    scene.updateWorldTransforms();
+    EXPECT_TRUE(rendered());
+    const auto moved = engine::test::compareFloorMask(renderer.readShadowMask(0), scene, 0, overview(),
+                                                      {kFloor, kBox}, 0.0, 9.9, kEverywhere, 0);
+    EXPECT_GT(moved.truthShadowed, 200);
+    EXPECT_LE(moved.wrongFraction(), kMaxWrongFraction);
+}
