@@ -4,7 +4,45 @@
 #include "engine/scene/SceneNames.h"
 #include "engine/util/Error.h"
 
+#include <set>
+
 namespace shadowmap {
+
+namespace {
+
+// The materials of the primitives that cast a shadow through an alpha test.
+std::vector<std::string> alphaTestedCasterMaterials(const engine::Scene& scene) {
+    std::set<int> materials;
+    for (const engine::MeshInstance& instance : scene.meshInstances) {
+        if (!instance.castShadows || instance.mesh < 0) continue;
+        for (const engine::Primitive& primitive : scene.meshes[instance.mesh].primitives)
+            if (primitive.castShadows && primitive.material >= 0 &&
+                engine::castsAlphaTested(scene.materials[primitive.material]))
+                materials.insert(primitive.material);
+    }
+    std::vector<std::string> names;
+    for (int material : materials) {
+        const std::string& name = scene.materials[material].name;
+        names.push_back(name.empty() ? "material " + std::to_string(material) : name);
+    }
+    return names;
+}
+
+// A shadow volume is made of triangles and cannot test a texture: a light whose casters
+// include alpha-tested ones gets a standard map instead, so its cutouts shadow right (said once).
+void fallBackFromVolumes(const engine::Scene& scene, LightShadow& shadow,
+                         const std::function<void(const LightState&, const std::string&)>& warn) {
+    const std::vector<std::string> masked = alphaTestedCasterMaterials(scene);
+    if (masked.empty()) return;
+    std::string named = "\"" + masked.front() + "\"";
+    if (masked.size() > 1) named += " (and " + std::to_string(masked.size() - 1) + " more)";
+    warn(shadow, "alpha-tested material " + named +
+                     " cannot cast a shadow volume (a volume has no texture to test): this light uses a standard "
+                     "map instead");
+    shadow.settings.variant = Variant::Standard;
+}
+
+} // namespace
 
 std::vector<LightShadow> resolveLights(const engine::Scene& scene, const ShadowSettings& defaults,
                                        const LightOptions& lightOptions, int maxTextureSize,
@@ -53,6 +91,7 @@ std::vector<LightShadow> resolveLights(const engine::Scene& scene, const ShadowS
         }
         const std::string checked = options == lightOptions.end() ? object + ": extras.shadow" : object;
         checkLimits(shadow.settings, maxTextureSize, source, checked);
+        if (shadow.settings.variant == Variant::Volume) fallBackFromVolumes(scene, shadow, warn);
         checkFilterForType(shadow.settings, light.type, source, checked);
         lights.push_back(std::move(shadow));
     }

@@ -88,17 +88,11 @@ void ShadowMapPlugin::addPasses(engine::Frame& frame) {
         if (!moments_) moments_ = std::make_unique<MomentsRenderer>();
         moments_->prepare(momentsKind(light));
     }
-    for (const LightShadow& light : lights_) {
-        if (light.settings.variant != Variant::Volume) continue;
-        if (!volumes_) {
+    for (const LightShadow& light : lights_)
+        if (light.settings.variant == Variant::Volume && !volumes_) {
             volumes_ = std::make_unique<VolumeRenderer>();
-            materialsWithoutVolumes_ = volumes_->prepareScene(frame.scene());
+            volumes_->prepareScene(frame.scene());
         }
-        for (const std::string& material : materialsWithoutVolumes_)
-            warnOnce(light, "alpha-tested material \"" + material +
-                                "\" casts no shadow volume (a volume cannot test a texture): use a map variant "
-                                "for this light where its cutouts matter");
-    }
     const PlanContext context = planContext(frame.scene(), frame.camera());
     std::vector<engine::ResourceHandle> maps;
     for (LightShadow& light : lights_) {

@@ -48,10 +48,7 @@ private:
     std::vector<bool> closedMeshes_;            // per mesh: closed, not double-sided
     std::unique_ptr<DepthRenderer> depth_;      // created with the first frame (needs GL)
     std::unique_ptr<MomentsRenderer> moments_;  // created with the first frame with a vsm or evsm light
-    // Created with the first frame with a volume light, per scene; with the alpha-tested
-    // materials its volumes leave out.
-    std::unique_ptr<VolumeRenderer> volumes_;
-    std::vector<std::string> materialsWithoutVolumes_;
+    std::unique_ptr<VolumeRenderer> volumes_;  // created with the first frame with a volume light, per scene
     int maxTextureUnits_ = 16;                  // GL_MAX_TEXTURE_IMAGE_UNITS
     ShadowHook hook_;
     std::set<std::string> warned_;              // warnings already printed

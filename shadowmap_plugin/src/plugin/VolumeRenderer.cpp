@@ -6,8 +6,6 @@
 
 #include <epoxy/gl.h>
 
-#include <algorithm>
-#include <set>
 
 namespace shadowmap {
 
@@ -79,18 +77,13 @@ VolumeRenderer::VolumeRenderer()
       pointArray_(engine::gl::VertexArray::create()),
       empty_(engine::gl::VertexArray::create()) {}
 
-std::vector<std::string> VolumeRenderer::prepareScene(const engine::Scene& scene) {
+void VolumeRenderer::prepareScene(const engine::Scene& scene) {
     meshes_.clear();
-    std::set<std::string> masked;
     for (const engine::Mesh& mesh : scene.meshes) {
         const CastingGeometry geometry = castingGeometry(scene, mesh, nullptr);
         meshes_.emplace_back(geometry.positions, geometry.indices);
-        for (const engine::Primitive& primitive : mesh.primitives)
-            if (primitive.castShadows && !castsVolume(scene, primitive))
-                masked.insert(scene.materials[primitive.material].name);
     }
     depthFrame_ = std::numeric_limits<std::uint64_t>::max();
-    return {masked.begin(), masked.end()};
 }
 
 void VolumeRenderer::ensureTargets(int width, int height) {

@@ -37,9 +37,9 @@ class VolumeRenderer {
 public:
     VolumeRenderer();
 
-    // Each mesh's edge adjacency, from its casting primitives: once per scene. Returns the
-    // names of the alpha-tested materials left out (a volume has no texture to test).
-    std::vector<std::string> prepareScene(const engine::Scene& scene);
+    // Each mesh's edge adjacency, from its casting primitives, once per scene (alpha-tested
+    // ones left out: a light with such casters gets a map instead, LightResolver.h).
+    void prepareScene(const engine::Scene& scene);
 
     // Inside the light's volume pass: makes light.visibility for this frame's camera.
     VolumeCounts render(const engine::Frame& frame, engine::PassContext& context, DepthRenderer& depth,
