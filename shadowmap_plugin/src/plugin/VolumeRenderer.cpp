@@ -6,6 +6,8 @@
 
 #include <epoxy/gl.h>
 
+#include <utility>
+
 
 namespace shadowmap {
 
@@ -18,14 +20,45 @@ extern const char volume_resolve_frag[];
 
 namespace {
 
-// How far the volumes are pushed from the camera (glPolygonOffset). The near caps are the
-// casters' lit faces computed a second time (in double on the CPU, where the camera's depth
-// pass composes P_eye * V^-1 * M in float), so the two differ by a few float roundings of
-// window depth: a few 2^-24 units, and at most a fraction of the face's depth slope per pixel
-// for the lateral rounding. Without the push a cap that rounds nearer than its own face passes
-// the depth test there and the face shadows itself.
+// How far the volumes are pushed from the camera (glPolygonOffset units; no slope factor). The
+// near caps are the casters' lit faces computed a second time (in double on the CPU, where the
+// camera's depth pass rounds P_eye * V^-1 * M to float and multiplies in float), so a cap may
+// round nearer than its own face, pass the depth test there and shadow the face. In reversed
+// float depth a unit is about 2^-23 of the depth, so 256 units push a volume back by about
+// 3e-5 of its distance. Measured, error % against truth (2CylinderEngine's spot key light at
+// 480x270 / the showcase's spot at 320x180): 1 unit 3.59 / 13.2 (acne on every lit caster
+// face), 16 units 0.208 / 0.015, 64 units 0.196 / 0.015, 256 units 0.187 / 0.019 (0.000 off
+// edges in both), 1024 units 0.250 (volumes pushed through thin gaps leak). A slope factor of
+// 1 moved every shadow edge on the box scenes by a pixel (0.3-0.6 % of their pixels wrong).
 constexpr float kVolumeOffsetFactor = 0.0f;
-constexpr float kVolumeOffsetUnits = 4.0f;
+constexpr float kVolumeOffsetUnits = 256.0f;
+
+// The projection of the volumes' depth buffer. A perspective camera's becomes reversed Z with
+// the far plane at infinity (window depth n / distance: near 1, infinity 0, glClipControl zero
+// to one) in float depth, whose precision is relative, the same at every distance; the far caps
+// at infinity land on depth 0 exactly. With the camera's own planes in 24-bit depth, surfaces a
+// few units apart far from a near plane at 0.1 fell into one depth step and the offset above
+// pushed volumes through them: 2CylinderEngine's fins lost their shadows on each other (9 % of
+// the light's pixels leaked). An orthographic camera's depth is linear: kept.
+struct VolumeDepth {
+    glm::dmat4 projection;
+    bool reversed = false;
+};
+
+VolumeDepth volumeDepth(const glm::dmat4& cameraProjection) {
+    if (cameraProjection[3][3] != 0.0) return {cameraProjection, false};
+    // A GL perspective (finite or infinite far): z_clip = P22 z + P32, and n = P32 / (P22 - 1).
+    const double nearPlane = cameraProjection[3][2] / (cameraProjection[2][2] - 1.0);
+    glm::dmat4 reversed = cameraProjection;
+    reversed[2][2] = 0.0;
+    reversed[3][2] = nearPlane;
+    return {reversed, true};
+}
+
+void setDepthDirection(const VolumeDepth& depth) {
+    glClipControl(GL_LOWER_LEFT, depth.reversed ? GL_ZERO_TO_ONE : GL_NEGATIVE_ONE_TO_ONE);
+    glDepthFunc(depth.reversed ? GL_GREATER : GL_LESS);
+}
 
 engine::gl::Program compileProgram(const std::string& name, const char* vertex, const char* fragment) {
     const std::string header = "#version 450 core\n";
@@ -88,28 +121,29 @@ void VolumeRenderer::prepareScene(const engine::Scene& scene) {
 
 void VolumeRenderer::ensureTargets(int width, int height) {
     if (depthStencil_.id() && depthStencil_.width() == width && depthStencil_.height() == height) return;
-    depthStencil_ = engine::gl::Texture::create2D(GL_DEPTH24_STENCIL8, width, height);
+    depthStencil_ = engine::gl::Texture::create2D(GL_DEPTH32F_STENCIL8, width, height);
     framebuffer_.attach(GL_DEPTH_STENCIL_ATTACHMENT, depthStencil_);
     depthFrame_ = std::numeric_limits<std::uint64_t>::max();
 }
 
 void VolumeRenderer::drawCameraDepth(const engine::Frame& frame, engine::PassContext& context, DepthRenderer& depth) {
+    const VolumeDepth depthMapping = volumeDepth(frame.camera().projection);
     glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
     glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
+    setDepthDirection(depthMapping);
     glDepthMask(GL_TRUE);
     glDisable(GL_STENCIL_TEST);
     glDisable(GL_DEPTH_CLAMP);
     glDisable(GL_POLYGON_OFFSET_FILL);
-    glClearDepth(1.0);
+    glClearDepth(depthMapping.reversed ? 0.0 : 1.0);
     glClear(GL_DEPTH_BUFFER_BIT);
     // Everything the lit pass draws that takes a shade, as it draws it (back faces of
     // single-sided materials culled, alpha-tested materials discarding).
     DepthPassStyle style;
     style.drawsNonCastingReceivers = true;
     style.cullsSingleSidedBackFaces = true;
-    const engine::FrameCamera& camera = frame.camera();
-    depth.draw(frame, context, camera.projection * glm::inverse(camera.eyeToWorld), style);
+    style.reversedZ = depthMapping.reversed;
+    depth.draw(frame, context, depthMapping.projection * glm::inverse(frame.camera().eyeToWorld), style);
     glFrontFace(GL_CCW);
     depthFrame_ = frame.index();
 }
@@ -125,6 +159,7 @@ VolumeCounts VolumeRenderer::buildVolumes(const engine::Frame& frame, const Ligh
         const ShadowVolumeMesh& volumeMesh = meshes_[instance.mesh];
         if (volumeMesh.triangleCount() == 0) continue;
         ShadowVolumeCounts added;
+        const std::size_t first = scratch_.size();
         if (instance.deformed) {
             // The pose moves the vertices, not the adjacency built at load. Posed vertices are
             // relative to the deformed mesh's origin, in the frame `world`.
@@ -136,6 +171,12 @@ VolumeCounts VolumeRenderer::buildVolumes(const engine::Frame& frame, const Ligh
             added = volumeMesh.appendVolume(lightInObject(placed, light.type, instance.world),
                                             viewMatrix * instance.world, scratch_);
         }
+        // A mirroring transform turns the volume inside out: its count would be -1 where the
+        // others' are +1, and overlapping volumes of a mirrored and an unmirrored caster would
+        // cancel into light. Rewound, every volume counts +1 inside.
+        if (glm::determinant(glm::dmat3(instance.world)) < 0.0)
+            for (std::size_t corner = first; corner + 2 < scratch_.size(); corner += 3)
+                std::swap(scratch_[corner + 1], scratch_[corner + 2]);
         ++counts.casters;
         counts.silhouetteEdges += added.silhouetteEdges;
         counts.capTriangles += added.capTriangles;
@@ -175,10 +216,11 @@ VolumeCounts VolumeRenderer::render(const engine::Frame& frame, engine::PassCont
         // z-fail: a volume face behind the nearest surface counts, +1 facing away from the
         // camera, -1 facing it (wrapping, so the order of faces does not matter); a surface
         // point inside k volumes ends with k. The volumes are wound outward (ShadowVolumeMesh.h).
+        const VolumeDepth depthMapping = volumeDepth(camera.projection);
         glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
         glDepthMask(GL_FALSE);
         glEnable(GL_DEPTH_TEST);
-        glDepthFunc(GL_LESS);
+        setDepthDirection(depthMapping);
         glDisable(GL_CULL_FACE);
         glFrontFace(GL_CCW);
         glEnable(GL_DEPTH_CLAMP);  // the far caps at infinity stay, at depth 1
@@ -189,9 +231,10 @@ VolumeCounts VolumeRenderer::render(const engine::Frame& frame, engine::PassCont
         // The near caps are the casters' own lit faces, made again on the CPU: pushed a little
         // away so that on those faces they fail the depth test, as the rest of their volume.
         glEnable(GL_POLYGON_OFFSET_FILL);
-        glPolygonOffset(kVolumeOffsetFactor, kVolumeOffsetUnits);
+        const float away = depthMapping.reversed ? -1.0f : 1.0f;  // reversed Z: away is toward 0
+        glPolygonOffset(away * kVolumeOffsetFactor, away * kVolumeOffsetUnits);
         volumeProgram_.use();
-        volumeProgram_.set("uProjection", glm::mat4(camera.projection));
+        volumeProgram_.set("uProjection", glm::mat4(depthMapping.projection));
         pointArray_.bind();
         glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(scratch_.size()));
         context.countDraw(counts.volumeTriangles);
@@ -210,6 +253,7 @@ VolumeCounts VolumeRenderer::render(const engine::Frame& frame, engine::PassCont
     glBindVertexArray(0);
     glDisable(GL_STENCIL_TEST);
     glDepthMask(GL_TRUE);
+    glClipControl(GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE);
     return counts;
 }
 
