@@ -213,3 +213,19 @@ TEST_F(ShadowVolume, AStillFrameReusesTheVisibilityAndAMovedLightRemakesIt) {
     EXPECT_GT(moved.truthShadowed, 200);
     EXPECT_LE(moved.wrongFraction(), kMaxWrongFraction);
 }
+
+// A mirroring node (scale -1) turns its caster's triangles clockwise, so its volume would count
+// -1 inside where an overlapping unmirrored caster's counts +1: together, light. Rewound, both
+// shadow.
+TEST_F(ShadowVolume, AMirroredCasterOverlappingAnotherShadowsAsBoth) {
+    SceneBuilder builder;
+    builder.addLight("sun", Light::Type::Directional, {-5, 6, -5}, {0, 0, 0}, kVolume);
+    builder.addBox("floor", kFloor.min, kFloor.max);
+    builder.addBox("box", kBox.min, kBox.max);
+    const engine::Aabb second{{0, 1.5, -0.5}, {2.5, 2.5, 0.5}};
+    const int mirrored = builder.addBox("mirrored box", second.min, second.max);
+    builder.scene.nodes[mirrored].local = builder.scene.nodes[mirrored].local * glm::scale(glm::dmat4(1.0), {-1, 1, 1});
+    const auto result = compare(builder.build(), overview(), {kFloor, kBox, second});
+    EXPECT_GT(result.truthShadowed, 300);
+    EXPECT_LE(result.wrongFraction(), kMaxWrongFraction);
+}
