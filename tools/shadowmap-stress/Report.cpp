@@ -141,7 +141,8 @@ bool writePlots(const std::filesystem::path& outDir, const std::vector<Sweep>& s
     const std::map<std::string, std::string> colours{{toString(Variant::Standard), "#1f77b4"},
                                                      {toString(Variant::Woo), "#d62728"},
                                                      {toString(Variant::Backface), "#2ca02c"},
-                                                     {toString(Variant::None), "#7f7f7f"}};
+                                                     {toString(Variant::None), "#7f7f7f"},
+                                                     {toString(Variant::Volume), "#9467bd"}};
     const std::map<std::string, std::pair<int, int>> styles{{toString(DepthFormat::D16), {3, 6}},
                                                             {toString(DepthFormat::D24), {1, 7}},
                                                             {toString(DepthFormat::D32F), {2, 5}},
@@ -213,7 +214,7 @@ bool writePlots(const std::filesystem::path& outDir, const std::vector<Sweep>& s
                        << blockOf[{light, s}] << " using 1:2 with "
                        << (sweep.axis == Axis::Categorical ? "points" : "linespoints") << " lc rgb '" << colour
                        << "' dt " << style.first << " pt " << style.second << " lw 1.5 title '" << s.first
-                       << " " << s.second << "'";
+                       << (s.second.empty() ? "" : " " + s.second) << "'";
                 first = false;
             }
             script << "\n";
@@ -241,7 +242,8 @@ void writeSummary(const std::filesystem::path& path, const RunInfo& info, const 
     out << "- machine: " << info.machine << "\n";
     out << "- GL: " << info.glRenderer << "\n";
     out << "- view " << info.width << "x" << info.height << ", shadow maps " << info.resolution
-        << "² (PCF 2x2), " << rows.size() << " cases in " << fixed(info.seconds, 1) << " s\n";
+        << "² (PCF 2x2; volume: no map, one case per point, format empty), " << rows.size() << " cases in "
+        << fixed(info.seconds, 1) << " s\n";
     out << "- errors: percent of the evaluation set (docs/metrics.md, Embree truth); "
            "tables show `error (error without edge pixels)`, and for a light with a size `soft` the "
            "same against the soft truth (the visible fraction of the light), which the bounds judge it by\n";

@@ -200,8 +200,12 @@ std::map<SeriesKey, std::map<std::string, const Row*>> series(const std::vector<
 }
 
 std::string describe(const Row& row) {
-    return row.sweep + " " + row.label + " " + row.light + "/" + row.variant + "/" + row.format;
+    return row.sweep + " " + row.label + " " + row.light + "/" + row.variant + (row.format.empty() ? "" : "/" + row.format);
 }
+
+bool isVolume(const Row& row) { return !rendersMap(row.variant); }
+
+bool isMaskedFence(const Row& row) { return row.sweep == "special" && row.label == toString(Layout::MaskedFence); }
 
 // |error(label) - error(reference)| <= tolerance for every series of the sweeps and every
 // label kept.
@@ -231,6 +235,28 @@ void compareWithReference(BoundResult& bound, const std::vector<Row>& rows, cons
     }
 }
 
+// A volume has no texture to test: a volume light among alpha-tested casters gets a standard
+// map at its own settings (the plugin warns), so its row must err exactly as the standard row
+// of the same case in the plugin's default depth format (the volume row sets none), and show
+// a map. Its twin is real volumes, exact: the twin bound would compare a map with them.
+void checkVolumeFallback(BoundResult& bound, const std::vector<Row>& rows, const Row& row) {
+    const std::string format = shadowmap::toString(shadowmap::ShadowSettings{}.depthFormat);
+    const auto standard = std::find_if(rows.begin(), rows.end(), [&](const Row& other) {
+        return other.sweep == row.sweep && other.label == row.label && other.light == row.light &&
+               other.variant == shadowmap::toString(shadowmap::Variant::Standard) && other.format == format;
+    });
+    ++bound.checked;
+    const bool map = row.map != "volumes" && row.map != "none";
+    if (standard == rows.end()) {
+        if (!map) bound.failures.push_back(describe(row) + ": map " + row.map + ", not the standard fallback");
+        return;
+    }
+    const std::string line = describe(row) + ": map " + row.map + ", error " + number(row.error, "%.4f") +
+                             " vs standard/" + format + " " + number(standard->error, "%.4f");
+    if (!map || std::abs(row.error - standard->error) > 1e-4 || std::abs(row.errorNoEdge - standard->errorNoEdge) > 1e-4)
+        bound.failures.push_back(line);
+}
+
 // A masked caster is as accurate as the same shape built from geometry: for every light,
 // variant and format, the masked fence's error (overall and without edge pixels) is at most
 // twice its opaque twin's plus 0.01 points (about 5 of the ~45000 evaluated pixels at
@@ -238,11 +264,16 @@ void compareWithReference(BoundResult& bound, const std::vector<Row>& rows, cons
 // Measured: the masked fence's errors are at or below the twin's in every series (the
 // mask's 0.5 iso-line cuts the corners of the opaque texel regions, the twin does not).
 BoundResult maskedAgainstTwin(const std::vector<Row>& rows) {
-    BoundResult masked{"masked", "masked fence: error and error without edge pixels <= 2 x its opaque twin's + 0.01 points",
+    BoundResult masked{"masked", "masked fence: error and error without edge pixels <= 2 x its opaque twin's + 0.01 "
+                       "points; volume: the standard map the plugin gives it there, as the standard row errs",
                        0, {}, {}};
     double worst = -1.0;
     for (const Row& row : rows) {
-        if (row.sweep != "special" || row.label != toString(Layout::MaskedFence)) continue;
+        if (!isMaskedFence(row)) continue;
+        if (isVolume(row)) {
+            checkVolumeFallback(masked, rows, row);
+            continue;
+        }
         const auto twin = std::find_if(rows.begin(), rows.end(), [&](const Row& other) {
             return other.sweep == row.sweep && other.label == toString(Layout::OpaqueFence) &&
                    other.light == row.light && other.variant == row.variant && other.format == row.format;
@@ -266,12 +297,26 @@ BoundResult maskedAgainstTwin(const std::vector<Row>& rows) {
 
 // Stable cascades keep their texels still while the camera pans, fitted ones move them with
 // every frame: per variant and format, stable shimmer <= fitted shimmer, and fitted > 0
-// (else the path compared nothing and the bound would hold vacuously).
+// (else the path compared nothing and the bound would hold vacuously). A volume light has
+// no cascades and no texels: its shadow is exact at every pixel, so it shimmers on no more
+// than kVolumeShimmer of the points, stable or fitted (which it does not read).
 BoundResult stableAgainstFitted(const std::vector<Row>& rows) {
-    BoundResult bound{"shimmer", "four stable cascades shimmer no more than fitted ones; fitted ones shimmer", 0, {}, {}};
+    BoundResult bound{"shimmer", "four stable cascades shimmer no more than fitted ones; fitted ones shimmer; volume "
+                      "shimmers on <= " + number(kVolumeShimmer, "%g") + " % of the points", 0, {}, {}};
     double worst = -1e300;
     for (const Row& row : rows) {
-        if (row.sweep != "shimmer" || row.label != "stable") continue;
+        if (row.sweep != "shimmer") continue;
+        if (isVolume(row)) {
+            ++bound.checked;
+            const std::string line = describe(row) + ": shimmer " + number(row.shimmer, "%.4f");
+            if (row.shimmer > worst) {
+                worst = row.shimmer;
+                bound.worst = line;
+            }
+            if (!(row.shimmer >= 0.0 && row.shimmer <= kVolumeShimmer)) bound.failures.push_back(line);
+            continue;
+        }
+        if (row.label != "stable") continue;
         const auto fitted = std::find_if(rows.begin(), rows.end(), [&](const Row& other) {
             return other.sweep == row.sweep && other.label == "fitted" && other.light == row.light &&
                    other.variant == row.variant && other.format == row.format;
@@ -285,6 +330,33 @@ BoundResult stableAgainstFitted(const std::vector<Row>& rows) {
             bound.worst = line;
         }
         if (row.shimmer > fitted->shimmer || !(fitted->shimmer > 0.0)) bound.failures.push_back(line);
+    }
+    return bound;
+}
+
+// Stenciled shadow volumes decide every pixel centre exactly: off the truth's shadow edges
+// (where a pixel's one ray and its centre can fall on either side) a volume light errs on
+// no pixel, at any distance, scale or near/far. The bound is kVolumeErrorNoEdge points, far
+// below what any map variant holds to. Against the binary truth whatever the light's size:
+// a volume's shadow is hard, and the soft truth would count every penumbra pixel as its
+// error. Alpha-tested casters cast no volume: among them the plugin gives the light a
+// standard map (and says so), which the masked bound judges; everywhere else the row must
+// be volumes.
+BoundResult volumeExact(const std::vector<Row>& rows) {
+    BoundResult bound{"volume", "volume: map \"volumes\" and error without edge pixels <= " +
+                      number(kVolumeErrorNoEdge, "%g") + " points (masked_fence: the plugin's standard map, bound "
+                      "masked)", 0, {}, {}};
+    double worst = -1.0;
+    for (const Row& row : rows) {
+        if (!isVolume(row) || isMaskedFence(row)) continue;
+        ++bound.checked;
+        const std::string line = describe(row) + ": map " + row.map + ", error_noedge " +
+                                 number(row.errorNoEdge, "%.4f") + " (error " + number(row.error, "%.4f") + ")";
+        if (row.errorNoEdge > worst) {
+            worst = row.errorNoEdge;
+            bound.worst = line;
+        }
+        if (row.map != "volumes" || row.errorNoEdge > kVolumeErrorNoEdge) bound.failures.push_back(line);
     }
     return bound;
 }
@@ -303,8 +375,15 @@ std::vector<Sweep> makeSweeps(bool quick) {
             elevationSweep(), scaleSweep(false), shimmerSweep(), specialSweep(false)};
 }
 
+bool rendersMap(const std::string& variant) { return variant != shadowmap::toString(shadowmap::Variant::Volume); }
+
+std::vector<FormatSetting> formatsFor(const std::string& variant, const std::vector<FormatSetting>& formats) {
+    if (rendersMap(variant)) return formats;
+    return {FormatSetting{"", nlohmann::json::object()}};
+}
+
 std::vector<std::string> defaultVariants() {
-    // Every variant the plugin has but "none", which renders no map to stress.
+    // Every variant the plugin has but "none", which casts no shadow to stress.
     std::vector<std::string> variants = shadowmap::settingKey("variant").choices;
     std::erase(variants, shadowmap::toString(shadowmap::Variant::None));
     return variants;
@@ -349,11 +428,14 @@ std::vector<BoundResult> checkBounds(const std::vector<Row>& rows) {
     }
     bounds.push_back(finite);
 
-    BoundResult hasMap{"has_map", "every light that should cast a shadow has a map", 0, {}, {}};
+    BoundResult hasMap{"has_map", "every light that should cast a shadow has a map, a volume light its visibility "
+                       "per pixel (map \"volumes\") or its fallback map", 0, {}, {}};
     for (const Row& row : rows) {
         if (!row.expectMap) continue;
         ++hasMap.checked;
         if (row.map == "none") hasMap.failures.push_back(describe(row) + ": no map (" + row.skipReason + ")");
+        else if (!isVolume(row) && row.map == "volumes")
+            hasMap.failures.push_back(describe(row) + ": map \"" + row.map + "\" for variant " + row.variant);
     }
     hasMap.worst = hasMap.failures.empty() ? "all have a map" : hasMap.failures.front();
     bounds.push_back(hasMap);
@@ -398,11 +480,13 @@ std::vector<BoundResult> checkBounds(const std::vector<Row>& rows) {
     }
     bounds.push_back(inside);
 
+    // Volumes have no depth range to run out of: held to the same bound as reversed Z.
     BoundResult nearFar{"near_far_rz",
-                        "reversed-Z d32f: error(ratio) - error(1e-2) <= 0.5 points down to 1e-7 and an infinite far",
+                        "reversed-Z d32f and volume: error(ratio) - error(1e-2) <= 0.5 points down to 1e-7 and an "
+                        "infinite far",
                         0, {}, {}};
-    compareWithReference(nearFar, rows, {"near_far"}, "1e-2", [](const Row& r) { return r.format == reversedZFormat(); },
-                         0.5, true);
+    compareWithReference(nearFar, rows, {"near_far"}, "1e-2",
+                         [](const Row& r) { return r.format == reversedZFormat() || isVolume(r); }, 0.5, true);
     bounds.push_back(nearFar);
 
     BoundResult grazing{"grazing",
@@ -440,6 +524,7 @@ std::vector<BoundResult> checkBounds(const std::vector<Row>& rows) {
         if (judged.errorNoEdge > 0.5) special.failures.push_back(line);
     }
     bounds.push_back(special);
+    bounds.push_back(volumeExact(rows));
     bounds.push_back(maskedAgainstTwin(rows));
     bounds.push_back(stableAgainstFitted(rows));
     return bounds;

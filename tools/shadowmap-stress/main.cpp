@@ -45,9 +45,10 @@ constexpr const char* kUsage =
     "  --quick                the small CI version (96x64 view, 512 maps, few points)\n"
     "  --sweep NAME           only this sweep (repeatable): distance, near_far, elevation,\n"
     "                         scale, shimmer, special (and distance_skinned, distance_baked)\n"
-    "  --variants LIST        comma-separated (default standard,woo,backface)\n"
+    "  --variants LIST        comma-separated (default standard,woo,backface,volume)\n"
     "  --formats LIST         comma-separated among d16,d24,d32f,d32f_rz (d32f with\n"
-    "                         reversed Z); default all four, quick: d24,d32f,d32f_rz\n"
+    "                         reversed Z); default all four, quick: d24,d32f,d32f_rz;\n"
+    "                         volume renders no map: one row per case, format empty\n"
     "  --width W --height H   view size (default 320x240; quick 96x64)\n"
     "  --resolution N         shadow map texels per side (default 1024; quick 512)\n"
     "  --config FILE          engine config (default: shadowmap_plugin with its defaults)\n"
@@ -211,11 +212,13 @@ struct Runner {
         renderer.setScene(built.scene);
         evaluation::ShadowEvaluator evaluator(renderer, built.scene);
         for (const std::string& variant : variants)
-            for (const stress::FormatSetting& format : formats) {
+            for (const stress::FormatSetting& format : stress::formatsFor(variant, formats)) {
                 const auto start = std::chrono::steady_clock::now();
                 nlohmann::json shadow = baseShadow;
                 shadow.update(format.settings);
                 shadow["variant"] = variant;
+                // Volume reads no resolution, but its standard-map fallback (among
+                // alpha-tested casters) does: the same map size as the other rows.
                 shadow["resolution"] = options.resolution;
                 built.scene.lights[0].extras["shadow"] = shadow;
                 // Only the light's settings changed: the plugin re-reads them and re-renders
@@ -253,8 +256,8 @@ struct Runner {
                          evaluator.shimmer(evaluation::onePixelPan(built.camera, point.shimmerFrames)))
                         if (moving.slot == 0) row.shimmer = 100.0 * moving.count.fraction();
                 if (options.images) {
-                    const std::string name =
-                        row.sweep + "_" + row.label + "_" + row.light + "_" + row.variant + "_" + row.format;
+                    const std::string name = row.sweep + "_" + row.label + "_" + row.light + "_" + row.variant +
+                                             (row.format.empty() ? "" : "_" + row.format);
                     std::filesystem::create_directories(options.out / "images");
                     writeErrorImage(options.out / "images" / (name + ".png"), renderer, built.scene, built.camera);
                     if (const auto found = frame.shadowMaps.find(0); found != frame.shadowMaps.end())
