@@ -15,8 +15,19 @@ std::string labelPart(const char* prefix, const std::optional<T>& value) {
     return value ? prefix + engine::formatNumber(*value) : std::string();
 }
 
+// Whether `variant` renders a shadow map: every variant but volume (stenciled shadow
+// volumes: a visibility per camera pixel, exact and hard), which reads none of a map's
+// settings, so the sweep measures it once per light and size step.
+inline bool rendersMap(const std::string& variant) {
+    return variant != shadowmap::toString(shadowmap::Variant::Volume);
+}
+
 struct ShadowSetting {
-    std::string variant;  // standard | woo | backface
+    std::string variant;  // standard | woo | backface | volume
+    // A map's (rendersMap(variant)); a volume setting leaves them 0 and "" (results.csv
+    // leaves their columns empty), and the light keeps its scene's or the config's values,
+    // which the plugin reads only where it gives a volume light a standard map instead
+    // (among alpha-tested casters: a volume cannot test a texture).
     int resolution = 0;   // texels per side
     std::string depthFormat;  // d16 | d24 | d32f
     std::string filter;       // nearest | pcf | pcss | vsm | evsm
@@ -45,7 +56,8 @@ struct ShadowSetting {
     // diameter), "fr2" (filter radius), "taps32", "br0.2" (bleed reduction), "no0.25"
     // (normal offset), "uniform" or "lispsm" (projection), "c2" or "cauto" (cascades),
     // "stable" or "unstable", e.g. "standard 1024 d24 pcss lr0.1 ad0.05 taps32 no0.25",
-    // "standard 1024 d24 vsm fr2 br0.2" or "woo 2048 d24 pcf lispsm c2".
+    // "standard 1024 d24 vsm fr2 br0.2" or "woo 2048 d24 pcf lispsm c2"; a volume setting
+    // "volume" (and its size step: "volume lr0.1").
     std::string label() const { return labelWithSize(sizeLabel()); }
 
     // The size step's part of the label: " lr0.1 ad0.05", "" without one.
@@ -53,7 +65,11 @@ struct ShadowSetting {
 
     // The label with `size` (a light size part) where the sizes stand.
     std::string labelWithSize(const std::string& size) const {
-        return variant + " " + std::to_string(resolution) + " " + depthFormat + " " + filter + size +
+        // Appended piece by piece: GCC 12 reports a false -Wrestrict on "literal" + temporary.
+        std::string map;
+        if (rendersMap(variant)) map.append(" ").append(std::to_string(resolution)).append(" ").append(depthFormat)
+                                     .append(" ").append(filter);
+        return variant + map + size +
                labelPart(" fr", filterRadius) + labelPart(" taps", filterTaps) + labelPart(" br", bleedReduction) +
                labelPart(" no", normalOffset) +
                (projection ? std::string(" ") + shadowmap::toString(*projection) : std::string()) +

@@ -49,8 +49,10 @@ std::string resultsCsv(const std::vector<BenchRow>& rows) {
     std::string csv = std::string(kResultsCsvHeader) + "\n";
     for (const BenchRow& row : rows) {
         // Microseconds for times, 1e-4 % for errors (one pixel of a 1280x720 view is 1.1e-4 %).
+        // A volume row has no resolution, depth format or filter: their columns are empty.
+        const std::string resolution = row.setting.resolution > 0 ? std::to_string(row.setting.resolution) : "";
         csv += csvField(row.scene) + "," + csvField(row.light) + "," + row.setting.variant + "," +
-               std::to_string(row.setting.resolution) + "," + row.setting.depthFormat + "," +
+               resolution + "," + row.setting.depthFormat + "," +
                row.setting.filter + "," + number(row.shadowMs, 3) + "," + number(row.frameMs, 3) + "," +
                number(row.acne, 4) + "," + number(row.leak, 4) + "," + number(row.error, 4) + "," +
                number(row.errorNoEdge, 4) + "," + number(row.areaAcne, 4) + "," +

@@ -1,5 +1,6 @@
 #pragma once
 // results.csv: one row per scene x light x setting, columns exactly kResultsCsvHeader;
+// a volume row (no map) leaves resolution, depth_format and filter empty;
 // times in milliseconds, errors in percent (area_*: against the area truth, docs/metrics.md),
 // shimmer and near_* in percent and empty when not measured (--shimmer, --near).
 // Columns added later come last, so scripts reading the first ones keep working:

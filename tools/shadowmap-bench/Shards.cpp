@@ -111,7 +111,9 @@ std::vector<BenchRow> parseResultsCsv(const std::string& text, const std::string
         BenchRow row;
         row.scene = f[0];
         row.light = f[1];
-        row.setting = {f[2], static_cast<int>(number(f[3], file, line)), f[4], f[5]};
+        // A volume row's resolution is empty (ResultsCsv.h): 0, as the sweep made it.
+        const bool noMap = !rendersMap(f[2]) && f[3].empty();
+        row.setting = {f[2], noMap ? 0 : static_cast<int>(number(f[3], file, line)), f[4], f[5]};
         row.shadowMs = number(f[6], file, line);
         row.frameMs = number(f[7], file, line);
         row.frameP99Ms = number(f[31], file, line);

@@ -170,8 +170,8 @@ std::vector<ShadowSetting> acceptedSettings(const BenchScene& bench, const std::
         const std::string sizes = setting.sizeLabel();
         const std::string projection =
             setting.projection ? std::string(" with projection ") + shadowmap::toString(*setting.projection) : "";
-        const std::string note =
-            "no filter " + setting.filter + " rows" + (sizes.empty() ? "" : " at" + sizes) + projection + ": " + *reason;
+        const std::string rows = rendersMap(setting.variant) ? "filter " + setting.filter : "variant " + setting.variant;
+        const std::string note = "no " + rows + " rows" + (sizes.empty() ? "" : " at" + sizes) + projection + ": " + *reason;
         if (std::find(notes.begin(), notes.end(), note) != notes.end()) continue;
         notes.push_back(note);
         std::cerr << "shadowmap-bench: " << bench.name << ": " << note << "\n";
@@ -208,11 +208,18 @@ std::vector<BenchScene> loadBenchScenes(const BenchOptions& options, const nlohm
 
 std::vector<ShadowSetting> sweepSettings(const BenchOptions& options) {
     std::vector<ShadowSetting> settings;
-    for (const std::string& variant : options.variants)
+    for (const std::string& variant : options.variants) {
+        // One volume setting: it reads none of the map's settings, and the same picture
+        // measured once per resolution, format and filter would be noise.
+        if (!rendersMap(variant)) {
+            settings.push_back({variant, 0, "", ""});
+            continue;
+        }
         for (int resolution : options.resolutions)
             for (const std::string& format : options.depthFormats)
                 for (const std::string& filter : options.filters)
                     settings.push_back({variant, resolution, format, filter});
+    }
     return expandAxes(settings, options);
 }
 
@@ -223,10 +230,15 @@ std::vector<ShadowSetting> maskedSettings(const BenchOptions& options) {
     // The plugin's default format and filter, when listed: what a scene gets unless it asks.
     const shadowmap::ShadowSettings defaults;
     std::vector<ShadowSetting> settings;
-    for (const std::string& variant : options.variants)
+    for (const std::string& variant : options.variants) {
+        if (!rendersMap(variant)) {
+            settings.push_back({variant, 0, "", ""});
+            continue;
+        }
         for (int resolution : options.resolutions)
             settings.push_back({variant, resolution, preferred(options.depthFormats, shadowmap::toString(defaults.depthFormat)),
                                 preferred(options.filters, shadowmap::toString(defaults.filter))});
+    }
     return expandAxes(settings, options);
 }
 

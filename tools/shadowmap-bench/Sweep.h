@@ -42,11 +42,13 @@ struct BenchScene {
 std::vector<BenchScene> loadBenchScenes(const BenchOptions& options, const nlohmann::json& pluginSettings);
 
 // The cartesian product of the listed variants, resolutions, formats and filters, times the
-// optional axes that apply to each (SweepAxes.h).
+// optional axes that apply to each (SweepAxes.h); volume (no map) once, not per resolution,
+// format and filter.
 std::vector<ShadowSetting> sweepSettings(const BenchOptions& options);
 
 // The listed variants and resolutions at one depth format and one filter: d24 and pcf (the
-// engine config's defaults) when listed, else the first listed; times the optional axes.
+// engine config's defaults) when listed, else the first listed; volume once; times the
+// optional axes.
 std::vector<ShadowSetting> maskedSettings(const BenchOptions& options);
 
 // Called after each row is measured: `index` counts from 1 to `total`.

@@ -95,19 +95,22 @@ std::vector<ShadowSetting> expandAxes(const std::vector<ShadowSetting>& settings
     out = expand(out, [&](const ShadowSetting& setting) {
         return perValue(setting, options.bleedReductions, &ShadowSetting::bleedReduction, readsMoments(setting));
     });
+    // A volume light has no map to offset, project or slice: of the axes it takes only the
+    // light size steps (its truth changes with them).
     out = expand(out, [&](const ShadowSetting& setting) {
-        return perValue(setting, options.normalOffsets, &ShadowSetting::normalOffset, true);
+        return perValue(setting, options.normalOffsets, &ShadowSetting::normalOffset, rendersMap(setting.variant));
     });
     // The directional lights' axes last, so that the settings a spot or point light cannot
     // tell apart stand next to each other.
     out = expand(out, [&](const ShadowSetting& setting) {
-        return perValue(setting, options.projections, &ShadowSetting::projection, true);
+        return perValue(setting, options.projections, &ShadowSetting::projection, rendersMap(setting.variant));
     });
     out = expand(out, [&](const ShadowSetting& setting) {
-        return perValue(setting, options.cascades, &ShadowSetting::cascades, true);
+        return perValue(setting, options.cascades, &ShadowSetting::cascades, rendersMap(setting.variant));
     });
     return expand(out, [&](const ShadowSetting& setting) {
-        return perValue(setting, options.stables, &ShadowSetting::stable, !isLispsm(setting));
+        return perValue(setting, options.stables, &ShadowSetting::stable,
+                        rendersMap(setting.variant) && !isLispsm(setting));
     });
 }
 
@@ -129,10 +132,12 @@ ShadowSetting rowSetting(const ShadowSetting& setting, engine::Light::Type type)
 }
 
 nlohmann::json lightShadow(const ShadowSetting& setting, engine::Light::Type type) {
-    nlohmann::json shadow = {{"variant", setting.variant},
-                             {"resolution", setting.resolution},
-                             {"depth_format", setting.depthFormat},
-                             {"filter", setting.filter}};
+    nlohmann::json shadow = {{"variant", setting.variant}};
+    if (rendersMap(setting.variant)) {
+        shadow["resolution"] = setting.resolution;
+        shadow["depth_format"] = setting.depthFormat;
+        shadow["filter"] = setting.filter;
+    }
     const bool directional = type == engine::Light::Type::Directional;
     const auto write = [&](const char* key, const auto& value) {
         if (value) shadow[key] = *value;

@@ -18,12 +18,14 @@ namespace shadowmap_bench {
 // Every setting of `settings` times the axes that apply to it, in this order: each light size
 // step, each filter radius (pcf, vsm, evsm), each tap count (pcss, and pcf with a filter
 // radius > 0), each bleed reduction (vsm, evsm), each normal offset, each projection, each cascade count, each stable value (rows
-// whose projection is not lispsm: a warp is never stable). An axis not given, or not applying, leaves the setting as it is
+// whose projection is not lispsm: a warp is never stable). A volume setting (no map) takes
+// the size steps only. An axis not given, or not applying, leaves the setting as it is
 // (the field unset), so with no axis given the list comes back unchanged.
 std::vector<ShadowSetting> expandAxes(const std::vector<ShadowSetting>& settings, const BenchOptions& options);
 
 // The keys of a light's extras.shadow that `setting` writes for a light of `type`: variant,
-// resolution, depth_format, filter, and each optional field that is set (filter_radius,
+// resolution, depth_format, filter (a map's only: a volume setting writes none of them),
+// and each optional field that is set (filter_radius,
 // filter_taps, bleed_reduction, normal_offset); of the size step
 // only the key of the light's type (light_radius for spot and point, angular_diameter for
 // directional), since the plugin refuses the other; projection, cascades and stable for a

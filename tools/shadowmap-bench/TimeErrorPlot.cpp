@@ -27,13 +27,16 @@ std::string dataLabel(const std::string& text) {
 }
 
 // One gnuplot point shape per variant, in the order the settings API lists the variants
-// (standard, woo, backface, none: filled circle, square, triangle, diamond).
+// (standard, woo, backface, none, volume: filled circle, square, triangle, diamond, and
+// a filled pentagon drawn larger, since a volume light is one point among a map's grid).
 int pointType(const std::string& variant) {
-    constexpr int kShapes[] = {7, 5, 9, 13};
+    constexpr int kShapes[] = {7, 5, 9, 13, 15};
     const std::vector<std::string>& variants = shadowmap::settingKey("variant").choices;
     const std::size_t index = std::find(variants.begin(), variants.end(), variant) - variants.begin();
     return kShapes[std::min(index, std::size(kShapes) - 1)];
 }
+
+double pointSize(const std::string& variant) { return rendersMap(variant) ? 0.8 : 1.8; }
 
 std::string dataBlock(const std::string& name, const std::vector<BenchRow>& rows) {
     std::string text = "$";
@@ -41,7 +44,9 @@ std::string dataBlock(const std::string& name, const std::vector<BenchRow>& rows
     char line[256];
     for (const BenchRow& row : rows) {
         std::snprintf(line, sizeof line, "%.4f %.5f %d ", row.shadowMs, row.rankedError(), pointType(row.setting.variant));
-        text += line + dataLabel(row.label()) + "\n";
+        text += line + dataLabel(row.label());
+        std::snprintf(line, sizeof line, " %.1f\n", pointSize(row.setting.variant));
+        text += line;
     }
     return text + "EOD\n";
 }
@@ -97,7 +102,7 @@ std::string timeErrorPlotScript(const std::vector<BenchRow>& rows) {
             if (lights[i].scene != scene) continue;
             const std::string index = std::to_string(i), colourIndex = std::to_string(++colour);
             const std::string lc = " lc " + colourIndex;
-            plot += "$points" + index + " using 1:2:3 with points pt variable ps 0.8" + lc + " notitle, \\\n  ";
+            plot += "$points" + index + " using 1:2:5:3 with points pt variable ps variable" + lc + " notitle, \\\n  ";
             plot += "NaN with lines lw 1.5" + lc + " title " + quoted(lights[i].light) + ", \\\n  ";
             plot += "$front" + index + " using 1:2 with lines lw 1.5" + lc + " notitle, \\\n  ";
             plot += "$labels" + index + " using 1:2:4 with labels left offset 0.6,0.4 font ',7' tc lt " + colourIndex +
@@ -105,8 +110,13 @@ std::string timeErrorPlotScript(const std::vector<BenchRow>& rows) {
         }
         // Legend entries for the point shapes of the variants measured (no data: NaN).
         for (const std::string& variant : shadowmap::settingKey("variant").choices)
-            if (std::any_of(rows.begin(), rows.end(), [&](const BenchRow& row) { return row.setting.variant == variant; }))
-                plot += "NaN with points pt " + std::to_string(pointType(variant)) + " lc 'black' title '" + variant + "', ";
+            if (std::any_of(rows.begin(), rows.end(), [&](const BenchRow& row) { return row.setting.variant == variant; })) {
+                char size[16];
+                std::snprintf(size, sizeof size, "%.1f", pointSize(variant));
+                const std::string title = rendersMap(variant) ? variant : variant + " (no map)";
+                plot += "NaN with points pt " + std::to_string(pointType(variant)) + " ps " + size + " lc 'black' title " +
+                        quoted(title) + ", ";
+            }
         script += plot.substr(0, plot.size() - 2) + "\n";  // drop the last ", "
 
     }

@@ -25,7 +25,7 @@ expect_error '--resolutions: empty item in "512,,1024" (items are separated by s
 expect_error '--resolutions: "512" is listed twice in "512,512"' --resolutions 512,512
 expect_error '--resolutions: "0" is not an integer in [1, ' --resolutions 0
 expect_error '--width: "+64" is not an integer in [1, 16384]' --width +64
-expect_error '--variants: unknown value "none" (known: standard,woo,backface)' --variants none
+expect_error '--variants: unknown value "none" (known: standard,woo,backface,volume)' --variants none
 expect_error '--filters: unknown value "bilinear" (known: nearest,pcf,pcss,vsm,evsm)' --filters bilinear
 expect_error '--key-light: "sun" is not spot, point, directional or none' --key-light sun
 expect_error '--time: "-1" is not a number in [0, 1000000]' --time -1
