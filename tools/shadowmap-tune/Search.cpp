@@ -22,17 +22,19 @@ bool lowerError(const Measured& a, const Measured& b) { return a.error < b.error
 // Faster by more than timing noise: a time difference smaller than that is no ranking.
 bool clearlyFaster(const Measured& a, const Measured& b) { return a.ms < b.ms * (1.0 - kTimeNoise); }
 
-bool cheaper(const Measured& a, const Measured& b) { return expectedCost(a.setting) < expectedCost(b.setting); }
+bool cheaper(const Measured& a, const Measured& b, long imagePixels) {
+    return expectedCost(a.setting, imagePixels) < expectedCost(b.setting, imagePixels);
+}
 
 // The coarse results no other beats in error and expected cost: another as accurate and no
 // costlier, better in one. By expected cost, not measured time: an exact front of measured
 // times keeps or drops a setting by noise (one frame of one setting measured 0.25 to 2.7 ms
 // at 160x120), and a shard and the single run would search different settings. The
 // coarse list's order is kept: it is the measuring order, which settles what still ties.
-std::vector<Measured> survivors(const std::vector<Measured>& coarse) {
-    const auto beats = [](const Measured& a, const Measured& b) {
-        if (lowerError(b, a) || cheaper(b, a)) return false;
-        return lowerError(a, b) || cheaper(a, b);
+std::vector<Measured> survivors(const std::vector<Measured>& coarse, long imagePixels) {
+    const auto beats = [&](const Measured& a, const Measured& b) {
+        if (lowerError(b, a) || cheaper(b, a, imagePixels)) return false;
+        return lowerError(a, b) || cheaper(a, b, imagePixels);
     };
     std::vector<Measured> out;
     for (const Measured& b : coarse)
@@ -49,16 +51,16 @@ bool Goal::better(const Measured& a, const Measured& b) const {
     if (kind == Kind::Budget) {
         if (!fa) return a.ms < b.ms;
         if (lowerError(a, b) || lowerError(b, a)) return lowerError(a, b);
-        return cheaper(a, b);
+        return cheaper(a, b, imagePixels);
     }
     if (!fa) return lowerError(a, b);
     if (clearlyFaster(a, b) || clearlyFaster(b, a)) return clearlyFaster(a, b);
     if (lowerError(a, b) || lowerError(b, a)) return lowerError(a, b);
-    return cheaper(a, b);
+    return cheaper(a, b, imagePixels);
 }
 
 Goal Goal::withMargin() const {
-    return kind == Kind::Budget ? Goal{kind, limit * (1.0 - kTimeNoise)} : *this;
+    return kind == Kind::Budget ? Goal{kind, limit * (1.0 - kTimeNoise), imagePixels} : *this;
 }
 
 bool Goal::clearlyBetter(const Measured& choice, const Measured& current) const {
@@ -134,7 +136,7 @@ std::vector<LightChoice> searchSettings(LockstepMeasurer& measurer, const std::v
         std::vector<Measured> coarseResults;
         for (const Candidate& candidate : coarse)
             if (const Measured* m = measurer.find(light, candidate)) coarseResults.push_back(*m);
-        for (const Measured& survivor : survivors(coarseResults)) {
+        for (const Measured& survivor : survivors(coarseResults, goal.imagePixels)) {
             // The refined dimensions' first values are the cheapest: over the budget there,
             // over it everywhere.
             if (goal.kind == Goal::Kind::Budget && !goal.feasible(survivor)) continue;

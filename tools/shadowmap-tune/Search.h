@@ -49,6 +49,9 @@ struct Goal {
     enum class Kind { Budget, MaxError };
     Kind kind = Kind::Budget;
     double limit = 0.0;  // ms (Budget) or percent (MaxError)
+    // One view's pixels (width x height), what a volume light's passes cover: its expected
+    // cost (SearchSpace.h) grows with them, a map's does not.
+    long imagePixels = 0;
 
     bool feasible(const Measured& m) const { return kind == Kind::Budget ? m.ms <= limit : m.error <= limit; }
     // Budget: the lower error within the budget (ties: the lower expected cost, so that

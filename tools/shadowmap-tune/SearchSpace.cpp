@@ -37,6 +37,9 @@ std::vector<Candidate> product(const std::vector<SettingDimension>& space, bool 
 
 bool SettingDimension::appliesTo(const Candidate& candidate) const {
     const auto& [key, value] = onlyWith;
+    const auto& [excludingKey, excludingValue] = notWith;
+    if (!excludingKey.empty() && candidate.contains(excludingKey) && candidate[excludingKey] == excludingValue)
+        return false;
     return key.empty() || (candidate.contains(key) && candidate[key] == value);
 }
 
@@ -48,13 +51,17 @@ std::vector<SettingDimension> searchSpace(const SearchLimits& limits) {
     };
     // The order is the report's: "standard 1024 d24 pcss taps16". filter_taps comes after
     // the filter it depends on, and is refined: more taps smooth a penumbra more, so the
-    // fewest ranks pcss against the other filters.
+    // fewest ranks pcss against the other filters. A volume light has no map: one
+    // candidate, "volume", rather than the same picture once per resolution, format and
+    // filter (with a soft filter the plugin would also warn that it ignores it).
+    const std::pair<std::string, nlohmann::json> noMap{"variant", shadowmap::toString(shadowmap::Variant::Volume)};
     return {
-        {"variant", values(limits.variants), false, "", {}},
-        {"resolution", values(limits.resolutions), true, "", {}},
-        {"depth_format", values(limits.depthFormats), false, "", {}},
-        {"filter", values(limits.filters), false, "", {}},
-        {"filter_taps", values(limits.filterTaps), true, "taps", {"filter", shadowmap::toString(shadowmap::Filter::Pcss)}},
+        {"variant", values(limits.variants), false, "", {}, {}},
+        {"resolution", values(limits.resolutions), true, "", {}, noMap},
+        {"depth_format", values(limits.depthFormats), false, "", {}, noMap},
+        {"filter", values(limits.filters), false, "", {}, noMap},
+        {"filter_taps", values(limits.filterTaps), true, "taps", {"filter", shadowmap::toString(shadowmap::Filter::Pcss)},
+         {}},
     };
 }
 
@@ -123,8 +130,16 @@ bool usesPolygonOffset(const Candidate& candidate) {
     return offset.x != 0.0f || offset.y != 0.0f;
 }
 
-std::array<long, 3> expectedCost(const Candidate& candidate) {
+std::array<long, 3> expectedCost(const Candidate& candidate, long imagePixels) {
     const shadowmap::ShadowSettings settings = shadowmap::parseSettings(candidate, "shadowmap-tune", "candidate");
+    if (settings.variant == shadowmap::Variant::Volume) {
+        // VolumeRenderer: the camera's depth over the view (shared by a frame's volume
+        // lights, counted for each), the volumes' front and back faces in the stencil
+        // buffer (each covers about the view where shadows fall), and the resolve into the
+        // visibility texture: kVolumePixelPasses full-view passes. Then one visibility
+        // texel read per pixel, and a 4-byte depth-stencil buffer (D24S8).
+        return {imagePixels * kVolumePixelPasses, 1, 4};
+    }
     const long passes = settings.variant == shadowmap::Variant::Woo ? 2 : 1;
     // cascades "auto" (kAutoCascades, 0) is the count the view needs, at least one: counted
     // as one, or every auto setting's texels would be 0 and resolution would rank nothing.

@@ -99,7 +99,8 @@ int run(const TuneOptions& options, std::unique_ptr<engine::GlContext>& context,
     for (const engine::Light& light : scene.lights) loaded.push_back(loadedShadow(light));
 
     const std::vector<SettingDimension> space = searchSpace(options.limits);
-    const Goal goal{options.budget ? Goal::Kind::Budget : Goal::Kind::MaxError, options.limit};
+    const Goal goal{options.budget ? Goal::Kind::Budget : Goal::Kind::MaxError, options.limit,
+                    static_cast<long>(options.width) * options.height};
 
     context = engine::createEglContext();
     context->makeCurrent();

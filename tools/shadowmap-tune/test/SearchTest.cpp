@@ -28,9 +28,22 @@ struct FakeLight {
     std::array<double, 2> offsetOptimum{1.0, 4.0};
     // The normal offset at which standard's error is lowest; none: it changes nothing.
     std::optional<double> normalOptimum = std::nullopt;  // initialised: brace lists may leave it out
+    // Variant volume: no map, exact (error 0) at this time whatever else the candidate says.
+    double volumeMs = 3.0;
 
     Measured measure(const Candidate& c) const {
         const std::string variant = c["variant"];
+        if (variant == "volume") {
+            // A map's keys would be ignored by the plugin: the search never writes them.
+            EXPECT_FALSE(c.contains("resolution") || c.contains("depth_format") || c.contains("filter") ||
+                         c.contains("polygon_offset") || c.contains("normal_offset"))
+                << c.dump();
+            Measured m;
+            m.setting = c;
+            m.ms = volumeMs;
+            m.evaluated = 100000;
+            return m;
+        }
         const int v = variant == "standard" ? 0 : variant == "woo" ? 1 : 2;
         const double resolution = c["resolution"].get<int>();
         const double texels = resolution * resolution / (512.0 * 512.0);
@@ -81,6 +94,9 @@ struct FakeScene {
 };
 
 const Candidate kDefault = {{"variant", "standard"}, {"resolution", 2048}, {"depth_format", "d24"}, {"filter", "pcf"}};
+
+// A view's pixels, for expected costs (a volume light's grows with them).
+constexpr long kPixels = 160 * 120;
 
 // The exhaustive answer over the grid without offsets: what the search must find.
 Measured gridBest(const FakeLight& light, const std::vector<SettingDimension>& space, const Goal& goal) {
@@ -240,8 +256,8 @@ TEST(TuneSearch, FilterTapsAreADimensionOfPcssOnly) {
     // pcss reads 4 texels per tap: dearer than pcf's one 2x2 tap, dearer with more taps.
     Candidate more = coarse[1];
     more["filter_taps"] = 16;
-    EXPECT_LT(expectedCost(coarse[0]), expectedCost(coarse[1]));
-    EXPECT_LT(expectedCost(coarse[1]), expectedCost(more));
+    EXPECT_LT(expectedCost(coarse[0], kPixels), expectedCost(coarse[1], kPixels));
+    EXPECT_LT(expectedCost(coarse[1], kPixels), expectedCost(more, kPixels));
 }
 
 // vsm and evsm are filters of the space like the others, without taps; their expected cost
@@ -262,20 +278,20 @@ TEST(TuneSearch, MomentsFiltersAreCandidatesThatCostTheirPasses) {
     const Candidate& evsm = coarse[2];
     // One depth pass and one moments pass: dearer than pcf at its size, cheaper than the
     // next size's depth pass alone (2 x 1024^2 < 2048^2).
-    EXPECT_LT(expectedCost(pcf), expectedCost(vsm));
-    EXPECT_EQ(expectedCost(vsm), expectedCost(evsm));
+    EXPECT_LT(expectedCost(pcf, kPixels), expectedCost(vsm, kPixels));
+    EXPECT_EQ(expectedCost(vsm, kPixels), expectedCost(evsm, kPixels));
     Candidate pcf2048 = pcf;
     pcf2048["resolution"] = 2048;
-    EXPECT_LT(expectedCost(vsm), expectedCost(pcf2048));
+    EXPECT_LT(expectedCost(vsm, kPixels), expectedCost(pcf2048, kPixels));
     // A blur is a second moments pass; mipmaps a trilinear read.
     Candidate blurred = vsm;
     blurred["filter_radius"] = 2;
-    EXPECT_LT(expectedCost(vsm), expectedCost(blurred));
-    EXPECT_EQ(expectedCost(blurred)[0], 3 * expectedCost(pcf)[0]);
+    EXPECT_LT(expectedCost(vsm, kPixels), expectedCost(blurred, kPixels));
+    EXPECT_EQ(expectedCost(blurred, kPixels)[0], 3 * expectedCost(pcf, kPixels)[0]);
     Candidate mipmapped = vsm;
     mipmapped["moments_mipmaps"] = true;
-    EXPECT_EQ(expectedCost(mipmapped)[0], expectedCost(vsm)[0]);
-    EXPECT_EQ(expectedCost(mipmapped)[1], 2 * expectedCost(pcf)[1]);
+    EXPECT_EQ(expectedCost(mipmapped, kPixels)[0], expectedCost(vsm, kPixels)[0]);
+    EXPECT_EQ(expectedCost(mipmapped, kPixels)[1], 2 * expectedCost(pcf, kPixels)[1]);
 }
 
 TEST(TuneSearch, KeepsTheCurrentSettingUnlessClearlyBeaten) {
@@ -300,6 +316,64 @@ TEST(TuneSearch, KeepsTheCurrentSettingUnlessClearlyBeaten) {
     EXPECT_FALSE(maxError.clearlyBetter(choice, current));
     choice.ms = 2.0;
     EXPECT_TRUE(maxError.clearlyBetter(choice, current));
+}
+
+// Variant volume renders no map: one candidate, without resolution, depth format, filter
+// or taps (the plugin ignores them there, and would warn about a soft filter), never
+// refined, never offset-fitted; its expected cost covers the view, so it grows with the
+// image and not with any map's size.
+TEST(TuneSearch, VolumeIsOneCandidateWithoutAMapsDimensions) {
+    SearchLimits limits{{"standard", "volume"}, {"d24", "d32f"}, {"pcf", "pcss"}, {512, 1024}, {8, 16}};
+    const std::vector<SettingDimension> space = searchSpace(limits);
+    const std::vector<Candidate> coarse = coarseCandidates(space);
+    ASSERT_EQ(coarse.size(), 2u * 2u + 1u);  // standard: 2 formats x 2 filters; volume once
+    const Candidate volume = {{"variant", "volume"}};
+    EXPECT_EQ(coarse.back(), volume);
+    EXPECT_EQ(std::count(coarse.begin(), coarse.end(), volume), 1);
+    EXPECT_TRUE(refinedCandidates(space, volume).empty());
+    EXPECT_EQ(describe(volume, space), "volume");
+    EXPECT_FALSE(usesPolygonOffset(volume));
+    // A volume light's settings in effect (the plugin reports a map's too) are that candidate.
+    EXPECT_EQ(candidateOf(space, {{"variant", "volume"}, {"resolution", 2048}, {"depth_format", "d24"},
+                                  {"filter", "pcss"}, {"filter_taps", 16}}),
+              volume);
+    // standard: (pcf x 2 resolutions + pcss x 2 resolutions x 2 taps) x 2 formats x lattice;
+    // volume: one setting.
+    EXPECT_EQ(gridSize(space, kOffsetLatticeSize), 12 * kOffsetLatticeSize + 1);
+    // Owned: a volume candidate drops a map's keys the light had, so none lingers.
+    const auto owned = ownedKeys(space);
+    for (const char* key : {"resolution", "depth_format", "filter"})
+        EXPECT_EQ(std::count(owned.begin(), owned.end(), key), 1) << key;
+    EXPECT_EQ(expectedCost(volume, kPixels), (std::array<long, 3>{kVolumePixelPasses * kPixels, 1, 4}));
+    EXPECT_LT(expectedCost(volume, kPixels), expectedCost(volume, 4 * kPixels));
+    Candidate map = coarse.front();
+    map["resolution"] = 2048;
+    const auto mapCost = expectedCost(map, kPixels);
+    EXPECT_EQ(mapCost, expectedCost(map, 4 * kPixels));
+}
+
+// With volume allowed, the search chooses it where it is the most accurate within the
+// budget, and the best map setting where volume's time is over the budget; the offset fit
+// never takes volume as its base (FakeLight::measure checks no offset reaches it).
+TEST(TuneSearch, ChoosesVolumeWithinTheBudgetAndAMapBeyondIt) {
+    SearchLimits limits = fullLimits();
+    limits.variants.push_back("volume");
+    const std::vector<SettingDimension> space = searchSpace(limits);
+    FakeLight light{{0.9, 0.3, 0.6}};
+    light.volumeMs = 3.0;
+    for (const double budget : {20.0, 2.0}) {
+        FakeScene scene{{light}};
+        LockstepMeasurer measurer = scene.measurer({kDefault});
+        const Goal goal{Goal::Kind::Budget, budget, kPixels};
+        const LightChoice choice = searchSettings(measurer, space, goal)[0];
+        SCOPED_TRACE("budget " + std::to_string(budget));
+        EXPECT_EQ(choice.chosen.setting.dump(), gridBest(light, space, goal.withMargin()).setting.dump());
+        if (budget > light.volumeMs) EXPECT_EQ(choice.chosen.setting["variant"], "volume");
+        else EXPECT_NE(choice.chosen.setting["variant"], "volume");
+        if (choice.offsetFit) {
+            EXPECT_NE(choice.offsetFit->base["variant"], "volume");
+        }
+    }
 }
 
 TEST(TuneSearch, GridCountsOffsetsOnlyForVariantsThatUseOne) {
