@@ -72,10 +72,10 @@ struct PassSummary {
     engine::PassReport last;
 };
 
-// A light's map time over the timed frames: the median, over the frames that drew its map,
-// of its passes' time that frame (FrameResult::shadowPassMs). `rendered` is false when no
-// timed frame drew the map (served from the cache every time, e.g. a still light after
-// warm-up, or the light has none); `frames` counts the timed frames that drew it.
+// A light's map time over the timed frames: the median, over the frames that drew its map
+// (a volume light: its visibility), of its passes' time that frame (FrameResult::shadowPassMs).
+// `rendered` is false when no timed frame drew it (served from the cache every time, e.g. a
+// still light after warm-up, or the light has none); `frames` counts the timed frames that drew it.
 struct MapTime {
     double ms = 0.0;
     bool rendered = false;
@@ -86,6 +86,18 @@ MapTime mapTime(const engine::ShadowView& view, const MapTimes& times) {
     const auto found = times.find(view.slot);
     if (found == times.end() || found->second.empty()) return {};
     return {tools::median(found->second), true, static_cast<int>(found->second.size())};
+}
+
+// Whether the light has a shadow whose passes have a time: a map, or a visibility per camera
+// pixel (variant volume). Either is "cached" in a frame that kept it from the last.
+bool hasShadowPasses(const engine::ShadowView& view) { return view.hasMap || view.hasScreenVisibility; }
+
+// Why a light has no map this frame, for --shadow-map and --texel-density: a volume light
+// never has one (its shadow is a visibility per camera pixel, which --shadow-mask writes).
+std::string noMapReason(const engine::ShadowView* view) {
+    if (view && view->hasScreenVisibility)
+        return "variant volume has no shadow map (stenciled shadow volumes, exact per pixel: see --shadow-mask)";
+    return "the light has no shadow map this frame (variant none, nothing in its frustum, or no shadow plugin)";
 }
 
 // engine::mapKindName for the printed table, which says how many cascades: "csm 3".
@@ -127,7 +139,7 @@ nlohmann::json statsJson(const RenderOptions& options, const std::vector<double>
         const MapTime time = mapTime(view, mapTimes);
         maps.push_back({{"light", view.name}, {"slot", view.slot}, {"variant", view.variant},
                         {"map", engine::mapKindName(view)}, {"map_ms", time.rendered ? nlohmann::json(time.ms) : nlohmann::json(nullptr)},
-                        {"map_cached", view.hasMap && !time.rendered}, {"frames_rendered", time.frames}});
+                        {"map_cached", hasShadowPasses(view) && !time.rendered}, {"frames_rendered", time.frames}});
     }
     stats["shadow_maps"] = maps;
     stats["lit_instances_culled"] = last.litInstancesCulled;
@@ -164,8 +176,8 @@ nlohmann::json printLightErrors(const evaluation::ViewResult& view, const engine
         const MapTime time = mapTime(light.view, mapTimes);
         const truth::ShadowErrors& e = light.errors;
         char shownTime[32];
-        std::snprintf(shownTime, sizeof shownTime, time.rendered ? "%.2f" : !light.view.hasMap ? "-" : "cached",
-                      time.ms);
+        std::snprintf(shownTime, sizeof shownTime,
+                      time.rendered ? "%.2f" : !hasShadowPasses(light.view) ? "-" : "cached", time.ms);
         // A texel's size on screen in pixels (docs/metrics.md), mean/p95; "-" where no pixel has one.
         const evaluation::TexelOnScreen& texel = light.texelOnScreen;
         char shownTexel[32] = "-";
@@ -176,7 +188,7 @@ nlohmann::json printLightErrors(const evaluation::ViewResult& view, const engine
         const auto texelFigure = [&](double value) { return texel.count > 0 ? nlohmann::json(value) : nlohmann::json(nullptr); };
         lights.push_back({{"light", light.light}, {"slot", light.slot}, {"variant", light.view.variant},
                           {"map_ms", time.rendered ? nlohmann::json(time.ms) : nlohmann::json(nullptr)},
-                          {"map_cached", light.view.hasMap && !time.rendered},
+                          {"map_cached", hasShadowPasses(light.view) && !time.rendered},
                           {"acne", 100 * e.acne}, {"leak", 100 * e.leak},
                           {"error", 100 * e.error}, {"error_noedge", 100 * e.errorNoEdge},
                           {"evaluated_pixels", e.evaluated},
@@ -230,9 +242,7 @@ void writeTexelDensities(const RenderOptions& options, const std::vector<int>& s
     for (std::size_t i = 0; i < slots.size(); ++i) {
         const auto& [light, file] = options.texelDensities[i];
         const engine::ShadowView* view = last.shadowView(slots[i]);
-        if (!view || !view->hasMap)
-            throw engine::InputError("--texel-density " + light + ": the light has no shadow map this frame "
-                                     "(variant none, nothing in its frustum, or no shadow plugin)");
+        if (!view || !view->hasMap) throw engine::InputError("--texel-density " + light + ": " + noMapReason(view));
         const std::vector<double> m =
             truth::texelOnScreenImage(*view, surfaces, truth::evaluationSet(scene, slots[i], surfaces));
         engine::writePngAtomically(file, options.width, options.height, 4, truth::texelDensityImage(m));
@@ -435,8 +445,8 @@ int run(const RenderOptions& options, std::unique_ptr<engine::GlContext>& contex
         const auto& [light, file] = options.shadowMaps[i];
         const auto found = last.shadowMaps.find(request.shadowMapSlots[i]);
         if (found == last.shadowMaps.end())
-            throw engine::InputError("--shadow-map " + light + ": the light has no shadow map this frame "
-                                     "(variant none, nothing in its frustum, or no shadow plugin)");
+            throw engine::InputError("--shadow-map " + light + ": " +
+                                     noMapReason(last.shadowView(request.shadowMapSlots[i])));
         int width = 0, height = 0;
         auto gray = depthToGray(found->second, width, height);
         if (found->second.cube) labelCubeFaces(gray, width, height, found->second.width);
