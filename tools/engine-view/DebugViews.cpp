@@ -36,6 +36,15 @@ void tint(std::uint8_t* pixel, const std::uint8_t (&color)[3], double amount) {
 
 const char* const kNoShadowTerm = "no plugin provides a shadow term: shaded view";
 
+// The note of a view that shows the light's map when the light has none this frame. A
+// volume light never has one: its shadow is a visibility per camera pixel, exact, which the
+// shadow, penumbra and truth views show.
+std::string noMapNote(const ViewedLight& light, const engine::ShadowView* view) {
+    if (view && view->hasScreenVisibility)
+        return light.name + ": volume, no map (exact per pixel; see the shadow and truth views): shaded view";
+    return light.name + " has no shadow map this frame: shaded view";
+}
+
 // The penumbra view: partly lit pixels mostly magenta (a colour lit scenes rarely show), the
 // rest at 30% of their brightness, dark enough that the magenta stands out and light enough
 // that the scene stays readable around it.
@@ -158,7 +167,7 @@ ViewFrame DebugViews::depthMap(const ViewedLight& light, const engine::FrameCame
     const auto found = out.frame.shadowMaps.find(light.slot);
     if (found == out.frame.shadowMaps.end()) {
         out.image = {camera.width, camera.height, renderer_.readColor()};
-        out.notes.push_back(light.name + " has no shadow map this frame: shaded view");
+        out.notes.push_back(noMapNote(light, out.frame.shadowView(light.slot)));
         return out;
     }
     int width = 0, height = 0;
@@ -184,7 +193,7 @@ ViewFrame DebugViews::projected(const ViewedLight& light, const engine::FrameCam
     const engine::ShadowView* view = out.frame.shadowView(light.slot);
     if (found == out.frame.shadowMaps.end() || !view || view->layers.empty()) {
         out.image = shaded;
-        out.notes.push_back(light.name + " has no shadow map this frame: shaded view");
+        out.notes.push_back(noMapNote(light, view));
         return out;
     }
     int width = 0, height = 0;
@@ -223,6 +232,14 @@ ViewFrame DebugViews::comparison(const ViewedLight& light, const engine::FrameCa
         out.image = {camera.width, camera.height, renderer_.readColor()};
         out.notes.push_back(kNoShadowTerm);
         return out;
+    }
+    const engine::ShadowView* view = out.frame.shadowView(light.slot);
+    if (view && view->hasScreenVisibility) {
+        // No map to compare a depth with: the visibility the volumes gave is the answer.
+        ViewFrame term = shadowTerm(light, camera);
+        term.notes.insert(term.notes.begin(), light.name + ": volume, no map to compare with (exact per pixel): "
+                                                           "its shadow term");
+        return term;
     }
     out.image = {camera.width, camera.height, renderer_.readComparison(light.slot)};
     out.notes.push_back("comparison: green lit, red shadowed, blue offset decided, grey no say");
@@ -287,7 +304,9 @@ ViewFrame DebugViews::cascades(const ViewedLight& light, const engine::FrameCame
     out.image = {camera.width, camera.height, renderer_.readColor()};
     const engine::ShadowView* view = out.frame.shadowView(light.slot);
     if (!view || view->cascadeSplits.size() < 2) {
-        out.notes.push_back(light.name + " has no cascades this frame (one map or none): shaded view");
+        out.notes.push_back(view && view->hasScreenVisibility
+                                ? noMapNote(light, view)
+                                : light.name + " has no cascades this frame (one map or none): shaded view");
         return out;
     }
     // The lookup's rule (visibility.glsl cascadeIndex): the first cascade whose far split lies
@@ -323,7 +342,7 @@ ViewFrame DebugViews::texelDensity(const ViewedLight& light, const engine::Frame
     const engine::ShadowView* view = out.frame.shadowView(light.slot);
     if (!view || !view->hasMap) {
         out.image = {camera.width, camera.height, renderer_.readColor()};
-        out.notes.push_back(light.name + " has no shadow map this frame: shaded view");
+        out.notes.push_back(noMapNote(light, view));
         return out;
     }
     const truth::SurfaceBuffer& buffer = surfaces(camera);  // clears the density when it recaptures

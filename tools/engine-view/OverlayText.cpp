@@ -61,14 +61,23 @@ std::vector<OverlayLine> OverlayText::lines(const ViewerState& state, const engi
         } else {
             const shadowmap::ShadowSettings used = shadowmap::usedSettings(*view);
             const glm::vec2 offset = used.effectivePolygonOffset();
-            line += format("\t%s\t%d%s\t%s\t%s\t%s\toffset %g/%g\tdim %.2f", shadowmap::toString(used.variant),
-                           used.resolution, view->cube ? " cube" : "", shadowmap::toString(used.depthFormat),
-                           lightSize(used.lightSize(light.type), light.type).c_str(), shadowmap::toString(used.filter),
-                           shadowmap::jsonNumber(offset.x),
-                           shadowmap::jsonNumber(offset.y), settings.at("dimming").get<double>());
+            if (used.variant == shadowmap::Variant::Volume) {
+                // No map: its resolution, format, filter and offsets mean nothing here. The
+                // columns stay, so the other lights' line up.
+                line += format("\t%s\tper pixel\t\t%s\thard\t\tdim %.2f", shadowmap::toString(used.variant),
+                               lightSize(used.lightSize(light.type), light.type).c_str(),
+                               settings.at("dimming").get<double>());
+            } else {
+                line += format("\t%s\t%d%s\t%s\t%s\t%s\toffset %g/%g\tdim %.2f", shadowmap::toString(used.variant),
+                               used.resolution, view->cube ? " cube" : "", shadowmap::toString(used.depthFormat),
+                               lightSize(used.lightSize(light.type), light.type).c_str(),
+                               shadowmap::toString(used.filter), shadowmap::jsonNumber(offset.x),
+                               shadowmap::jsonNumber(offset.y), settings.at("dimming").get<double>());
+            }
             bool ran = false;
             const double ms = frame.shadowPassMs(*view, ran);
-            if (!view->hasMap) {
+            // A volume light has no map but a visibility per pixel, timed and cached as a map is.
+            if (!view->hasMap && !view->hasScreenVisibility) {
                 line += "\tno map" + (view->skipReason.empty() ? std::string() : " (" + view->skipReason + ")");
             } else if (ran) {
                 line += format("\t%.2f ms\trendered", ms);

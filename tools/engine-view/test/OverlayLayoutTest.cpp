@@ -64,6 +64,13 @@ std::vector<OverlayLine> showcaseOverlay(engine::Scene& scene) {
                       false);
 }
 
+// The overlay's line of `name` in `lines`.
+std::string lineOf(const std::vector<OverlayLine>& lines, const std::string& name) {
+    for (const OverlayLine& line : lines)
+        if (line.text.find(name + "\t") != std::string::npos) return line.text;
+    return {};
+}
+
 // The right edge, in window pixels, of what stb_easy_font draws for `text` at font-unit x.
 float drawnRight(const std::string& text, float x, float scale) {
     std::string copy = text;
@@ -147,6 +154,51 @@ TEST(ViewerOverlay, LightLinesKeepTheirColumnsWhereTheyFit) {
     ASSERT_EQ(layout.rows.size(), 2u);
     for (int c = 0; c < 3; ++c) EXPECT_EQ(layout.rows[0].cells[c].x, layout.rows[1].cells[c].x) << c;
     EXPECT_GT(layout.rows[0].cells[1].x, overlayTextWidth("dddd") + layout.rows[0].cells[0].x);
+}
+
+// A volume light has no map but is shadowed: its line gives its passes' time, rendered or
+// cached as a map's, says "per pixel" and "hard" where a map's size and filter stand, and
+// never "no map" as an unshadowed light's does.
+TEST(ViewerOverlay, AVolumeLightShowsItsTimeNotNoMap) {
+    engine::Scene scene = engine::loadGltf(std::filesystem::path(CONTENT_DIR) / "scenes" / "showcase.gltf");
+    ViewerState state(scene, {{"variant", "standard"}, {"resolution", 2048}});
+    ASSERT_TRUE(state.select("spot_light"));
+    const int spot = state.selected();
+    state.set(spot, "variant", "volume");
+    for (const bool ran : {true, false}) {
+        engine::FrameResult frame;
+        std::vector<engine::ShadowView> views;
+        for (std::size_t i = 0; i < state.lights().size(); ++i) {
+            engine::ShadowView view;
+            view.slot = state.lights()[i].slot;
+            view.name = state.lights()[i].name;
+            view.castsShadows = true;
+            const bool volume = static_cast<int>(i) == spot;
+            view.hasMap = !volume;
+            view.hasScreenVisibility = volume;
+            view.renderedThisFrame = ran;
+            view.variant = volume ? "volume" : "standard";
+            view.settings = shadowmap::printUsedSettings(
+                shadowmap::parseSettings(state.effective(static_cast<int>(i)), "showcase.gltf", view.name));
+            engine::PassReport pass;
+            pass.wallMs = 2.5;
+            pass.culled = !ran;
+            view.passes = {engine::PassId{static_cast<int>(frame.passes.size())}};
+            frame.passes.push_back(pass);
+            views.push_back(view);
+        }
+        state.setFrameViews(views);
+        frame.shadowViews = views;
+        static OverlayText text;  // keeps the last time across the two frames, as the viewer does
+        text.recordFrame(frame, state);
+        const std::string line = lineOf(text.lines(state, frame, {}, "camera", "", "", false), "spot_light");
+        SCOPED_TRACE(line);
+        EXPECT_NE(line.find("\tvolume\tper pixel\t"), std::string::npos);
+        EXPECT_NE(line.find("\thard\t"), std::string::npos);
+        EXPECT_EQ(line.find("no map"), std::string::npos);
+        EXPECT_EQ(line.find("offset"), std::string::npos);
+        EXPECT_NE(line.find(ran ? "2.50 ms\trendered" : "2.50 ms\tcached"), std::string::npos);
+    }
 }
 
 } // namespace engine_view

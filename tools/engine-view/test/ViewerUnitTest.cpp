@@ -495,8 +495,10 @@ TEST(ViewerState, KeysCycleThroughWhatThePluginAccepts) {
         return std::vector<nlohmann::json>(values.begin(), values.end());
     };
     const shadowmap::ShadowSettings defaults;
-    EXPECT_EQ(visit("variant", &ViewerState::cycleVariant),
-              rotatedFrom(shadowmap::settingKey("variant").choices, shadowmap::toString(defaults.variant)));
+    const std::vector<nlohmann::json> variants = visit("variant", &ViewerState::cycleVariant);
+    EXPECT_EQ(variants, rotatedFrom(shadowmap::settingKey("variant").choices, shadowmap::toString(defaults.variant)));
+    // Shadow volumes too (no map: exact per pixel).
+    EXPECT_NE(std::find(variants.begin(), variants.end(), nlohmann::json("volume")), variants.end());
     EXPECT_EQ(visit("depth_format", &ViewerState::cycleDepthFormat),
               rotatedFrom(shadowmap::settingKey("depth_format").choices, shadowmap::toString(defaults.depthFormat)));
     // Without a size the light takes every filter but pcss: the key skips it.
