@@ -89,11 +89,109 @@ private:
 // The volume's vertices for one light, each welded vertex transformed once.
 struct TransformedVertices {
     std::vector<glm::vec4> finite;    // toTarget * (p, 1)
-    std::vector<glm::vec4> extruded;  // toTarget * (p - light, 0); one shared entry for a directional light
-    bool directional = false;
+    std::vector<glm::vec4> extruded;  // toTarget * (p - light, 0), or past the bound; one shared entry when `shared`
+    bool shared = false;              // a directional light without a bound: one point at infinity for all
+    std::vector<std::uint8_t> unmoved;  // with a bound: per vertex, whether it is its own extruded point
 
-    const glm::vec4& atInfinity(std::uint32_t v) const { return extruded[directional ? 0 : v]; }
+    const glm::vec4& far(std::uint32_t v) const { return extruded[shared ? 0 : v]; }
+    bool isUnmoved(std::uint32_t v) const { return !unmoved.empty() && unmoved[v]; }
 };
+
+// The bound is grown by this fraction of its radius: a bounding sphere touches some of the
+// receivers it was made from, and they are drawn from float positions that may land a rounding
+// step outside it.
+constexpr double kBoundSlack = 1e-3;
+// Each finite extruded vertex is pushed out along its ray by this fraction of its distance from
+// the target origin (plus, for a point light, the light's): rounding the output to float moves it
+// by up to 2^-24 * sqrt(3), about 1e-7, of that distance, and the far cap's guarantee is measured
+// along a neighbour's direction, where a push counts at least kMinCosine of itself (below): 1e-5
+// covers 1e-7 * 16 with room to spare and costs no visible fill.
+constexpr double kRoundingSlack = 1e-5;
+// Two vertices whose directions from a point light are this close to perpendicular or beyond
+// (the cosine below it) send both to infinity: placed finitely they would have to go 16 times
+// past the bound's support plane or more (at 90 degrees, to no finite distance).
+constexpr double kMinCosine = 1.0 / 16.0;
+
+bool boundGiven(const ShadowVolumeBound& bound) {
+    return bound.radius > 0.0 && std::isfinite(bound.radius) && std::isfinite(bound.center.x) &&
+           std::isfinite(bound.center.y) && std::isfinite(bound.center.z);
+}
+
+// A point light's extruded vertices for a bound (ShadowVolumeBound explains the distances), in
+// `vertices.extruded`. target: per welded vertex, toTarget * (p, 1) in double; farCap: per
+// triangle, whether it has a far cap (its corners' extrusions bound what is cut off).
+void extrudePointToBound(const glm::dvec3& lightPoint, const glm::dmat4& toTarget, const ShadowVolumeBound& bound,
+                         const std::vector<glm::dvec3>& positions, const std::vector<glm::dvec3>& target,
+                         const std::vector<glm::u32vec3>& corners, const std::vector<std::uint8_t>& farCap,
+                         TransformedVertices& vertices) {
+    const glm::dvec3 light = glm::dvec3(toTarget * glm::dvec4(lightPoint, 1.0));
+    const double radius = bound.radius * (1.0 + kBoundSlack);
+    struct Ray {
+        glm::dvec3 direction{0.0};  // unit, from the light; zero when the light is at the vertex
+        double length = 0.0;        // from the light to the vertex
+        double support = 0.0;       // h(direction), or 0 where the sphere is all behind the light
+        double reach = 0.0;         // how far along the ray the extruded vertex must go
+        bool atInfinity = false;
+    };
+    std::vector<Ray> rays(positions.size());
+    for (std::size_t v = 0; v < positions.size(); ++v) {
+        Ray& ray = rays[v];
+        const glm::dvec3 toVertex = target[v] - light;
+        ray.length = glm::length(toVertex);
+        if (ray.length == 0.0) continue;
+        ray.direction = toVertex / ray.length;
+        ray.support = std::max(0.0, glm::dot(bound.center - light, ray.direction) + radius);
+        ray.reach = ray.support;
+    }
+    // Every edge of a triangle with a far cap, from both ends (an edge shared by two such
+    // triangles is seen twice: the same result, and cheaper than finding which edges qualify).
+    for (std::size_t t = 0; t < corners.size(); ++t) {
+        if (!farCap[t]) continue;
+        const std::uint32_t c[3] = {corners[t].x, corners[t].y, corners[t].z};
+        for (int i = 0; i < 3; ++i) {
+            Ray& a = rays[c[i]];
+            Ray& b = rays[c[(i + 1) % 3]];
+            if (a.length == 0.0 || b.length == 0.0) continue;
+            const double cosine = glm::dot(a.direction, b.direction);
+            if (cosine < kMinCosine) {
+                a.atInfinity = b.atInfinity = true;
+                continue;
+            }
+            a.reach = std::max(a.reach, b.support / cosine);
+            b.reach = std::max(b.reach, a.support / cosine);
+        }
+    }
+    const double lightDistance = glm::length(light);
+    for (std::size_t v = 0; v < positions.size(); ++v) {
+        const Ray& ray = rays[v];
+        if (ray.length == 0.0 || ray.atInfinity) {
+            vertices.extruded[v] = glm::vec4(toTarget * glm::dvec4(positions[v] - lightPoint, 0.0));
+            continue;
+        }
+        const double reach = ray.reach + kRoundingSlack * (ray.reach + lightDistance);
+        // Already that far (the vertex is past the bound): the vertex itself, bit for bit.
+        vertices.unmoved[v] = reach <= ray.length;
+        vertices.extruded[v] = vertices.unmoved[v] ? vertices.finite[v]
+                                                   : glm::vec4(glm::dvec4(light + ray.direction * reach, 1.0));
+    }
+}
+
+// A directional light's extruded vertices for a bound: each vertex moved along the light's
+// direction to the plane normal to it that touches the sphere's far side. All of them, and so
+// the far cap and everything beyond it, lie past that plane, which no point of the sphere does.
+void extrudeDirectionalToBound(const glm::dvec3& towardLight, const glm::dmat4& toTarget,
+                               const ShadowVolumeBound& bound, const std::vector<glm::dvec3>& target,
+                               TransformedVertices& vertices) {
+    const glm::dvec3 away = glm::normalize(glm::dvec3(toTarget * glm::dvec4(-towardLight, 0.0)));
+    const double radius = bound.radius * (1.0 + kBoundSlack);
+    for (std::size_t v = 0; v < target.size(); ++v) {
+        const glm::dvec3& f = target[v];
+        const double distance = radius - glm::dot(f - bound.center, away);
+        const double reach = distance + kRoundingSlack * (std::max(distance, 0.0) + glm::length(f));
+        vertices.unmoved[v] = reach <= 0.0;
+        vertices.extruded[v] = vertices.unmoved[v] ? vertices.finite[v] : glm::vec4(glm::dvec4(f + away * reach, 1.0));
+    }
+}
 
 // cross(b - a, c - a) per triangle: the normals the facing test reads.
 void computeNormals(const std::vector<glm::dvec3>& positions, const std::vector<glm::u32vec3>& corners,
@@ -113,13 +211,15 @@ void emit(std::vector<glm::vec4>& out, const glm::vec4& a, const glm::vec4& b, c
 }
 
 // The side quad on edge from -> to (the direction the volume's surface traverses it): the
-// triangles (from, to, to at infinity) and (from, to at infinity, from at infinity). For a
-// directional light the second is degenerate (both points at infinity are the same) and is
-// left out.
+// triangles (from, to, to extruded) and (from, to extruded, from extruded). For a directional
+// light without a bound the second is degenerate (both points at infinity are the same) and is
+// left out; with a bound, so is either one that a vertex past the bound (its own extruded point)
+// collapses. A triangle with two equal corners has no area: leaving it out changes no count.
 void emitSideQuad(std::vector<glm::vec4>& out, const TransformedVertices& vertices, std::uint32_t from,
                   std::uint32_t to) {
-    emit(out, vertices.finite[from], vertices.finite[to], vertices.atInfinity(to));
-    if (!vertices.directional) emit(out, vertices.finite[from], vertices.atInfinity(to), vertices.atInfinity(from));
+    if (!vertices.isUnmoved(to)) emit(out, vertices.finite[from], vertices.finite[to], vertices.far(to));
+    if (!vertices.shared && !vertices.isUnmoved(from))
+        emit(out, vertices.finite[from], vertices.far(to), vertices.far(from));
 }
 
 } // namespace
@@ -212,8 +312,8 @@ void ShadowVolumeMesh::classifyClosed() {
 }
 
 ShadowVolumeCounts ShadowVolumeMesh::appendVolume(const glm::dvec4& light, const glm::dmat4& toTarget,
-                                                  std::vector<glm::vec4>& out) const {
-    return emitVolume(light, toTarget, positions_, normals_, out);
+                                                  std::vector<glm::vec4>& out, const ShadowVolumeBound& bound) const {
+    return emitVolume(light, toTarget, positions_, normals_, out, bound);
 }
 
 // The posed positions and normals are made in locals, like the other per-call buffers of
@@ -221,8 +321,8 @@ ShadowVolumeCounts ShadowVolumeMesh::appendVolume(const glm::dvec4& light, const
 // cost (two allocations the size of the welded vertices and of the triangles) that is small
 // beside the work on them (see PrintsTimeForLargeSphere).
 ShadowVolumeCounts ShadowVolumeMesh::appendVolume(const glm::dvec4& light, const glm::dmat4& toTarget,
-                                                  const std::vector<glm::vec3>& posed,
-                                                  std::vector<glm::vec4>& out) const {
+                                                  const std::vector<glm::vec3>& posed, std::vector<glm::vec4>& out,
+                                                  const ShadowVolumeBound& bound) const {
     if (posed.size() != inputVertexCount_)
         throw std::invalid_argument("shadow volume mesh: " + std::to_string(posed.size()) +
                                     " posed positions for a mesh built from " + std::to_string(inputVertexCount_));
@@ -230,17 +330,18 @@ ShadowVolumeCounts ShadowVolumeMesh::appendVolume(const glm::dvec4& light, const
     for (std::size_t v = 0; v < sources_.size(); ++v) positions[v] = glm::dvec3(posed[sources_[v]]);
     std::vector<glm::dvec3> normals;
     computeNormals(positions, corners_, normals);
-    return emitVolume(light, toTarget, positions, normals, out);
+    return emitVolume(light, toTarget, positions, normals, out, bound);
 }
 
 // positions: per welded vertex; normals: per triangle of corners_, cross(b - a, c - a) of those
 // positions. Everything else (corners_, edges_, adjacency_, closedOutward_) is the mesh's.
 ShadowVolumeCounts ShadowVolumeMesh::emitVolume(const glm::dvec4& light, const glm::dmat4& toTarget,
                                                 const std::vector<glm::dvec3>& positions,
-                                                const std::vector<glm::dvec3>& normals,
-                                                std::vector<glm::vec4>& out) const {
+                                                const std::vector<glm::dvec3>& normals, std::vector<glm::vec4>& out,
+                                                const ShadowVolumeBound& bound) const {
     ShadowVolumeCounts counts;
     const bool directional = light.w == 0.0;
+    const bool bounded = boundGiven(bound);
     const glm::dvec3 lightPoint = directional ? glm::dvec3(0.0) : glm::dvec3(light) / light.w;
     const glm::dvec3 towardLight = glm::dvec3(light);
 
@@ -252,26 +353,45 @@ ShadowVolumeCounts ShadowVolumeMesh::emitVolume(const glm::dvec4& light, const g
         facing[t] = glm::dot(normals[t], toLight) > 0.0;
         facingCount += facing[t];
     }
-
-    TransformedVertices vertices;
-    vertices.directional = directional;
-    vertices.finite.resize(positions.size());
-    vertices.extruded.resize(directional ? 1 : positions.size());
-    for (std::size_t v = 0; v < positions.size(); ++v)
-        vertices.finite[v] = glm::vec4(toTarget * glm::dvec4(positions[v], 1.0));
-    if (directional)
-        vertices.extruded[0] = glm::vec4(toTarget * glm::dvec4(-towardLight, 0.0));
-    else
-        for (std::size_t v = 0; v < positions.size(); ++v)
-            vertices.extruded[v] = glm::vec4(toTarget * glm::dvec4(positions[v] - lightPoint, 0.0));
-
     // The classic volume's far cap is the non-facing triangles as they are; the summed
     // per-triangle volumes' far caps are every triangle turned to face the light, reversed.
-    // Either way a far cap triangle is (x, y, z) or (x, z, y) at infinity; none for a
-    // directional light, where all three corners are the same point.
     const bool classic = closedOutward_;
+
+    TransformedVertices vertices;
+    vertices.shared = directional && !bounded;
+    vertices.finite.resize(positions.size());
+    vertices.extruded.resize(vertices.shared ? 1 : positions.size());
+    if (!bounded) {
+        for (std::size_t v = 0; v < positions.size(); ++v)
+            vertices.finite[v] = glm::vec4(toTarget * glm::dvec4(positions[v], 1.0));
+        if (directional)
+            vertices.extruded[0] = glm::vec4(toTarget * glm::dvec4(-towardLight, 0.0));
+        else
+            for (std::size_t v = 0; v < positions.size(); ++v)
+                vertices.extruded[v] = glm::vec4(toTarget * glm::dvec4(positions[v] - lightPoint, 0.0));
+    } else {
+        // The bound is in target space, which toTarget may scale unevenly: the distances are
+        // measured there, on the vertices transformed in double.
+        std::vector<glm::dvec3> target(positions.size());
+        vertices.unmoved.resize(positions.size());
+        for (std::size_t v = 0; v < positions.size(); ++v) {
+            const glm::dvec4 f = toTarget * glm::dvec4(positions[v], 1.0);
+            vertices.finite[v] = glm::vec4(f);
+            target[v] = glm::dvec3(f);
+        }
+        if (directional) {
+            extrudeDirectionalToBound(towardLight, toTarget, bound, target, vertices);
+        } else {
+            std::vector<std::uint8_t> farCap(corners_.size());
+            for (std::size_t t = 0; t < corners_.size(); ++t) farCap[t] = !classic || !facing[t];
+            extrudePointToBound(lightPoint, toTarget, bound, positions, target, corners_, farCap, vertices);
+        }
+    }
+
+    // Either way a far cap triangle is (x, y, z) or (x, z, y) extruded; none for a directional
+    // light without a bound, where all three corners are the same point.
     const std::size_t nearCount = classic ? facingCount : corners_.size();
-    const std::size_t farCount = directional ? 0 : (classic ? corners_.size() - facingCount : corners_.size());
+    const std::size_t farCount = vertices.shared ? 0 : (classic ? corners_.size() - facingCount : corners_.size());
     out.reserve(out.size() + 3 * (nearCount + farCount));
     for (std::size_t t = 0; t < corners_.size(); ++t) {
         const glm::u32vec3& c = corners_[t];
@@ -279,11 +399,11 @@ ShadowVolumeCounts ShadowVolumeMesh::emitVolume(const glm::dvec4& light, const g
             emit(out, vertices.finite[c.x], vertices.finite[c.y], vertices.finite[c.z]);
         else if (!classic)
             emit(out, vertices.finite[c.x], vertices.finite[c.z], vertices.finite[c.y]);
-        if (directional || (classic && facing[t])) continue;
+        if (vertices.shared || (classic && facing[t])) continue;
         if (facing[t])
-            emit(out, vertices.atInfinity(c.x), vertices.atInfinity(c.z), vertices.atInfinity(c.y));
+            emit(out, vertices.far(c.x), vertices.far(c.z), vertices.far(c.y));
         else
-            emit(out, vertices.atInfinity(c.x), vertices.atInfinity(c.y), vertices.atInfinity(c.z));
+            emit(out, vertices.far(c.x), vertices.far(c.y), vertices.far(c.z));
     }
     counts.capTriangles = nearCount + farCount;
 

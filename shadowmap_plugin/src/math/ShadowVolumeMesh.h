@@ -6,7 +6,9 @@
 //
 // Extrusion to infinity: each extruded vertex is a homogeneous point with w = 0 (the direction
 // away from the light), so the volume is closed without a far distance and a projection with an
-// infinite far plane never clips it. The mesh's edge adjacency is built once at load; each
+// infinite far plane never clips it. Or, given a ShadowVolumeBound (a sphere holding every point
+// whose count matters), extrusion to finite points just past it: the same counts inside the
+// sphere for far less fill outside it. The mesh's edge adjacency is built once at load; each
 // frame only classifies the triangles and walks the edges, O(triangles + edges).
 //
 // Two formulations, chosen per mesh at load:
@@ -37,7 +39,9 @@
 //
 // Directional lights extrude every vertex to the same point at infinity, so the far cap and
 // one of the two triangles of each side quad are degenerate by construction; they are not
-// emitted, to save fill.
+// emitted, to save fill. With a bound the extruded vertices are distinct finite points, and the
+// far cap and both halves of each side quad are emitted (still less fill than a volume reaching
+// to infinity).
 #include <glm/glm.hpp>
 
 #include <cstddef>
@@ -49,6 +53,40 @@ namespace shadowmap {
 struct ShadowVolumeCounts {
     std::uint64_t silhouetteEdges = 0;  // side quads emitted (an edge of multiplicity 2 counts 2)
     std::uint64_t capTriangles = 0;     // near + far cap triangles emitted
+};
+
+// Where the volume may end: a sphere in the TARGET space (after toTarget) holding every point
+// whose count matters (the receivers the camera sees). With one, each extruded vertex is a finite
+// point (w = 1) on the ray from the light through its vertex, far enough that the ray has left
+// the sphere: the volume is exact inside the sphere and ends a little past it, so its side quads
+// and far cap cover less of the screen. Without one (radius <= 0 or no bound), extrusion to
+// infinity (w = 0) as before; a bound that is not finite counts as none.
+//
+// Far enough is more than the ray having left the sphere: the far cap and the side quads' far
+// edges are straight between extruded vertices, and a chord between two points past the sphere
+// still cuts through it when their rays are far apart (a light close to a large triangle, or
+// inside the sphere: a chord of a wide angle). So, for a point light, with u the unit direction
+// from the light to a vertex and h(u) = (c - light) . u + R the distance from the light to the
+// plane normal to u that touches the sphere's far side, a vertex goes at least h(u) along its ray,
+// and at least h(u') / (u . u') for each neighbour u' along an edge of a triangle that has a far
+// cap. Then all corners of such a triangle lie past the plane of any one corner's u, and so does
+// its far cap and everything beyond it along the rays: the part of the infinite volume that is cut
+// off holds no point of the sphere. A vertex with such a neighbour nearly 90 degrees or more away
+// seen from the light (u . u' < 1/16: it would have to go 16 times past the plane, or to no
+// finite distance) stays at infinity (w = 0) as without a bound, which mixes with the finite
+// ones: its direction still leads past that plane. A directional light needs no neighbours: each
+// vertex goes along the light's direction to the plane normal to it that touches the sphere's far
+// side. A vertex already past is its own extruded point, and the halves of side quads that it
+// collapses are left out (no area).
+//
+// Margins, against rounding: the sphere is taken 1e-3 of R larger (receivers on it are drawn from
+// float positions a rounding step off), and each extruded vertex goes 1e-5 of its distance from the
+// target origin further (the output's rounding to float moves it by about 1e-7 of that).
+// toTarget must be affine (last row 0, 0, 0, 1), as model-view matrices are, when a bound is given:
+// the distances are measured on its xyz.
+struct ShadowVolumeBound {
+    glm::dvec3 center{0.0};
+    double radius = 0.0;
 };
 
 // A mesh's edge adjacency, built once at load, from which each frame's volume is extruded.
@@ -78,8 +116,12 @@ public:
     // space. All math in double; the output rounded to float at the end.
     // Every emitted triangle is wound counter-clockwise seen from outside the volume it bounds.
     // A light exactly at a vertex extrudes that vertex to (0, 0, 0, 0): keep lights off casters.
-    ShadowVolumeCounts appendVolume(const glm::dvec4& light, const glm::dmat4& toTarget,
-                                    std::vector<glm::vec4>& out) const;
+    // With a bound (see ShadowVolumeBound), the extruded vertices are finite points past it
+    // instead (a few may stay at infinity as above), and the counts are exact inside it only;
+    // counts.silhouetteEdges still counts a quad whose collapsed halves are left out. A light at a
+    // vertex (in target space) keeps (0, 0, 0, 0) for that vertex and constrains no other.
+    ShadowVolumeCounts appendVolume(const glm::dvec4& light, const glm::dmat4& toTarget, std::vector<glm::vec4>& out,
+                                    const ShadowVolumeBound& bound = {}) const;
 
     // The same volume for the mesh posed: `posed` holds a position per input vertex (the
     // constructor's `positions` indexing, same size), e.g. a skinned or morphed pose. The
@@ -117,7 +159,8 @@ public:
     // buffers. Each call gathers the pose and recomputes the triangles' normals: O(vertices +
     // triangles) on top of the rest overload's work.
     ShadowVolumeCounts appendVolume(const glm::dvec4& light, const glm::dmat4& toTarget,
-                                    const std::vector<glm::vec3>& posed, std::vector<glm::vec4>& out) const;
+                                    const std::vector<glm::vec3>& posed, std::vector<glm::vec4>& out,
+                                    const ShadowVolumeBound& bound = {}) const;
 
 private:
     // An undirected edge between welded vertices a < b; its triangles are
@@ -134,7 +177,7 @@ private:
     // normals: per triangle, cross(b - a, c - a) of those positions.
     ShadowVolumeCounts emitVolume(const glm::dvec4& light, const glm::dmat4& toTarget,
                                   const std::vector<glm::dvec3>& positions, const std::vector<glm::dvec3>& normals,
-                                  std::vector<glm::vec4>& out) const;
+                                  std::vector<glm::vec4>& out, const ShadowVolumeBound& bound) const;
 
     std::vector<glm::dvec3> positions_;                // welded, object space
     std::vector<std::uint32_t> sources_;               // per welded vertex, the input vertex first welded into it

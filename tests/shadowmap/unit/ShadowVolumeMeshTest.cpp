@@ -29,6 +29,7 @@
 
 namespace {
 
+using shadowmap::ShadowVolumeBound;
 using shadowmap::ShadowVolumeCounts;
 using shadowmap::ShadowVolumeMesh;
 
@@ -250,6 +251,7 @@ struct VolumeCheck {
     int shadowed = 0;  // of those, in shadow
     int maxCount = 0;  // the largest winding number met
     int litInShadow = 0;  // in shadow but counted 0, inside a part turned inside out (see InsideOut)
+    int outsideBound = 0;  // points not checked: outside the bound the volume was made for
 };
 
 // Whether a posed volume may read lit in shadow where the posed surface is turned inside out.
@@ -294,9 +296,11 @@ constexpr double kIntegerTolerance = 1e-6;
 // facing triangles for the classic one. The sign follows toTarget's orientation (a mirror turns
 // the volume inside out in target space). With InsideOut::Allowed a point in shadow may count 0
 // (tallied in litInShadow) where the mesh's own winding number is negative, and only there.
+// With a bound (radius > 0) only the points strictly inside it in target space are checked; the
+// others are tallied in outsideBound.
 VolumeCheck checkTriangles(const Mesh& mesh, bool classic, const std::vector<glm::vec4>& triangles,
                            const glm::dvec4& light, const Sampling& sampling, const glm::dmat4& toTarget,
-                           InsideOut insideOut = InsideOut::Fails) {
+                           InsideOut insideOut = InsideOut::Fails, const ShadowVolumeBound& bound = {}) {
     EXPECT_TRUE(closedSurface(triangles));
     EXPECT_FALSE(anyDegenerate(triangles));
     const int orientation = glm::determinant(glm::dmat3(toTarget)) < 0.0 ? -1 : 1;
@@ -307,11 +311,16 @@ VolumeCheck checkTriangles(const Mesh& mesh, bool classic, const std::vector<glm
     VolumeCheck check;
     for (int i = 0; i < sampling.points; ++i) {
         const glm::dvec3 q = samplePoint(mesh, light, sampling, i, random);
+        const glm::dvec3 qInTarget = glm::dvec3(toTarget * glm::dvec4(q, 1.0));
+        if (bound.radius > 0.0 && glm::distance(qInTarget, bound.center) >= bound.radius) {
+            ++check.outsideBound;
+            continue;
+        }
         const Crossings crossings = crossingsToLight(mesh, light, q);
         if (nearShadowBoundary(mesh, light, q, crossings)) continue;
         ++check.kept;
         const int count = classic ? crossings.facing : crossings.all;
-        const double winding = windingNumber(triangles, glm::dvec3(toTarget * glm::dvec4(q, 1.0)));
+        const double winding = windingNumber(triangles, qInTarget);
         const long rounded = std::lround(winding);
         // The last condition is what the stencil test reads: non-zero exactly where something is
         // between q and the light. The first failing point is enough to report.
@@ -331,13 +340,14 @@ VolumeCheck checkTriangles(const Mesh& mesh, bool classic, const std::vector<glm
     return check;
 }
 
-// Builds the mesh's volume and checks it (checkTriangles).
+// Builds the mesh's volume (for the bound, if any) and checks it (checkTriangles).
 VolumeCheck checkVolume(const Mesh& mesh, const glm::dvec4& light, const Sampling& sampling = {},
-                        const glm::dmat4& toTarget = glm::dmat4(1.0)) {
+                        const glm::dmat4& toTarget = glm::dmat4(1.0), const ShadowVolumeBound& bound = {}) {
     const ShadowVolumeMesh volumeMesh = build(mesh);
     std::vector<glm::vec4> triangles;
-    volumeMesh.appendVolume(light, toTarget, triangles);
-    return checkTriangles(mesh, volumeMesh.closedOutward(), triangles, light, sampling, toTarget);
+    volumeMesh.appendVolume(light, toTarget, triangles, bound);
+    return checkTriangles(mesh, volumeMesh.closedOutward(), triangles, light, sampling, toTarget, InsideOut::Fails,
+                          bound);
 }
 
 // The mesh built at rest, its volume emitted posed (every copy of a welded vertex posed to the
@@ -353,8 +363,9 @@ VolumeCheck checkPosedVolume(const Mesh& rest, const std::vector<glm::vec3>& pos
 }
 
 // A check means something only if most points were kept and both lit and shadowed ones met.
+// Points outside a bound do not count (checkTriangles).
 void expectMeaningful(const VolumeCheck& check, const Sampling& sampling = {}) {
-    EXPECT_GT(check.kept, sampling.points * 9 / 10);
+    EXPECT_GT(check.kept, (sampling.points - check.outsideBound) * 9 / 10);
     EXPECT_GT(check.shadowed, check.kept / 20);
     EXPECT_LT(check.shadowed, check.kept - check.kept / 20);
 }
@@ -465,9 +476,10 @@ TEST(ShadowVolumeMeshTest, RejectsBadInput) {
 
 // ---- Counts ----
 
-// Triangles per side quad: 2, or 1 for a directional light (the other is degenerate).
-std::size_t emittedVertices(const ShadowVolumeCounts& counts, bool directional) {
-    return 3 * (counts.capTriangles + counts.silhouetteEdges * (directional ? 1 : 2));
+// Triangles per side quad: 2, or 1 for a directional light without a bound (the other is
+// degenerate).
+std::size_t emittedVertices(const ShadowVolumeCounts& counts, bool oneTrianglePerQuad) {
+    return 3 * (counts.capTriangles + counts.silhouetteEdges * (oneTrianglePerQuad ? 1 : 2));
 }
 
 TEST(ShadowVolumeMeshTest, CubeCountsFromDiagonalAndAbove) {
@@ -492,6 +504,30 @@ TEST(ShadowVolumeMeshTest, CubeCountsFromDiagonalAndAbove) {
         EXPECT_EQ(counts.capTriangles, c.caps);
         EXPECT_EQ(out.size(), 1 + emittedVertices(counts, c.light.w == 0.0));
         EXPECT_EQ(out[0], glm::vec4(7.0f));
+    }
+}
+
+TEST(ShadowVolumeMeshTest, BoundedDirectionalLightEmitsFarCapAndWholeQuads) {
+    // With a bound a directional light's extruded vertices are distinct points: the far cap (the
+    // triangles not facing the light) and both halves of each side quad are emitted. A point
+    // light's counts do not change.
+    const ShadowVolumeMesh cube = build(splitCube(glm::vec3(0.0f), 1.0f));
+    const ShadowVolumeBound bound{glm::dvec3(0.5, -0.2, 0.1), 4.0};
+    struct Case {
+        std::string name;
+        glm::dvec4 light;
+        std::uint64_t silhouette, caps;
+    };
+    const Case cases[] = {{"directional diagonal", towardLight(1, 1, 1), 6, 12},
+                          {"directional above", towardLight(0, 0, 1), 4, 12},
+                          {"point diagonal", pointLight(5, 5, 5), 6, 12}};
+    for (const Case& c : cases) {
+        SCOPED_TRACE(c.name);
+        std::vector<glm::vec4> out;
+        const ShadowVolumeCounts counts = cube.appendVolume(c.light, glm::dmat4(1.0), out, bound);
+        EXPECT_EQ(counts.silhouetteEdges, c.silhouette);
+        EXPECT_EQ(counts.capTriangles, c.caps);
+        EXPECT_EQ(out.size(), emittedVertices(counts, false));
     }
 }
 
@@ -552,14 +588,17 @@ TEST(ShadowVolumeMeshTest, IntersectingCubesCountEachEntry) {
     EXPECT_EQ(alongX.maxCount, 2);
 }
 
+std::vector<NamedLight> sheetLights() {
+    return {{"point above", pointLight(0.3, 0.2, 3.0)},
+            {"point below", pointLight(0.3, 0.2, -3.0)},
+            {"directional above", towardLight(0.2, -0.3, 1.0)},
+            {"directional below", towardLight(0.2, -0.3, -1.0)},
+            {"point close below", pointLight(0.1, -0.2, -0.05)}};
+}
+
 TEST(ShadowVolumeMeshTest, OpenSheetShadowsFromEitherSide) {
     const Mesh sheet = quadSheet();
-    const NamedLight lights[] = {{"point above", pointLight(0.3, 0.2, 3.0)},
-                                 {"point below", pointLight(0.3, 0.2, -3.0)},
-                                 {"directional above", towardLight(0.2, -0.3, 1.0)},
-                                 {"directional below", towardLight(0.2, -0.3, -1.0)},
-                                 {"point close below", pointLight(0.1, -0.2, -0.05)}};
-    for (const NamedLight& light : lights) {
+    for (const NamedLight& light : sheetLights()) {
         SCOPED_TRACE(light.name);
         const VolumeCheck check = checkVolume(sheet, light.light, {.halfSize = 3.0});
         expectMeaningful(check);
@@ -567,11 +606,15 @@ TEST(ShadowVolumeMeshTest, OpenSheetShadowsFromEitherSide) {
     }
 }
 
-TEST(ShadowVolumeMeshTest, OpenBoxShadowsAndLetsLightIn) {
-    const Mesh box = openBox();
+std::vector<NamedLight> openBoxLights() {
     std::vector<NamedLight> lights = standardLights();
     lights.push_back({"point inside", pointLight(0.2, -0.1, 0.3)});
-    for (const NamedLight& light : lights) {
+    return lights;
+}
+
+TEST(ShadowVolumeMeshTest, OpenBoxShadowsAndLetsLightIn) {
+    const Mesh box = openBox();
+    for (const NamedLight& light : openBoxLights()) {
         SCOPED_TRACE(light.name);
         expectMeaningful(checkVolume(box, light.light, {.seed = 5}));
     }
@@ -581,12 +624,16 @@ TEST(ShadowVolumeMeshTest, OpenBoxShadowsAndLetsLightIn) {
     EXPECT_EQ(floorInside.all, 0);
 }
 
-TEST(ShadowVolumeMeshTest, NonManifoldFinsCountEveryFinCrossed) {
-    const Mesh fins = threeFins();
+std::vector<NamedLight> finLights() {
     std::vector<NamedLight> lights = standardLights();
     lights.push_back({"point between fins", pointLight(0.3, 0.5, 0.1)});
+    return lights;
+}
+
+TEST(ShadowVolumeMeshTest, NonManifoldFinsCountEveryFinCrossed) {
+    const Mesh fins = threeFins();
     int maxCount = 0;
-    for (const NamedLight& light : lights) {
+    for (const NamedLight& light : finLights()) {
         SCOPED_TRACE(light.name);
         const VolumeCheck check = checkVolume(fins, light.light, {.halfSize = 3.0, .seed = 6});
         expectMeaningful(check);
@@ -595,16 +642,19 @@ TEST(ShadowVolumeMeshTest, NonManifoldFinsCountEveryFinCrossed) {
     EXPECT_GE(maxCount, 2);  // behind two fins the summed volumes count 2
 }
 
+std::vector<NamedLight> roomLights() {
+    return {{"point inside", pointLight(0.3, -0.4, 0.5)},
+            {"point outside", pointLight(5.0, 4.0, 3.0)},
+            {"directional", towardLight(0.3, 0.4, 1.0)}};
+}
+
 TEST(ShadowVolumeMeshTest, InwardRoomLitFromInsideIsLitInside) {
     // A single-shell room (closed, wound inward): lit from inside, nothing in it is shadowed
     // and everything outside is; lit from outside or by the sun, everything in it is shadowed.
     // The classic volume would get all three wrong (-1 all through the room and 0 outside it,
     // then 0 in the room).
     const Mesh room = inwardWound(splitCube(glm::vec3(0.0f), 2.0f));
-    const NamedLight lights[] = {{"point inside", pointLight(0.3, -0.4, 0.5)},
-                                 {"point outside", pointLight(5.0, 4.0, 3.0)},
-                                 {"directional", towardLight(0.3, 0.4, 1.0)}};
-    for (const NamedLight& light : lights) {
+    for (const NamedLight& light : roomLights()) {
         SCOPED_TRACE(light.name);
         expectMeaningful(checkVolume(room, light.light, {.seed = 7}));
     }
@@ -682,14 +732,18 @@ TEST(ShadowVolumeMeshTest, PosedAtRestIsTheRestVolumeBitForBit) {
         const ShadowVolumeMesh volumeMesh = build(mesh);
         for (const NamedLight& light : standardLights()) {
             SCOPED_TRACE(name + ", " + light.name);
-            std::vector<glm::vec4> rest(1, glm::vec4(7.0f)), posed(1, glm::vec4(7.0f));  // appended after
-            const ShadowVolumeCounts restCounts = volumeMesh.appendVolume(light.light, toTarget, rest);
-            const ShadowVolumeCounts posedCounts =
-                volumeMesh.appendVolume(light.light, toTarget, mesh.positions, posed);
-            EXPECT_GT(rest.size(), 1u);
-            EXPECT_TRUE(sameBits(rest, posed));
-            EXPECT_EQ(restCounts.silhouetteEdges, posedCounts.silhouetteEdges);
-            EXPECT_EQ(restCounts.capTriangles, posedCounts.capTriangles);
+            // Without and with a bound (one the volume crosses).
+            const ShadowVolumeBound crossed{glm::dvec3(toTarget * glm::dvec4(0.3, 0.0, -0.5, 1.0)), 2.5};
+            for (const ShadowVolumeBound& bound : {ShadowVolumeBound{}, crossed}) {
+                std::vector<glm::vec4> rest(1, glm::vec4(7.0f)), posed(1, glm::vec4(7.0f));  // appended after
+                const ShadowVolumeCounts restCounts = volumeMesh.appendVolume(light.light, toTarget, rest, bound);
+                const ShadowVolumeCounts posedCounts =
+                    volumeMesh.appendVolume(light.light, toTarget, mesh.positions, posed, bound);
+                EXPECT_GT(rest.size(), 1u);
+                EXPECT_TRUE(sameBits(rest, posed));
+                EXPECT_EQ(restCounts.silhouetteEdges, posedCounts.silhouetteEdges);
+                EXPECT_EQ(restCounts.capTriangles, posedCounts.capTriangles);
+            }
         }
     }
 }
@@ -829,6 +883,284 @@ TEST(ShadowVolumeMeshTest, PosedRejectsWrongSize) {
     EXPECT_THROW(empty.appendVolume(light, glm::dmat4(1.0), one, out), std::invalid_argument);
 }
 
+// ---- Bounded volumes: extruded to finite points just past a sphere in target space ----
+
+// A target space for the bounded checks: translate * rotate * scale, so that the scale's
+// components are toTarget's singular values and give the bound's radius in target space.
+struct NamedTarget {
+    std::string name;
+    glm::dmat4 toTarget;
+    double minScale = 1.0, maxScale = 1.0;
+};
+
+NamedTarget namedTarget(std::string name, const glm::dvec3& translation, double angle, const glm::dvec3& axis,
+                        const glm::dvec3& scale) {
+    const glm::dmat4 toTarget = glm::translate(glm::dmat4(1.0), translation) *
+                                glm::rotate(glm::dmat4(1.0), angle, glm::normalize(axis)) *
+                                glm::scale(glm::dmat4(1.0), scale);
+    const glm::dvec3 size = glm::abs(scale);
+    return {std::move(name), toTarget, std::min({size.x, size.y, size.z}), std::max({size.x, size.y, size.z})};
+}
+
+std::vector<NamedTarget> boundedTargets() {
+    return {namedTarget("identity", glm::dvec3(0.0), 0.0, glm::dvec3(0, 0, 1), glm::dvec3(1.0)),
+            namedTarget("turned, moved, scaled", glm::dvec3(0.5, -2.0, 1.0), 0.7, glm::dvec3(1, 2, 3),
+                        glm::dvec3(1.7)),
+            namedTarget("scaled unevenly", glm::dvec3(-3.0, 1.0, -6.0), -1.1, glm::dvec3(-2, 1, 0.5),
+                        glm::dvec3(0.6, 1.9, 1.2)),
+            namedTarget("mirrored", glm::dvec3(1.0, 0.0, -2.0), 0.4, glm::dvec3(0, 1, 1), glm::dvec3(1.3, -0.8, 1.0))};
+}
+
+struct NamedBound {
+    std::string name;
+    ShadowVolumeBound bound;
+    bool holdsAll = false;
+};
+
+// Two bounds for a sampling, in target space: one that holds the whole sampled region (the cube,
+// and the points past the mesh, all within sqrt(3) * halfSize + 1 of its center), so that every
+// point is checked; and a smaller one off center that the volume crosses, so that it ends among
+// the sampled points (those outside it are not checked).
+std::vector<NamedBound> boundsFor(const Sampling& sampling, const NamedTarget& target) {
+    const auto inTarget = [&](const glm::dvec3& p) { return glm::dvec3(target.toTarget * glm::dvec4(p, 1.0)); };
+    const glm::dvec3 offCenter = sampling.center + sampling.halfSize * glm::dvec3(0.2, -0.3, -0.25);
+    return {{"holding all", {inTarget(sampling.center), target.maxScale * (std::sqrt(3.0) * sampling.halfSize + 1.0)},
+             true},
+            {"crossed", {inTarget(offCenter), 0.3 * (target.minScale + target.maxScale) * sampling.halfSize}, false}};
+}
+
+// The mesh's volumes with bounds, in every target space of boundedTargets() and for both bounds
+// of boundsFor(): inside the bound, the count is exactly the infinite volume's (checkTriangles,
+// which also checks that the surface is closed and has no degenerate triangle). The crossed
+// bound holds fewer points, so it is sampled 4 times as densely.
+void checkBoundedVolumes(const Mesh& mesh, const std::vector<NamedLight>& lights, const Sampling& sampling) {
+    for (const NamedTarget& target : boundedTargets())
+        for (const NamedBound& bound : boundsFor(sampling, target)) {
+            Sampling dense = sampling;
+            if (!bound.holdsAll) dense.points *= 4;
+            int inside = 0, kept = 0, shadowed = 0;
+            for (const NamedLight& light : lights) {
+                SCOPED_TRACE(target.name + ", " + bound.name + ", " + light.name);
+                const VolumeCheck check = checkVolume(mesh, light.light, dense, target.toTarget, bound.bound);
+                if (bound.holdsAll) {
+                    EXPECT_EQ(check.outsideBound, 0);
+                    expectMeaningful(check, dense);
+                }
+                EXPECT_GT(check.kept, (dense.points - check.outsideBound) * 9 / 10);
+                inside += dense.points - check.outsideBound;
+                kept += check.kept;
+                shadowed += check.shadowed;
+            }
+            SCOPED_TRACE(target.name + ", " + bound.name);
+            EXPECT_GT(inside, int(lights.size()) * dense.points / 20);
+            EXPECT_GT(shadowed, kept / 20);
+            EXPECT_LT(shadowed, kept - kept / 20);
+        }
+}
+
+TEST(ShadowVolumeMeshTest, BoundedClosedVolumesCountExactlyInsideTheBound) {
+    checkBoundedVolumes(splitCube(glm::vec3(0.0f), 1.0f), standardLights(), {});
+    checkBoundedVolumes(uvSphere(16, 10, 1.0f), standardLights(), {.points = 400, .seed = 2});
+    checkBoundedVolumes(joined(splitCube(glm::vec3(0.0f), 1.0f), splitCube(glm::vec3(1.0f, 0.0f, 0.0f), 1.0f)),
+                        standardLights(), {.seed = 3});
+}
+
+TEST(ShadowVolumeMeshTest, BoundedSummedVolumesCountExactlyInsideTheBound) {
+    checkBoundedVolumes(quadSheet(), sheetLights(), {.halfSize = 3.0});
+    checkBoundedVolumes(openBox(), openBoxLights(), {.seed = 5});
+    checkBoundedVolumes(threeFins(), finLights(), {.halfSize = 3.0, .seed = 6});
+    checkBoundedVolumes(inwardWound(splitCube(glm::vec3(0.0f), 2.0f)), roomLights(), {.seed = 7});
+}
+
+TEST(ShadowVolumeMeshTest, BoundedVolumeAroundLightCloseToLargeTrianglesStaysExact) {
+    // A light close to a large triangle sees its corners far apart: a far cap put just past the
+    // sphere along each corner's ray would cut back through it between them (a chord of a wide
+    // angle). Here the bound is small and right behind the caster, where that chord would pass.
+    const Mesh sheet = quadSheet();
+    const Mesh cube = splitCube(glm::vec3(0.0f), 1.0f);
+    const glm::dvec4 closeBelow = pointLight(0.1, -0.2, -0.3), closeToFace = pointLight(0.1, 0.2, 1.3);
+    for (const NamedTarget& target : boundedTargets()) {
+        SCOPED_TRACE(target.name);
+        const auto inTarget = [&](const glm::dvec3& p) { return glm::dvec3(target.toTarget * glm::dvec4(p, 1.0)); };
+        const Sampling behindSheet{.center = glm::dvec3(0.0, 0.0, 1.2), .halfSize = 1.0, .points = 800, .seed = 14};
+        const ShadowVolumeBound sheetBound{inTarget(behindSheet.center), target.maxScale * 1.0};
+        const VolumeCheck sheetCheck = checkVolume(sheet, closeBelow, behindSheet, target.toTarget, sheetBound);
+        EXPECT_GT(sheetCheck.kept, 200);
+        EXPECT_GT(sheetCheck.shadowed, 50);
+        const Sampling behindCube{.center = glm::dvec3(0.0, 0.0, -1.6), .halfSize = 1.0, .points = 800, .seed = 15};
+        const ShadowVolumeBound cubeBound{inTarget(behindCube.center), target.maxScale * 1.0};
+        const VolumeCheck cubeCheck = checkVolume(cube, closeToFace, behindCube, target.toTarget, cubeBound);
+        EXPECT_GT(cubeCheck.kept, 200);
+        EXPECT_GT(cubeCheck.shadowed, 50);
+    }
+}
+
+// The emitted vertices that are not the mesh's own (toTarget * (p, 1), bit for bit): the
+// extruded ones, or those of them not equal to their vertex.
+std::vector<glm::vec4> extrudedVertices(const Mesh& mesh, const glm::dmat4& toTarget,
+                                        const std::vector<glm::vec4>& triangles) {
+    std::map<VertexKey, int> own;
+    for (const glm::vec3& p : mesh.positions) own[keyOf(glm::vec4(toTarget * glm::dvec4(glm::dvec3(p), 1.0)))] = 1;
+    std::vector<glm::vec4> extruded;
+    for (const glm::vec4& v : triangles)
+        if (!own.contains(keyOf(v))) extruded.push_back(v);
+    return extruded;
+}
+
+TEST(ShadowVolumeMeshTest, BoundedExtrusionIsFiniteAndPastTheSphere) {
+    // Every extruded vertex is a finite point (w = 1) outside the sphere, and not far past it:
+    // for a point light within 16 times the distance from the light to the sphere's far side
+    // (the farthest the cosine limit allows), for a directional one on the plane normal to the
+    // light that touches the sphere's far side (within the margins). The surface stays closed
+    // (checked with the counts too).
+    const std::pair<std::string, Mesh> meshes[] = {{"cube", splitCube(glm::vec3(0.0f), 1.0f)},
+                                                   {"sphere", uvSphere(16, 10, 1.0f)},
+                                                   {"sheet", quadSheet()},
+                                                   {"fins", threeFins()},
+                                                   {"room", inwardWound(splitCube(glm::vec3(0.0f), 2.0f))}};
+    const NamedLight lights[] = {{"point outside", pointLight(3.0, 2.2, 2.6)},
+                                 {"point high above", pointLight(0.15, -0.1, 6.0)},
+                                 {"point far", pointLight(-30.0, 12.0, 20.0)},
+                                 {"directional diagonal", towardLight(1.0, 0.8, 1.2)},
+                                 {"directional from below", towardLight(-0.2, 0.3, -1.0)}};
+    for (const auto& [name, mesh] : meshes) {
+        const ShadowVolumeMesh volumeMesh = build(mesh);
+        for (const NamedTarget& target : boundedTargets())
+            for (const NamedLight& light : lights) {
+                SCOPED_TRACE(name + ", " + target.name + ", " + light.name);
+                const glm::dvec3 center = glm::dvec3(target.toTarget * glm::dvec4(0.1, -0.2, 0.3, 1.0));
+                const ShadowVolumeBound bound{center, 3.0 * target.maxScale};
+                std::vector<glm::vec4> triangles;
+                volumeMesh.appendVolume(light.light, target.toTarget, triangles, bound);
+                EXPECT_TRUE(closedSurface(triangles));
+                const std::vector<glm::vec4> extruded = extrudedVertices(mesh, target.toTarget, triangles);
+                EXPECT_FALSE(extruded.empty());
+                const bool directional = light.light.w == 0.0;
+                const glm::dvec3 lightInTarget = glm::dvec3(target.toTarget * light.light);
+                const glm::dvec3 away =
+                    glm::normalize(glm::dvec3(target.toTarget * glm::dvec4(-glm::dvec3(light.light), 0.0)));
+                for (const glm::vec4& v : extruded) {
+                    ASSERT_EQ(v.w, 1.0f);
+                    ASSERT_TRUE(std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z));
+                    const glm::dvec3 p(v);
+                    EXPECT_GE(glm::distance(p, center), bound.radius);
+                    if (directional)
+                        EXPECT_LE(glm::dot(p - center, away), 1.01 * bound.radius);
+                    else
+                        EXPECT_LE(glm::distance(p, lightInTarget),
+                                  16.01 * (glm::distance(lightInTarget, center) + bound.radius));
+                }
+            }
+    }
+}
+
+TEST(ShadowVolumeMeshTest, BoundedExtrusionKeepsWideAnglesAtInfinity) {
+    // A light close to the cube's top sees the corners of the top face more than 90 degrees
+    // apart: no finite extrusion of those corners keeps the far cap between them past the
+    // sphere, so they stay at infinity (w = 0) while the others are finite and outside it. The
+    // counts are still exact inside (BoundedClosedVolumesCountExactlyInsideTheBound, with the
+    // same light).
+    const Mesh mesh = splitCube(glm::vec3(0.0f), 1.0f);
+    std::vector<glm::vec4> triangles;
+    const ShadowVolumeBound bound{glm::dvec3(0.0), 3.0};
+    build(mesh).appendVolume(pointLight(0.1, 0.2, 1.08), glm::dmat4(1.0), triangles, bound);
+    EXPECT_TRUE(closedSurface(triangles));
+    int atInfinity = 0, finite = 0;
+    for (const glm::vec4& v : extrudedVertices(mesh, glm::dmat4(1.0), triangles)) {
+        if (v.w == 0.0f) {
+            ++atInfinity;
+            continue;
+        }
+        ++finite;
+        EXPECT_EQ(v.w, 1.0f);
+        EXPECT_GE(glm::length(glm::dvec3(v)), bound.radius);
+    }
+    EXPECT_GT(atInfinity, 0);
+    EXPECT_GT(finite, 0);
+}
+
+TEST(ShadowVolumeMeshTest, BoundedLightInsideClosedCasterShadowsEverythingInTheBound) {
+    // LightInsideClosedCasterShadowsEverythingOutside with a bound around the bulb: its far cap
+    // now a closed finite shell past the bound, every point of the bound outside the bulb
+    // still counts 1.
+    const ShadowVolumeMesh bulb = build(uvSphere(16, 10, 1.0f));
+    std::vector<glm::vec4> triangles;
+    const ShadowVolumeBound bound{glm::dvec3(0.5, 0.0, -0.5), 4.0};
+    bulb.appendVolume(pointLight(0.1, 0.2, -0.1), glm::dmat4(1.0), triangles, bound);
+    EXPECT_TRUE(closedSurface(triangles));
+    for (const glm::dvec3& q : {glm::dvec3(3, 0, 0), glm::dvec3(-1, 2, -2), glm::dvec3(0.2, -0.1, -1.5),
+                                glm::dvec3(0.5, 0.0, 3.45)})
+        EXPECT_NEAR(windingNumber(triangles, q), 1.0, kIntegerTolerance);
+    for (const glm::vec4& v : extrudedVertices(uvSphere(16, 10, 1.0f), glm::dmat4(1.0), triangles)) {
+        EXPECT_EQ(v.w, 1.0f);
+        EXPECT_GE(glm::distance(glm::dvec3(v), bound.center), bound.radius);
+    }
+}
+
+TEST(ShadowVolumeMeshTest, BoundedFarFromOriginCameraRelativeTargetStaysExact) {
+    // FarFromOriginCameraRelativeTargetStaysExact with bounds: the bound is in target space,
+    // near the origin, and its distances are measured after the subtraction.
+    const glm::dvec3 far(1e7, -1e7, 1e7);
+    const glm::dmat4 toTarget = glm::rotate(glm::dmat4(1.0), 0.7, glm::normalize(glm::dvec3(1.0, 2.0, 3.0))) *
+                                glm::translate(glm::dmat4(1.0), -far);
+    const Mesh cube = splitCube(glm::vec3(far), 2.0f);
+    Mesh farSheet = quadSheet();
+    for (glm::vec3& p : farSheet.positions) p = glm::vec3(glm::dvec3(p) * 2.0 + far + glm::dvec3(0, 0, -4));
+    const NamedLight lights[] = {{"point", pointLight(far.x + 3.3, far.y + 0.7, far.z + 5.1)},
+                                 {"point close", pointLight(far.x + 0.3, far.y - 0.2, far.z + 2.15)},
+                                 {"directional", towardLight(0.3, -0.5, 1.0)}};
+    const Sampling sampling{.center = far, .halfSize = 6.0, .seed = 9};
+    const glm::dvec3 offCenter = glm::dvec3(toTarget * glm::dvec4(far + glm::dvec3(1.0, -1.5, -3.0), 1.0));
+    const NamedBound bounds[] = {{"holding all", {glm::dvec3(0.0), std::sqrt(3.0) * 6.0 + 1.0}, true},
+                                 {"crossed", {offCenter, 3.5}, false}};
+    for (const NamedBound& bound : bounds)
+        for (const NamedLight& light : lights) {
+            SCOPED_TRACE(bound.name + ", " + light.name);
+            for (const Mesh& mesh : {cube, joined(cube, farSheet)}) {
+                const VolumeCheck check = checkVolume(mesh, light.light, sampling, toTarget, bound.bound);
+                if (bound.holdsAll) {
+                    EXPECT_EQ(check.outsideBound, 0);
+                    expectMeaningful(check, sampling);
+                } else {
+                    EXPECT_GT(check.kept, 50);
+                    EXPECT_GT(check.kept, (sampling.points - check.outsideBound) * 9 / 10);
+                }
+            }
+        }
+}
+
+TEST(ShadowVolumeMeshTest, NoBoundIsTheInfiniteVolumeBitForBit) {
+    // radius 0 (the default), a negative radius, or one that is not finite: extrusion to
+    // infinity exactly as without the argument, for both overloads.
+    const glm::dmat4 toTarget = glm::rotate(glm::dmat4(1.0), 0.7, glm::normalize(glm::dvec3(1.0, 2.0, 3.0))) *
+                                glm::scale(glm::translate(glm::dmat4(1.0), glm::dvec3(0.5, -2.0, 1.0)),
+                                           glm::dvec3(0.6, 1.9, 1.2));
+    const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+    const ShadowVolumeBound noBounds[] = {{},
+                                          {glm::dvec3(1.0, 2.0, 3.0), 0.0},
+                                          {glm::dvec3(1.0, 2.0, 3.0), -2.0},
+                                          {glm::dvec3(0.0), nan},
+                                          {glm::dvec3(0.0), inf},
+                                          {glm::dvec3(nan, 0.0, 0.0), 3.0}};
+    const std::pair<std::string, Mesh> meshes[] = {{"cube", splitCube(glm::vec3(0.0f), 1.0f)},
+                                                   {"fins", threeFins()}};
+    for (const auto& [name, mesh] : meshes) {
+        const ShadowVolumeMesh volumeMesh = build(mesh);
+        for (const NamedLight& light : standardLights()) {
+            SCOPED_TRACE(name + ", " + light.name);
+            std::vector<glm::vec4> infinite;
+            volumeMesh.appendVolume(light.light, toTarget, infinite);
+            for (const ShadowVolumeBound& bound : noBounds) {
+                std::vector<glm::vec4> rest, posed;
+                volumeMesh.appendVolume(light.light, toTarget, rest, bound);
+                volumeMesh.appendVolume(light.light, toTarget, mesh.positions, posed, bound);
+                EXPECT_TRUE(sameBits(infinite, rest));
+                EXPECT_TRUE(sameBits(infinite, posed));
+            }
+        }
+    }
+}
+
 // Not a test of correctness: prints what one frame's volume of a ~100k-triangle sphere costs
 // on this machine (no assertion on time: it depends on the machine and its load).
 TEST(ShadowVolumeMeshTest, PrintsTimeForLargeSphere) {
@@ -843,28 +1175,45 @@ TEST(ShadowVolumeMeshTest, PrintsTimeForLargeSphere) {
     for (const glm::vec3& p : sphere.positions) posed.push_back(p * (1.0f + 0.1f * p.z));
     std::vector<glm::vec4> out;
     const glm::dmat4 toTarget = glm::translate(glm::dmat4(1.0), glm::dvec3(0.5, 1.0, -3.0));
+    // The bounded variant: a sphere of radius 3 around the caster (in target space).
+    const ShadowVolumeBound bound{glm::dvec3(0.5, 1.0, -3.0), 3.0};
     const NamedLight lights[] = {{"point", pointLight(3.0, 2.2, 2.6)}, {"directional", towardLight(1.0, 0.8, 1.2)}};
+    const auto millisecondsSince = [](std::chrono::steady_clock::time_point start) {
+        return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    };
     for (const NamedLight& light : lights) {
         constexpr int kFrames = 10;
-        double best = std::numeric_limits<double>::infinity(), bestPosed = best;
-        ShadowVolumeCounts counts;
+        double best = std::numeric_limits<double>::infinity(), bestPosed = best, bestBounded = best,
+               bestPosedBounded = best;
+        ShadowVolumeCounts counts, boundedCounts;
         for (int frame = 0; frame < kFrames; ++frame) {
             out.clear();  // capacity kept, as a renderer reusing its buffer would
-            const auto start = std::chrono::steady_clock::now();
+            auto start = std::chrono::steady_clock::now();
             counts = mesh.appendVolume(light.light, toTarget, out);
-            const auto middle = std::chrono::steady_clock::now();
+            best = std::min(best, millisecondsSince(start));
             out.clear();
-            const auto posedStart = std::chrono::steady_clock::now();
+            start = std::chrono::steady_clock::now();
             mesh.appendVolume(light.light, toTarget, posed, out);
-            const auto end = std::chrono::steady_clock::now();
-            best = std::min(best, std::chrono::duration<double, std::milli>(middle - start).count());
-            bestPosed = std::min(bestPosed, std::chrono::duration<double, std::milli>(end - posedStart).count());
+            bestPosed = std::min(bestPosed, millisecondsSince(start));
+            out.clear();
+            start = std::chrono::steady_clock::now();
+            boundedCounts = mesh.appendVolume(light.light, toTarget, out, bound);
+            bestBounded = std::min(bestBounded, millisecondsSince(start));
+            out.clear();
+            start = std::chrono::steady_clock::now();
+            mesh.appendVolume(light.light, toTarget, posed, out, bound);
+            bestPosedBounded = std::min(bestPosedBounded, millisecondsSince(start));
         }
         std::printf("[ timing   ] %zu triangles, %s light: appendVolume %.2f ms, posed %.2f ms (best of %d), %llu "
                     "quads, %llu caps; load %.1f ms\n",
                     mesh.triangleCount(), light.name.c_str(), best, bestPosed, kFrames,
                     (unsigned long long)counts.silhouetteEdges, (unsigned long long)counts.capTriangles,
                     std::chrono::duration<double, std::milli>(loadEnd - loadStart).count());
+        std::printf("[ timing   ] %zu triangles, %s light, bounded (radius %.0f): appendVolume %.2f ms, posed %.2f ms "
+                    "(best of %d), %llu quads, %llu caps\n",
+                    mesh.triangleCount(), light.name.c_str(), bound.radius, bestBounded, bestPosedBounded, kFrames,
+                    (unsigned long long)boundedCounts.silhouetteEdges,
+                    (unsigned long long)boundedCounts.capTriangles);
     }
 }
 
