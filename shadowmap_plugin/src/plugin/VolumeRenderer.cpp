@@ -2,6 +2,7 @@
 
 #include "engine/render/SceneGpu.h"
 #include "engine/scene/Deform.h"
+#include "engine/scene/FrustumCull.h"
 #include "engine/scene/Scene.h"
 
 #include <epoxy/gl.h>
@@ -101,6 +102,21 @@ glm::dvec4 lightInObject(const engine::LightInstance& light, engine::Light::Type
     return glm::inverse(model) * world;
 }
 
+// The sphere, in eye space, around every receiver the camera sees: the volumes need to be
+// right only there, so they end just past it instead of at infinity and their quads cover less
+// of the screen. Radius 0 (nothing in view receives): extrusion to infinity.
+ShadowVolumeBound receiverBound(const engine::Frame& frame, const glm::dmat4& viewMatrix) {
+    const engine::FrameCamera& camera = frame.camera();
+    const glm::dmat4 viewProjection = camera.projection * viewMatrix;
+    engine::Aabb receivers;
+    for (const engine::MeshInstance& instance : frame.scene().meshInstances)
+        if (instance.receiveShadows && engine::boxIntersectsFrustum(viewProjection, instance.worldBounds))
+            receivers.extend(instance.worldBounds);
+    if (receivers.empty()) return {};
+    const glm::dvec3 center = (receivers.min + receivers.max) * 0.5;
+    return {glm::dvec3(viewMatrix * glm::dvec4(center, 1.0)), glm::length(receivers.max - receivers.min) * 0.5};
+}
+
 } // namespace
 
 VolumeRenderer::VolumeRenderer()
@@ -152,6 +168,7 @@ VolumeCounts VolumeRenderer::buildVolumes(const engine::Frame& frame, const Ligh
     const engine::Scene& scene = frame.scene();
     const engine::LightInstance& placed = scene.lightInstances[light.slot];
     const glm::dmat4 viewMatrix = glm::inverse(frame.camera().eyeToWorld);  // V^-1
+    const ShadowVolumeBound bound = receiverBound(frame, viewMatrix);
     VolumeCounts counts;
     scratch_.clear();
     for (const engine::MeshInstance& instance : scene.meshInstances) {
@@ -166,10 +183,10 @@ VolumeCounts VolumeRenderer::buildVolumes(const engine::Frame& frame, const Ligh
             const glm::dmat4 model = glm::translate(instance.world, instance.deformed->origin);
             const CastingGeometry posed = castingGeometry(scene, scene.meshes[instance.mesh], instance.deformed.get());
             added = volumeMesh.appendVolume(lightInObject(placed, light.type, model), viewMatrix * model,
-                                            posed.positions, scratch_);
+                                            posed.positions, scratch_, bound);
         } else {
             added = volumeMesh.appendVolume(lightInObject(placed, light.type, instance.world),
-                                            viewMatrix * instance.world, scratch_);
+                                            viewMatrix * instance.world, scratch_, bound);
         }
         // A mirroring transform turns the volume inside out: its count would be -1 where the
         // others' are +1, and overlapping volumes of a mirrored and an unmirrored caster would
