@@ -3,6 +3,7 @@
 #include "engine/render/SceneGpu.h"
 #include "engine/scene/Deform.h"
 #include "engine/scene/FrustumCull.h"
+#include "engine/scene/ScreenFootprint.h"
 #include "engine/scene/Scene.h"
 
 #include <epoxy/gl.h>
@@ -117,6 +118,20 @@ ShadowVolumeBound receiverBound(const engine::Frame& frame, const glm::dmat4& vi
     return {glm::dvec3(viewMatrix * glm::dvec4(center, 1.0)), glm::length(receivers.max - receivers.min) * 0.5};
 }
 
+// The pixels where the light can light a receiver in view (engine/scene/ScreenFootprint.h).
+engine::PixelRect lightFootprint(const engine::Frame& frame, const LightShadow& light) {
+    const engine::Scene& scene = frame.scene();
+    const engine::FrameCamera& camera = frame.camera();
+    const glm::dmat4 viewProjection = camera.projection * glm::inverse(camera.eyeToWorld);
+    std::vector<engine::Aabb> receivers;
+    for (const engine::MeshInstance& instance : scene.meshInstances)
+        if (instance.receiveShadows && engine::boxIntersectsFrustum(viewProjection, instance.worldBounds))
+            receivers.push_back(instance.worldBounds);
+    const engine::LightInstance& placed = scene.lightInstances[light.slot];
+    return engine::lightFootprint(scene.lights[placed.light], placed, receivers, viewProjection, camera.width,
+                                  camera.height);
+}
+
 } // namespace
 
 VolumeRenderer::VolumeRenderer()
@@ -222,12 +237,20 @@ VolumeCounts VolumeRenderer::render(const engine::Frame& frame, engine::PassCont
     glViewport(0, 0, camera.width, camera.height);
     if (depthFrame_ != frame.index()) drawCameraDepth(frame, context, depth);
 
+    // Outside the light's footprint it lights nothing: no volume is counted there, and the
+    // visibility is what a map gives outside its frustum (a spot's cone: 0; else 1).
+    const engine::PixelRect footprint = lightFootprint(frame, light);
+    const float outside = light.type == engine::Light::Type::Spot ? 0.0f : 1.0f;
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glClearColor(outside, outside, outside, outside);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(footprint.x0, footprint.y0, footprint.x1 - footprint.x0, footprint.y1 - footprint.y0);
     glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
     glClearStencil(0);
     glClear(GL_COLOR_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
 
-    const VolumeCounts counts = buildVolumes(frame, light);
+    const VolumeCounts counts = footprint.empty() ? VolumeCounts{} : buildVolumes(frame, light);
     upload();
     if (counts.volumeTriangles > 0) {
         // z-fail: a volume face behind the nearest surface counts, +1 facing away from the
@@ -240,7 +263,7 @@ VolumeCounts VolumeRenderer::render(const engine::Frame& frame, engine::PassCont
         setDepthDirection(depthMapping);
         glDisable(GL_CULL_FACE);
         glFrontFace(GL_CCW);
-        glEnable(GL_DEPTH_CLAMP);  // the far caps at infinity stay, at depth 1
+        glEnable(GL_DEPTH_CLAMP);  // no far plane clips a volume's far end
         glEnable(GL_STENCIL_TEST);
         glStencilFunc(GL_ALWAYS, 0, 0xff);
         glStencilOpSeparate(GL_BACK, GL_KEEP, GL_INCR_WRAP, GL_KEEP);
@@ -269,6 +292,7 @@ VolumeCounts VolumeRenderer::render(const engine::Frame& frame, engine::PassCont
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glBindVertexArray(0);
     glDisable(GL_STENCIL_TEST);
+    glDisable(GL_SCISSOR_TEST);
     glDepthMask(GL_TRUE);
     glClipControl(GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE);
     return counts;
