@@ -51,6 +51,19 @@ int addSheet(SceneBuilder& builder, double y, double half) {
     return builder.addNode(node);
 }
 
+// A builder holding a volume-shadowed light and the floor slab; with `box`, the box over it.
+SceneBuilder litFloor(const char* name, Light::Type type, const glm::dvec3& position, const glm::dvec3& target,
+                      bool box = true) {
+    SceneBuilder builder;
+    builder.addLight(name, type, position, target, kVolume);
+    builder.addBox("floor", kFloor.min, kFloor.max);
+    if (box) builder.addBox("box", kBox.min, kBox.max);
+    return builder;
+}
+
+// The sun the directional scenes share: above and behind the box, toward the camera's left.
+const glm::dvec3 kSunPosition{-5, 6, -5};
+
 class ShadowVolume : public engine::test::ShadowPluginTest {
 protected:
     static void SetUpTestSuite() { loadPlugin(nlohmann::json::object()); }
@@ -66,10 +79,7 @@ protected:
 } // namespace
 
 TEST_F(ShadowVolume, SpotLightIsExactEdgesIncluded) {
-    SceneBuilder builder;
-    builder.addLight("spot", Light::Type::Spot, {-4, 8, -4}, {1.5, 0, 1.5}, kVolume);
-    builder.addBox("floor", kFloor.min, kFloor.max);
-    builder.addBox("box", kBox.min, kBox.max);
+    SceneBuilder builder = litFloor("spot", Light::Type::Spot, {-4, 8, -4}, {1.5, 0, 1.5});
     const engine::Scene scene = builder.build();
     const glm::dvec3 apex(-4, 8, -4);
     const glm::dvec3 axis = glm::normalize(glm::dvec3(1.5, 0, 1.5) - apex);
@@ -82,20 +92,14 @@ TEST_F(ShadowVolume, SpotLightIsExactEdgesIncluded) {
 }
 
 TEST_F(ShadowVolume, DirectionalLightIsExactEdgesIncluded) {
-    SceneBuilder builder;
-    builder.addLight("sun", Light::Type::Directional, {-5, 6, -5}, {0, 0, 0}, kVolume);
-    builder.addBox("floor", kFloor.min, kFloor.max);
-    builder.addBox("box", kBox.min, kBox.max);
+    SceneBuilder builder = litFloor("sun", Light::Type::Directional, kSunPosition, {0, 0, 0});
     const auto result = compare(builder.build(), overview(), {kFloor, kBox});
     EXPECT_GT(result.truthShadowed, 200);
     EXPECT_LE(result.wrongFraction(), kMaxWrongFraction);
 }
 
 TEST_F(ShadowVolume, PointLightIsExactEdgesIncluded) {
-    SceneBuilder builder;
-    builder.addLight("bulb", Light::Type::Point, {0.3, 5, 0.2}, {0.3, 0, 0.2}, kVolume);
-    builder.addBox("floor", kFloor.min, kFloor.max);
-    builder.addBox("box", kBox.min, kBox.max);
+    SceneBuilder builder = litFloor("bulb", Light::Type::Point, {0.3, 5, 0.2}, {0.3, 0, 0.2});
     const auto result = compare(builder.build(), overview(), {kFloor, kBox});
     EXPECT_GT(result.truthShadowed, 200);
     EXPECT_LE(result.wrongFraction(), kMaxWrongFraction);
@@ -104,12 +108,9 @@ TEST_F(ShadowVolume, PointLightIsExactEdgesIncluded) {
 // The sun 10 degrees above the horizon: a shadow five times longer than the box is tall,
 // whose sides meet the floor at a grazing angle.
 TEST_F(ShadowVolume, GrazingLightIsExactEdgesIncluded) {
-    SceneBuilder builder;
     const double elevation = glm::radians(10.0);
-    builder.addLight("low sun", Light::Type::Directional, {-std::cos(elevation), std::sin(elevation), -0.3}, {0, 0, 0},
-                     kVolume);
-    builder.addBox("floor", kFloor.min, kFloor.max);
-    builder.addBox("box", kBox.min, kBox.max);
+    SceneBuilder builder =
+        litFloor("low sun", Light::Type::Directional, {-std::cos(elevation), std::sin(elevation), -0.3}, {0, 0, 0});
     const auto result = compare(builder.build(), overview(), {kFloor, kBox});
     EXPECT_GT(result.truthShadowed, 500);
     EXPECT_LE(result.wrongFraction(), kMaxWrongFraction);
@@ -119,10 +120,7 @@ TEST_F(ShadowVolume, GrazingLightIsExactEdgesIncluded) {
 // only what lies behind the nearest surface, so the volume faces in front of the camera (or
 // clipped by its near plane) change nothing.
 TEST_F(ShadowVolume, CameraInsideAVolumeIsExact) {
-    SceneBuilder builder;
-    builder.addLight("bulb", Light::Type::Point, {0.3, 6, 0.2}, {0.3, 0, 0.2}, kVolume);
-    builder.addBox("floor", kFloor.min, kFloor.max);
-    builder.addBox("box", kBox.min, kBox.max);
+    SceneBuilder builder = litFloor("bulb", Light::Type::Point, {0.3, 6, 0.2}, {0.3, 0, 0.2});
     const engine::FrameCamera camera = engine::test::cameraLooking({0.2, 0.6, 0.1}, {4, 0, 3}, kWidth, kHeight);
     const auto result = compare(builder.build(), camera, {kFloor, kBox});
     EXPECT_GT(result.truthShadowed, 200);
@@ -135,9 +133,7 @@ TEST_F(ShadowVolume, CameraInsideAVolumeIsExact) {
 TEST_F(ShadowVolume, OpenSheetShadowsWhicheverSideFacesTheLight) {
     for (const bool turnedOver : {false, true}) {
         SCOPED_TRACE(turnedOver ? "triangles facing away from the light" : "triangles facing the light");
-        SceneBuilder builder;
-        builder.addLight("bulb", Light::Type::Point, {0.4, 6, 0.3}, {0.4, 0, 0.3}, kVolume);
-        builder.addBox("floor", kFloor.min, kFloor.max);
+        SceneBuilder builder = litFloor("bulb", Light::Type::Point, {0.4, 6, 0.3}, {0.4, 0, 0.3}, false);
         const int sheet = addSheet(builder, 2.0, 1.0);
         if (turnedOver)
             builder.scene.nodes[sheet].local = glm::translate(glm::dmat4(1.0), glm::dvec3(0, 2, 0)) *
@@ -152,11 +148,8 @@ TEST_F(ShadowVolume, OpenSheetShadowsWhicheverSideFacesTheLight) {
 // Two boxes that overlap: a floor point behind both is inside two volumes (count 2), one
 // behind either inside one; every such point is shadowed.
 TEST_F(ShadowVolume, IntersectingCastersAreExact) {
-    SceneBuilder builder;
-    builder.addLight("sun", Light::Type::Directional, {-5, 6, -5}, {0, 0, 0}, kVolume);
-    builder.addBox("floor", kFloor.min, kFloor.max);
+    SceneBuilder builder = litFloor("sun", Light::Type::Directional, kSunPosition, {0, 0, 0});
     const engine::Aabb second{{0, 1.5, -0.5}, {2.5, 2.5, 0.5}};
-    builder.addBox("box", kBox.min, kBox.max);
     builder.addBox("crossing box", second.min, second.max);
     const auto result = compare(builder.build(), overview(), {kFloor, kBox, second});
     EXPECT_GT(result.truthShadowed, 300);
@@ -184,10 +177,7 @@ TEST_F(ShadowVolume, CastersFarFromTheOriginAreExact) {
 // A still camera, light and scene keep the visibility of the frame before: no volume pass.
 // Moving the light makes it again, and the mask follows.
 TEST_F(ShadowVolume, AStillFrameReusesTheVisibilityAndAMovedLightRemakesIt) {
-    SceneBuilder builder;
-    builder.addLight("sun", Light::Type::Directional, {-5, 6, -5}, {0, 0, 0}, kVolume);
-    builder.addBox("floor", kFloor.min, kFloor.max);
-    builder.addBox("box", kBox.min, kBox.max);
+    SceneBuilder builder = litFloor("sun", Light::Type::Directional, kSunPosition, {0, 0, 0});
     engine::Scene scene = builder.build();
     engine::Renderer renderer({}, plugins());
     renderer.setScene(scene);
@@ -218,10 +208,7 @@ TEST_F(ShadowVolume, AStillFrameReusesTheVisibilityAndAMovedLightRemakesIt) {
 // -1 inside where an overlapping unmirrored caster's counts +1: together, light. Rewound, both
 // shadow.
 TEST_F(ShadowVolume, AMirroredCasterOverlappingAnotherShadowsAsBoth) {
-    SceneBuilder builder;
-    builder.addLight("sun", Light::Type::Directional, {-5, 6, -5}, {0, 0, 0}, kVolume);
-    builder.addBox("floor", kFloor.min, kFloor.max);
-    builder.addBox("box", kBox.min, kBox.max);
+    SceneBuilder builder = litFloor("sun", Light::Type::Directional, kSunPosition, {0, 0, 0});
     const engine::Aabb second{{0, 1.5, -0.5}, {2.5, 2.5, 0.5}};
     const int mirrored = builder.addBox("mirrored box", second.min, second.max);
     builder.scene.nodes[mirrored].local = builder.scene.nodes[mirrored].local * glm::scale(glm::dmat4(1.0), {-1, 1, 1});
