@@ -87,6 +87,11 @@ private:
 };
 
 // The volume's vertices for one light, each welded vertex transformed once.
+// The sine of the angle between a triangle's plane and the direction to the light below which
+// the triangle counts as edge-on (emitVolume): its shadow would be a sliver this wide, far under a
+// pixel, while float rounding of a light placed on a surface reaches about 1e-7.
+constexpr double kEdgeOnSine = 1e-6;
+
 struct TransformedVertices {
     std::vector<glm::vec4> finite;    // toTarget * (p, 1)
     std::vector<glm::vec4> extruded;  // toTarget * (p - light, 0), or past the bound; one shared entry when `shared`
@@ -345,17 +350,26 @@ ShadowVolumeCounts ShadowVolumeMesh::emitVolume(const glm::dvec4& light, const g
     const glm::dvec3 lightPoint = directional ? glm::dvec3(0.0) : glm::dvec3(light) / light.w;
     const glm::dvec3 towardLight = glm::dvec3(light);
 
-    // Which triangles face the light, in double: n . (light - a) > 0, or n . direction > 0.
-    std::vector<std::uint8_t> facing(corners_.size());
-    std::size_t facingCount = 0;
-    for (std::size_t t = 0; t < corners_.size(); ++t) {
-        const glm::dvec3 toLight = directional ? towardLight : lightPoint - positions[corners_[t].x];
-        facing[t] = glm::dot(normals[t], toLight) > 0.0;
-        facingCount += facing[t];
-    }
     // The classic volume's far cap is the non-facing triangles as they are; the summed
     // per-triangle volumes' far caps are every triangle turned to face the light, reversed.
     const bool classic = closedOutward_;
+    // Which triangles face the light, in double: n . (light - a) > 0, or n . direction > 0.
+    // A triangle whose plane passes within kEdgeOnSine of the light shows it no area and casts
+    // nothing. Extruded, it would lie in its own plane and z-fight with its own surface (a point
+    // light resting on a floor shadowed the whole floor). The classic volume needs every
+    // triangle on one side to stay closed: it is a near cap there, pushed behind its surface by
+    // the renderer like every near cap. The summed volumes leave it out: its own volume is flat.
+    std::vector<std::uint8_t> facing(corners_.size()), flat(corners_.size());
+    std::size_t facingCount = 0, flatCount = 0;
+    for (std::size_t t = 0; t < corners_.size(); ++t) {
+        const glm::dvec3 toLight = directional ? towardLight : lightPoint - positions[corners_[t].x];
+        const double side = glm::dot(normals[t], toLight);
+        const bool edgeOn = std::abs(side) <= kEdgeOnSine * glm::length(normals[t]) * glm::length(toLight);
+        facing[t] = side > 0.0 || (classic && edgeOn);
+        flat[t] = !classic && edgeOn;
+        facingCount += facing[t];
+        flatCount += flat[t];
+    }
 
     TransformedVertices vertices;
     vertices.shared = directional && !bounded;
@@ -383,17 +397,18 @@ ShadowVolumeCounts ShadowVolumeMesh::emitVolume(const glm::dvec4& light, const g
             extrudeDirectionalToBound(towardLight, toTarget, bound, target, vertices);
         } else {
             std::vector<std::uint8_t> farCap(corners_.size());
-            for (std::size_t t = 0; t < corners_.size(); ++t) farCap[t] = !classic || !facing[t];
+            for (std::size_t t = 0; t < corners_.size(); ++t) farCap[t] = classic ? !facing[t] : !flat[t];
             extrudePointToBound(lightPoint, toTarget, bound, positions, target, corners_, farCap, vertices);
         }
     }
 
     // Either way a far cap triangle is (x, y, z) or (x, z, y) extruded; none for a directional
     // light without a bound, where all three corners are the same point.
-    const std::size_t nearCount = classic ? facingCount : corners_.size();
-    const std::size_t farCount = vertices.shared ? 0 : (classic ? corners_.size() - facingCount : corners_.size());
+    const std::size_t nearCount = classic ? facingCount : corners_.size() - flatCount;
+    const std::size_t farCount = vertices.shared ? 0 : (classic ? corners_.size() - facingCount : nearCount);
     out.reserve(out.size() + 3 * (nearCount + farCount));
     for (std::size_t t = 0; t < corners_.size(); ++t) {
+        if (flat[t]) continue;
         const glm::u32vec3& c = corners_[t];
         if (facing[t])
             emit(out, vertices.finite[c.x], vertices.finite[c.y], vertices.finite[c.z]);
@@ -419,6 +434,7 @@ ShadowVolumeCounts ShadowVolumeMesh::emitVolume(const glm::dvec4& light, const g
         for (std::size_t i = begin; i < end; ++i) {
             const std::uint32_t t = adjacency_[i] >> 1;
             const long way = (adjacency_[i] & 1u) ? -1 : 1;
+            if (flat[t]) continue;
             if (facing[t])
                 m += way;
             else if (!classic)

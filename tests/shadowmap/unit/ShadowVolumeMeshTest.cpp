@@ -490,10 +490,11 @@ TEST(ShadowVolumeMeshTest, CubeCountsFromDiagonalAndAbove) {
         std::uint64_t silhouette, caps;
     };
     // Along a diagonal 3 faces (6 triangles) face the light and the silhouette is a hexagon;
-    // from straight above only the top does (the sides are edge-on: not facing) and the
-    // silhouette is its square. A point light adds the far cap: the other triangles.
+    // from straight above the top faces it and the sides are edge-on, near caps like the top
+    // (ShadowVolumeMesh.cpp, kEdgeOnSine), so the silhouette is the bottom's square. A point
+    // light adds the far cap: the other triangles.
     const Case cases[] = {{"directional diagonal", towardLight(1, 1, 1), 6, 6},
-                          {"directional above", towardLight(0, 0, 1), 4, 2},
+                          {"directional above", towardLight(0, 0, 1), 4, 10},
                           {"point diagonal", pointLight(5, 5, 5), 6, 12},
                           {"point above", pointLight(0, 0, 10), 4, 12}};
     for (const Case& c : cases) {
@@ -1218,3 +1219,30 @@ TEST(ShadowVolumeMeshTest, PrintsTimeForLargeSphere) {
 }
 
 } // namespace
+
+// A point light resting on a surface (on the top face of a cube, on an open sheet) lies in the
+// plane of that surface's triangles, up to rounding. Such a triangle casts nothing; classified
+// by the sign of a rounding error, one triangle of a face could face the light and its
+// neighbour not, and the quad on the edge between them would lie in the face and z-fight with
+// it (the renderer shadowed the whole surface). Edge-on triangles are classified alike
+// whichever side of the plane rounding puts the light: near caps in the classic volume, left
+// out of the summed ones.
+TEST(ShadowVolumeMeshTest, ALightInATrianglesPlaneGetsTheSameVolumeOnEitherSideOfIt) {
+    const ShadowVolumeMesh cube = build(splitCube(glm::vec3(0.0f), 1.0f));
+    const ShadowVolumeMesh sheet = build(quadSheet());
+    for (const double off : {0.0, 1e-9, -1e-9}) {
+        SCOPED_TRACE("light " + std::to_string(off) + " off the plane");
+        // On the cube's top face (z = 1): the top is a near cap, every other triangle a far cap,
+        // and the silhouette is the top's square.
+        std::vector<glm::vec4> cubeVolume;
+        const ShadowVolumeCounts onTop = cube.appendVolume(pointLight(0.2, -0.3, 1.0 + off), glm::dmat4(1.0), cubeVolume);
+        EXPECT_EQ(onTop.silhouetteEdges, 4u);
+        EXPECT_EQ(onTop.capTriangles, 12u);
+        EXPECT_TRUE(closedSurface(cubeVolume));
+        // In the sheet's plane (z = 0): nothing.
+        std::vector<glm::vec4> sheetVolume;
+        const ShadowVolumeCounts inSheet = sheet.appendVolume(pointLight(0.4, 0.1, off), glm::dmat4(1.0), sheetVolume);
+        EXPECT_TRUE(sheetVolume.empty());
+        EXPECT_EQ(inSheet.capTriangles + inSheet.silhouetteEdges, 0u);
+    }
+}
