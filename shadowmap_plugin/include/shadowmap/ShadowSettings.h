@@ -337,10 +337,15 @@ const SettingKey& settingKey(std::string_view name);
 // on changed, and lets the lit pass reuse its shade; false re-renders every map and
 // recomputes every shade every frame (for timing the passes). --stats reports it by this key.
 inline constexpr char kCacheMapsKey[] = "cache_maps";
+// "volume_extrusion": where variant volume's shadow volumes are made: "cpu" (default) from each
+// mesh's edge adjacency on the CPU, or "gpu" in a geometry shader for closed meshes (the others,
+// and skinned or morphed casters, stay on the CPU). docs/shadow-volumes.md measures both.
+inline constexpr char kVolumeExtrusionKey[] = "volume_extrusion";
 
 struct PluginSettings {
     ShadowSettings lightDefaults;
     bool cacheMaps = true;
+    bool volumesOnGpu = false;  // volume_extrusion "gpu"
 
     bool operator==(const PluginSettings&) const = default;
 };
@@ -349,7 +354,8 @@ struct PluginSettings {
 // in pluginSettingKeys(), throws engine::InputError "source: settings.key: reason".
 PluginSettings parsePluginSettings(const nlohmann::json& json, const std::string& source);
 
-// Every key the plugin's config settings accept: settingKeys()' names, then cache_maps.
+// Every key the plugin's config settings accept: settingKeys()' names, then cache_maps and
+// volume_extrusion.
 std::vector<std::string> pluginSettingKeys();
 
 } // namespace shadowmap

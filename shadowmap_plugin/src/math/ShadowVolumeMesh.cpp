@@ -87,11 +87,6 @@ private:
 };
 
 // The volume's vertices for one light, each welded vertex transformed once.
-// The sine of the angle between a triangle's plane and the direction to the light below which
-// the triangle counts as edge-on (emitVolume): its shadow would be a sliver this wide, far under a
-// pixel, while float rounding of a light placed on a surface reaches about 1e-7.
-constexpr double kEdgeOnSine = 1e-6;
-
 struct TransformedVertices {
     std::vector<glm::vec4> finite;    // toTarget * (p, 1)
     std::vector<glm::vec4> extruded;  // toTarget * (p - light, 0), or past the bound; one shared entry when `shared`
@@ -450,6 +445,30 @@ ShadowVolumeCounts ShadowVolumeMesh::emitVolume(const glm::dvec4& light, const g
         counts.silhouetteEdges += std::uint64_t(std::labs(m));
     }
     return counts;
+}
+
+std::vector<std::uint32_t> ShadowVolumeMesh::adjacencyIndices() const {
+    if (!closedOutward_) return {};
+    std::vector<std::uint32_t> indices(6 * corners_.size());
+    for (std::size_t t = 0; t < corners_.size(); ++t)
+        for (int k = 0; k < 3; ++k) indices[6 * t + 2 * k] = corners_[t][k];
+    for (std::size_t e = 0; e < edges_.size(); ++e) {
+        const std::size_t begin = edges_[e].firstAdjacent;  // closed: exactly two triangles
+        const std::uint32_t triangles[2] = {adjacency_[begin] >> 1, adjacency_[begin + 1] >> 1};
+        for (int side = 0; side < 2; ++side) {
+            const glm::u32vec3& here = corners_[triangles[side]];
+            const glm::u32vec3& across = corners_[triangles[1 - side]];
+            std::uint32_t opposite = across.x;
+            for (int k = 0; k < 3; ++k)
+                if (across[k] != edges_[e].a && across[k] != edges_[e].b) opposite = across[k];
+            for (int k = 0; k < 3; ++k) {
+                const std::uint32_t from = here[k], to = here[(k + 1) % 3];
+                if ((from == edges_[e].a && to == edges_[e].b) || (from == edges_[e].b && to == edges_[e].a))
+                    indices[6 * triangles[side] + 2 * k + 1] = opposite;
+            }
+        }
+    }
+    return indices;
 }
 
 } // namespace shadowmap

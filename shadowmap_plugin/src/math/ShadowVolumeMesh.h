@@ -50,6 +50,12 @@
 
 namespace shadowmap {
 
+// The sine of the angle between a triangle's plane and the direction to the light below which
+// the triangle counts as edge-on (it casts nothing; emitVolume): its shadow would be a sliver this
+// wide, far under a pixel, while float rounding of a light placed on a surface reaches about 1e-7.
+// The geometry shader that makes the same volume on the GPU reads it too (EDGE_ON_SINE).
+inline constexpr double kEdgeOnSine = 1e-6;
+
 struct ShadowVolumeCounts {
     std::uint64_t silhouetteEdges = 0;  // side quads emitted (an edge of multiplicity 2 counts 2)
     std::uint64_t capTriangles = 0;     // near + far cap triangles emitted
@@ -108,6 +114,14 @@ public:
     std::size_t triangleCount() const { return corners_.size(); }
     std::size_t edgeCount() const { return edges_.size(); }
     std::size_t vertexCount() const { return positions_.size(); }  // after welding
+
+    // For extrusion on the GPU (a geometry shader reading GL_TRIANGLES_ADJACENCY): the welded
+    // positions, and per triangle six indices into them, each corner followed by the vertex of
+    // the triangle across the edge from that corner to the next, opposite that edge. Only a
+    // closedOutward() mesh has exactly one triangle across every edge and gets the classic
+    // volume a shader can make per triangle: empty for any other.
+    const std::vector<glm::dvec3>& weldedPositions() const { return positions_; }
+    std::vector<std::uint32_t> adjacencyIndices() const;
 
     // Appends the shadow volume's triangles to `out` as homogeneous points: each finite vertex
     // is toTarget * (p, 1), each extruded vertex at infinity is toTarget * (p - light.xyz, 0) for

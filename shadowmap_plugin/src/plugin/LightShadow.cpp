@@ -147,6 +147,7 @@ nlohmann::json LightShadow::stats() const {
     if (frame.kind == MapKind::Screen) {
         out["silhouette_edges"] = frame.silhouetteEdges;
         out["cap_triangles"] = frame.capTriangles;
+        out["casters_extruded_on_gpu"] = frame.gpuVolumeCasters;
     }
     if (const MapProjection* projection = mapProjection(frame.kind)) projection->addStats(*this, out);
     if (frame.autoCascades) {

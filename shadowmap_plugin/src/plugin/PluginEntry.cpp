@@ -10,7 +10,7 @@ namespace {
 void registerShadowMap(engine::PluginRegistry* registry, const char* settingsJson) {
     // No source: the plugin host prefixes the config file and the plugin's name.
     const shadowmap::PluginSettings settings = shadowmap::parsePluginSettings(nlohmann::json::parse(settingsJson), "");
-    registry->addRenderPlugin(std::make_unique<shadowmap::ShadowMapPlugin>(settings.lightDefaults, settings.cacheMaps));
+    registry->addRenderPlugin(std::make_unique<shadowmap::ShadowMapPlugin>(settings));
 }
 
 } // namespace

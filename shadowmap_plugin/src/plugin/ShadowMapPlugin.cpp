@@ -90,7 +90,7 @@ void ShadowMapPlugin::addPasses(engine::Frame& frame) {
     }
     for (const LightShadow& light : lights_)
         if (light.settings.variant == Variant::Volume && !volumes_) {
-            volumes_ = std::make_unique<VolumeRenderer>();
+            volumes_ = std::make_unique<VolumeRenderer>(volumesOnGpu_);
             volumes_->prepareScene(frame.scene());
         }
     const PlanContext context = planContext(frame.scene(), frame.camera());

@@ -24,9 +24,10 @@ namespace shadowmap {
 class ShadowMapPlugin final : public engine::RenderPlugin {
 public:
     // cacheMaps: keep a light's map across frames while its inputs are unchanged, and give
-    // the lit pass shade keys so it may reuse the lights' shade too.
-    ShadowMapPlugin(const ShadowSettings& defaults, bool cacheMaps)
-        : defaults_(defaults), cacheMaps_(cacheMaps) {}
+    // the lit pass shade keys so it may reuse the lights' shade too. volumesOnGpu: where
+    // variant volume's volumes are made (shadowmap/ShadowSettings.h volume_extrusion).
+    explicit ShadowMapPlugin(const PluginSettings& settings)
+        : defaults_(settings.lightDefaults), cacheMaps_(settings.cacheMaps), volumesOnGpu_(settings.volumesOnGpu) {}
 
     std::string name() const override { return kPluginName; }
     // Any key of extras.shadow (ShadowSettings.h), checked now: over the light's extras.
@@ -54,6 +55,7 @@ private:
     std::set<std::string> warned_;              // warnings already printed
     std::string scenePath_;                     // the scene's file, for messages
     bool cacheMaps_ = true;
+    bool volumesOnGpu_ = false;
     std::uint64_t sceneGeneration_ = 0;
     std::uint64_t cacheHits_ = 0, cacheMisses_ = 0;  // since the scene was prepared
 };

@@ -65,6 +65,7 @@ engine::ResourceHandle addVolumePass(LightShadow& light, engine::Frame& frame, V
             light.frame.triangles += counts.volumeTriangles;
             light.frame.silhouetteEdges += counts.silhouetteEdges;
             light.frame.capTriangles += counts.capTriangles;
+            light.frame.gpuVolumeCasters += counts.gpuCasters;
             light.visibilityKey = key;
         }));
     return visibility;

@@ -134,12 +134,14 @@ engine::PixelRect lightFootprint(const engine::Frame& frame, const LightShadow& 
 
 } // namespace
 
-VolumeRenderer::VolumeRenderer()
+VolumeRenderer::VolumeRenderer(bool onGpu)
     : volumeProgram_(compileProgram("shadow volumes", shaders::shadow_volume_vert, shaders::shadow_volume_frag)),
       resolveProgram_(compileProgram("shadow volume resolve", shaders::moments_vert, shaders::volume_resolve_frag)),
       framebuffer_(engine::gl::Framebuffer::create()),
       pointArray_(engine::gl::VertexArray::create()),
-      empty_(engine::gl::VertexArray::create()) {}
+      empty_(engine::gl::VertexArray::create()) {
+    if (onGpu) gpu_ = std::make_unique<GpuVolumeExtrusion>();
+}
 
 void VolumeRenderer::prepareScene(const engine::Scene& scene) {
     meshes_.clear();
@@ -147,6 +149,7 @@ void VolumeRenderer::prepareScene(const engine::Scene& scene) {
         const CastingGeometry geometry = castingGeometry(scene, mesh, nullptr);
         meshes_.emplace_back(geometry.positions, geometry.indices);
     }
+    if (gpu_) gpu_->prepareScene(meshes_);
     depthFrame_ = std::numeric_limits<std::uint64_t>::max();
 }
 
@@ -186,10 +189,17 @@ VolumeCounts VolumeRenderer::buildVolumes(const engine::Frame& frame, const Ligh
     const ShadowVolumeBound bound = receiverBound(frame, viewMatrix);
     VolumeCounts counts;
     scratch_.clear();
+    gpuCasters_.clear();
     for (const engine::MeshInstance& instance : scene.meshInstances) {
         if (!instance.castShadows || instance.mesh < 0) continue;
         const ShadowVolumeMesh& volumeMesh = meshes_[instance.mesh];
         if (volumeMesh.triangleCount() == 0) continue;
+        if (gpu_ && !instance.deformed && gpu_->extrudes(instance.mesh)) {
+            gpuCasters_.push_back(&instance);
+            ++counts.casters;
+            ++counts.gpuCasters;
+            continue;
+        }
         ShadowVolumeCounts added;
         const std::size_t first = scratch_.size();
         if (instance.deformed) {
@@ -252,7 +262,7 @@ VolumeCounts VolumeRenderer::render(const engine::Frame& frame, engine::PassCont
 
     const VolumeCounts counts = footprint.empty() ? VolumeCounts{} : buildVolumes(frame, light);
     upload();
-    if (counts.volumeTriangles > 0) {
+    if (counts.volumeTriangles > 0 || !gpuCasters_.empty()) {
         // z-fail: a volume face behind the nearest surface counts, +1 facing away from the
         // camera, -1 facing it (wrapping, so the order of faces does not matter); a surface
         // point inside k volumes ends with k. The volumes are wound outward (ShadowVolumeMesh.h).
@@ -275,9 +285,20 @@ VolumeCounts VolumeRenderer::render(const engine::Frame& frame, engine::PassCont
         glPolygonOffset(away * kVolumeOffsetFactor, away * kVolumeOffsetUnits);
         volumeProgram_.use();
         volumeProgram_.set("uProjection", glm::mat4(depthMapping.projection));
-        pointArray_.bind();
-        glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(scratch_.size()));
-        context.countDraw(counts.volumeTriangles);
+        if (counts.volumeTriangles > 0) {
+            pointArray_.bind();
+            glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(scratch_.size()));
+            context.countDraw(counts.volumeTriangles);
+        }
+        const glm::dmat4 viewProjection = depthMapping.projection * glm::inverse(camera.eyeToWorld);
+        const glm::dvec4 lightWorld = lightInObject(frame.scene().lightInstances[light.slot], light.type, glm::dmat4(1.0));
+        for (const engine::MeshInstance* instance : gpuCasters_) {
+            // A mirroring transform turns the volume inside out: its faces' window winding flips.
+            glFrontFace(glm::determinant(glm::dmat3(instance->world)) < 0.0 ? GL_CW : GL_CCW);
+            context.countDraw(gpu_->draw(*instance, viewProjection, lightWorld));
+        }
+        glFrontFace(GL_CCW);
+        glBindVertexArray(0);
         glDisable(GL_POLYGON_OFFSET_FILL);
         glDisable(GL_DEPTH_CLAMP);
     }

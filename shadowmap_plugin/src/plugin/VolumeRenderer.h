@@ -7,9 +7,11 @@
 // (1 where it is 0). Exact at every pixel centre, whatever the light's type or distance.
 //
 // The volumes are made on the CPU from each mesh's edge adjacency (math/ShadowVolumeMesh.h),
-// in camera-relative eye space composed in double.
+// in camera-relative eye space composed in double, or for closed meshes optionally in a
+// geometry shader (GpuVolumeExtrusion.h).
 #include "math/ShadowVolumeMesh.h"
 #include "plugin/DepthRenderer.h"
+#include "plugin/GpuVolumeExtrusion.h"
 #include "plugin/LightShadow.h"
 
 #include "engine/gl/Buffer.h"
@@ -21,6 +23,7 @@
 
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -31,11 +34,14 @@ struct VolumeCounts {
     std::uint64_t volumeTriangles = 0;  // triangles drawn into the stencil buffer
     std::uint64_t silhouetteEdges = 0;
     std::uint64_t capTriangles = 0;
+    std::uint64_t gpuCasters = 0;       // of `casters`, those extruded in the geometry shader
 };
 
 class VolumeRenderer {
 public:
-    VolumeRenderer();
+    // onGpu: closed, undeformed casters' volumes are extruded in a geometry shader
+    // (GpuVolumeExtrusion.h); the rest on the CPU.
+    explicit VolumeRenderer(bool onGpu);
 
     // Each mesh's edge adjacency, from its casting primitives, once per scene (alpha-tested
     // ones left out: a light with such casters gets a map instead, LightResolver.h).
@@ -62,6 +68,8 @@ private:
     std::size_t pointCapacity_ = 0;
     engine::gl::VertexArray pointArray_, empty_;
     std::vector<glm::vec4> scratch_;
+    std::unique_ptr<GpuVolumeExtrusion> gpu_;  // volume_extrusion "gpu"
+    std::vector<const engine::MeshInstance*> gpuCasters_;  // this light's casters gpu_ draws
 };
 
 } // namespace shadowmap

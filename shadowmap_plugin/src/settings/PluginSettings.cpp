@@ -2,6 +2,7 @@
 // plugin-wide keys, checked together so an unknown key's message lists every known one.
 #include "shadowmap/ShadowSettings.h"
 
+#include "engine/util/Error.h"
 #include "engine/util/JsonRead.h"
 
 namespace shadowmap {
@@ -17,6 +18,7 @@ std::vector<std::string> pluginSettingKeys() {
     std::vector<std::string> keys;
     for (const SettingKey& key : settingKeys()) keys.push_back(key.name);
     keys.push_back(kCacheMapsKey);
+    keys.push_back(kVolumeExtrusionKey);
     return keys;
 }
 
@@ -29,6 +31,14 @@ PluginSettings parsePluginSettings(const nlohmann::json& json, const std::string
         settings.cacheMaps =
             engine::json::readBool(json[kCacheMapsKey], source, std::string(kObject) + "." + kCacheMapsKey);
         lightDefaults.erase(kCacheMapsKey);
+    }
+    if (json.contains(kVolumeExtrusionKey)) {
+        const std::string object = std::string(kObject) + "." + kVolumeExtrusionKey;
+        const std::string where = engine::json::readString(json[kVolumeExtrusionKey], source, object);
+        if (where != "cpu" && where != "gpu")
+            engine::throwInputError(source, object, "unknown value \"" + where + "\" (known: cpu, gpu)");
+        settings.volumesOnGpu = where == "gpu";
+        lightDefaults.erase(kVolumeExtrusionKey);
     }
     applySettings(settings.lightDefaults, lightDefaults, source, kObject);
     return settings;

@@ -38,8 +38,9 @@ struct LightShadowFrame {
     std::vector<std::string> warnings;
     int facesRendered = 0, facesSkipped = 0;
     std::uint64_t draws = 0, triangles = 0, castersCulled = 0;
-    // volume: the silhouette edges extruded and the cap triangles drawn this frame.
-    std::uint64_t silhouetteEdges = 0, capTriangles = 0;
+    // volume: the silhouette edges extruded and the cap triangles drawn this frame by the CPU,
+    // and the casters whose volumes a geometry shader made instead (volume_extrusion "gpu").
+    std::uint64_t silhouetteEdges = 0, capTriangles = 0, gpuVolumeCasters = 0;
     // Casters left out because their shadow reaches no visible receiver (UnseenShadows.h),
     // counted per layer drawn; and per map layer (layerIndex), which ones: empty when none is.
     std::uint64_t castersUnseen = 0;

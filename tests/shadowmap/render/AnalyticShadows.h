@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <functional>
@@ -136,7 +137,9 @@ inline MaskStats compareFloorMaskWith(const std::vector<std::uint8_t>& mask, con
                 stats.evaluated, stats.truthLit, stats.truthShadowed, stats.acne, stats.leak,
                 100.0 * stats.wrongFraction());
     if (stats.wrong() > 0) {
-        const std::string name = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+        // A parameterized test's name holds '/' (Suite/Name/param): one file name, not folders.
+        std::string name = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+        std::replace(name.begin(), name.end(), '/', '_');
         std::vector<std::uint8_t> truthImage(truth.size());
         for (std::size_t i = 0; i < truth.size(); ++i) truthImage[i] = truth[i] < 0 ? 128 : truth[i] * 255;
         std::filesystem::create_directories(TEST_OUTPUT_DIR);

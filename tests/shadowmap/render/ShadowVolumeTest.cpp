@@ -64,9 +64,20 @@ SceneBuilder litFloor(const char* name, Light::Type type, const glm::dvec3& posi
 // The sun the directional scenes share: above and behind the box, toward the camera's left.
 const glm::dvec3 kSunPosition{-5, 6, -5};
 
-class ShadowVolume : public engine::test::ShadowPluginTest {
+// Every test runs with the volumes made on the CPU and with those of closed casters made in
+// a geometry shader (the plugin's volume_extrusion): both must be exact.
+class ShadowVolume : public engine::test::ShadowPluginTest, public ::testing::WithParamInterface<const char*> {
 protected:
-    static void SetUpTestSuite() { loadPlugin(nlohmann::json::object()); }
+    void SetUp() override {
+        if (loaded_ == GetParam()) return;
+        loadPlugin({{"volume_extrusion", GetParam()}});
+        loaded_ = GetParam();
+    }
+    static void TearDownTestSuite() {
+        ShadowPluginTest::TearDownTestSuite();
+        loaded_.clear();
+    }
+    static inline std::string loaded_;
 
     engine::test::MaskStats compare(const engine::Scene& scene, const engine::FrameCamera& camera,
                                     const std::vector<engine::Aabb>& occluders,
@@ -78,7 +89,7 @@ protected:
 
 } // namespace
 
-TEST_F(ShadowVolume, SpotLightIsExactEdgesIncluded) {
+TEST_P(ShadowVolume, SpotLightIsExactEdgesIncluded) {
     SceneBuilder builder = litFloor("spot", Light::Type::Spot, {-4, 8, -4}, {1.5, 0, 1.5});
     const engine::Scene scene = builder.build();
     const glm::dvec3 apex(-4, 8, -4);
@@ -91,14 +102,14 @@ TEST_F(ShadowVolume, SpotLightIsExactEdgesIncluded) {
     EXPECT_LE(result.wrongFraction(), kMaxWrongFraction);
 }
 
-TEST_F(ShadowVolume, DirectionalLightIsExactEdgesIncluded) {
+TEST_P(ShadowVolume, DirectionalLightIsExactEdgesIncluded) {
     SceneBuilder builder = litFloor("sun", Light::Type::Directional, kSunPosition, {0, 0, 0});
     const auto result = compare(builder.build(), overview(), {kFloor, kBox});
     EXPECT_GT(result.truthShadowed, 200);
     EXPECT_LE(result.wrongFraction(), kMaxWrongFraction);
 }
 
-TEST_F(ShadowVolume, PointLightIsExactEdgesIncluded) {
+TEST_P(ShadowVolume, PointLightIsExactEdgesIncluded) {
     SceneBuilder builder = litFloor("bulb", Light::Type::Point, {0.3, 5, 0.2}, {0.3, 0, 0.2});
     const auto result = compare(builder.build(), overview(), {kFloor, kBox});
     EXPECT_GT(result.truthShadowed, 200);
@@ -107,7 +118,7 @@ TEST_F(ShadowVolume, PointLightIsExactEdgesIncluded) {
 
 // The sun 10 degrees above the horizon: a shadow five times longer than the box is tall,
 // whose sides meet the floor at a grazing angle.
-TEST_F(ShadowVolume, GrazingLightIsExactEdgesIncluded) {
+TEST_P(ShadowVolume, GrazingLightIsExactEdgesIncluded) {
     const double elevation = glm::radians(10.0);
     SceneBuilder builder =
         litFloor("low sun", Light::Type::Directional, {-std::cos(elevation), std::sin(elevation), -0.3}, {0, 0, 0});
@@ -119,7 +130,7 @@ TEST_F(ShadowVolume, GrazingLightIsExactEdgesIncluded) {
 // The camera under the box, inside its volume, looking out across the floor: z-fail counts
 // only what lies behind the nearest surface, so the volume faces in front of the camera (or
 // clipped by its near plane) change nothing.
-TEST_F(ShadowVolume, CameraInsideAVolumeIsExact) {
+TEST_P(ShadowVolume, CameraInsideAVolumeIsExact) {
     SceneBuilder builder = litFloor("bulb", Light::Type::Point, {0.3, 6, 0.2}, {0.3, 0, 0.2});
     const engine::FrameCamera camera = engine::test::cameraLooking({0.2, 0.6, 0.1}, {4, 0, 3}, kWidth, kHeight);
     const auto result = compare(builder.build(), camera, {kFloor, kBox});
@@ -130,7 +141,7 @@ TEST_F(ShadowVolume, CameraInsideAVolumeIsExact) {
 
 // An open mesh: a double-sided sheet shadows the floor whether its triangles face the light
 // or face away from it (turned over by a half turn about x).
-TEST_F(ShadowVolume, OpenSheetShadowsWhicheverSideFacesTheLight) {
+TEST_P(ShadowVolume, OpenSheetShadowsWhicheverSideFacesTheLight) {
     for (const bool turnedOver : {false, true}) {
         SCOPED_TRACE(turnedOver ? "triangles facing away from the light" : "triangles facing the light");
         SceneBuilder builder = litFloor("bulb", Light::Type::Point, {0.4, 6, 0.3}, {0.4, 0, 0.3}, false);
@@ -147,7 +158,7 @@ TEST_F(ShadowVolume, OpenSheetShadowsWhicheverSideFacesTheLight) {
 
 // Two boxes that overlap: a floor point behind both is inside two volumes (count 2), one
 // behind either inside one; every such point is shadowed.
-TEST_F(ShadowVolume, IntersectingCastersAreExact) {
+TEST_P(ShadowVolume, IntersectingCastersAreExact) {
     SceneBuilder builder = litFloor("sun", Light::Type::Directional, kSunPosition, {0, 0, 0});
     const engine::Aabb second{{0, 1.5, -0.5}, {2.5, 2.5, 0.5}};
     builder.addBox("crossing box", second.min, second.max);
@@ -158,7 +169,7 @@ TEST_F(ShadowVolume, IntersectingCastersAreExact) {
 
 // The same scene 10^7 units up, where float spacing is 1.0: the volumes are composed in
 // double and rounded to float relative to the camera, so the shadow is as exact as at 0.
-TEST_F(ShadowVolume, CastersFarFromTheOriginAreExact) {
+TEST_P(ShadowVolume, CastersFarFromTheOriginAreExact) {
     const glm::dvec3 far(0, 1e7, 0);
     SceneBuilder builder;
     builder.addLight("bulb", Light::Type::Point, glm::dvec3(0.3, 5, 0.2) + far, glm::dvec3(0.3, 0, 0.2) + far, kVolume);
@@ -176,7 +187,7 @@ TEST_F(ShadowVolume, CastersFarFromTheOriginAreExact) {
 
 // A still camera, light and scene keep the visibility of the frame before: no volume pass.
 // Moving the light makes it again, and the mask follows.
-TEST_F(ShadowVolume, AStillFrameReusesTheVisibilityAndAMovedLightRemakesIt) {
+TEST_P(ShadowVolume, AStillFrameReusesTheVisibilityAndAMovedLightRemakesIt) {
     SceneBuilder builder = litFloor("sun", Light::Type::Directional, kSunPosition, {0, 0, 0});
     engine::Scene scene = builder.build();
     engine::Renderer renderer({}, plugins());
@@ -187,6 +198,12 @@ TEST_F(ShadowVolume, AStillFrameReusesTheVisibilityAndAMovedLightRemakesIt) {
     const auto rendered = [&] {
         const engine::FrameResult result = renderer.renderFrame(request);
         EXPECT_EQ(result.shadowViews.size(), 1u);
+        // Floor and box are closed: with volume_extrusion "gpu" the geometry shader makes both
+        // volumes (when the frame makes them at all).
+        const nlohmann::json& stats = result.pluginStats.at("shadowmap_plugin").at("lights").at(0);
+        if (result.shadowViews.at(0).renderedThisFrame) {
+            EXPECT_EQ(stats.at("casters_extruded_on_gpu"), std::string(GetParam()) == "gpu" ? 2 : 0) << stats;
+        }
         EXPECT_TRUE(result.shadowViews.at(0).hasScreenVisibility);
         return result.shadowViews.at(0).renderedThisFrame;
     };
@@ -207,7 +224,7 @@ TEST_F(ShadowVolume, AStillFrameReusesTheVisibilityAndAMovedLightRemakesIt) {
 // A mirroring node (scale -1) turns its caster's triangles clockwise, so its volume would count
 // -1 inside where an overlapping unmirrored caster's counts +1: together, light. Rewound, both
 // shadow.
-TEST_F(ShadowVolume, AMirroredCasterOverlappingAnotherShadowsAsBoth) {
+TEST_P(ShadowVolume, AMirroredCasterOverlappingAnotherShadowsAsBoth) {
     SceneBuilder builder = litFloor("sun", Light::Type::Directional, kSunPosition, {0, 0, 0});
     const engine::Aabb second{{0, 1.5, -0.5}, {2.5, 2.5, 0.5}};
     const int mirrored = builder.addBox("mirrored box", second.min, second.max);
@@ -216,3 +233,6 @@ TEST_F(ShadowVolume, AMirroredCasterOverlappingAnotherShadowsAsBoth) {
     EXPECT_GT(result.truthShadowed, 300);
     EXPECT_LE(result.wrongFraction(), kMaxWrongFraction);
 }
+
+INSTANTIATE_TEST_SUITE_P(Extrusion, ShadowVolume, ::testing::Values("cpu", "gpu"),
+                         [](const ::testing::TestParamInfo<const char*>& info) { return std::string(info.param); });

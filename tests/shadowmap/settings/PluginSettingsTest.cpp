@@ -54,9 +54,20 @@ TEST(PluginSettings, ABadLightDefaultNamesItsKey) {
     EXPECT_NE(parseError({{"dimming", 2}}).find("engine.json: settings.dimming: "), std::string::npos);
 }
 
-TEST(PluginSettings, KeysAreTheLightKeysThenCacheMaps) {
+TEST(PluginSettings, KeysAreTheLightKeysThenThePluginWideOnes) {
     std::vector<std::string> expected;
     for (const shadowmap::SettingKey& key : shadowmap::settingKeys()) expected.push_back(key.name);
     expected.push_back("cache_maps");
+    expected.push_back("volume_extrusion");
     EXPECT_EQ(shadowmap::pluginSettingKeys(), expected);
+}
+
+TEST(PluginSettings, VolumeExtrusionIsCpuUnlessGpuIsAsked) {
+    EXPECT_FALSE(shadowmap::parsePluginSettings(nlohmann::json::object(), "engine.json").volumesOnGpu);
+    EXPECT_FALSE(shadowmap::parsePluginSettings({{"volume_extrusion", "cpu"}}, "engine.json").volumesOnGpu);
+    const shadowmap::PluginSettings gpu = shadowmap::parsePluginSettings({{"volume_extrusion", "gpu"}}, "engine.json");
+    EXPECT_TRUE(gpu.volumesOnGpu);
+    EXPECT_EQ(gpu.lightDefaults, shadowmap::ShadowSettings{});
+    EXPECT_EQ(parseError({{"volume_extrusion", "gs"}}),
+              "engine.json: settings.volume_extrusion: unknown value \"gs\" (known: cpu, gpu)");
 }

@@ -22,6 +22,7 @@
 #include <map>
 #include <numbers>
 #include <random>
+#include <set>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -1245,4 +1246,38 @@ TEST(ShadowVolumeMeshTest, ALightInATrianglesPlaneGetsTheSameVolumeOnEitherSideO
         EXPECT_TRUE(sheetVolume.empty());
         EXPECT_EQ(inSheet.capTriangles + inSheet.silhouetteEdges, 0u);
     }
+}
+
+// The geometry shader's input: per triangle its corners, each followed by the far vertex of the
+// triangle across the edge to the next corner. Every (next corner, corner, far vertex) must be
+// a triangle of the mesh, wound as the mesh winds it (a closed mesh traverses a shared edge the
+// other way); an open mesh has no such input.
+TEST(ShadowVolumeMeshTest, AdjacencyIndicesNameTheTriangleAcrossEachEdge) {
+    for (const Mesh& mesh : {splitCube(glm::vec3(0.0f), 1.0f), uvSphere(12, 8, 1.0f)}) {
+        const ShadowVolumeMesh volume = build(mesh);
+        const std::vector<std::uint32_t> adjacency = volume.adjacencyIndices();
+        ASSERT_EQ(adjacency.size(), 6 * volume.triangleCount());
+        const std::vector<glm::dvec3>& welded = volume.weldedPositions();
+        // The mesh's triangles as positions, each in its three rotations.
+        std::set<std::array<double, 9>> triangles;
+        const auto key = [](const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) {
+            return std::array<double, 9>{a.x, a.y, a.z, b.x, b.y, b.z, c.x, c.y, c.z};
+        };
+        for (std::size_t i = 0; i + 2 < mesh.indices.size(); i += 3) {
+            const glm::dvec3 a = corner(mesh, i), b = corner(mesh, i + 1), c = corner(mesh, i + 2);
+            if (a == b || b == c || c == a) continue;  // dropped when welded
+            triangles.insert(key(a, b, c));
+            triangles.insert(key(b, c, a));
+            triangles.insert(key(c, a, b));
+        }
+        for (std::size_t t = 0; t < volume.triangleCount(); ++t)
+            for (int k = 0; k < 3; ++k) {
+                const glm::dvec3& from = welded[adjacency[6 * t + 2 * k]];
+                const glm::dvec3& to = welded[adjacency[6 * t + (2 * k + 2) % 6]];
+                const glm::dvec3& far = welded[adjacency[6 * t + 2 * k + 1]];
+                EXPECT_TRUE(triangles.count(key(to, from, far))) << "triangle " << t << " edge " << k;
+            }
+    }
+    EXPECT_TRUE(build(quadSheet()).adjacencyIndices().empty());
+    EXPECT_TRUE(build(openBox()).adjacencyIndices().empty());
 }

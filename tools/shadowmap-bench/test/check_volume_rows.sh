@@ -60,9 +60,9 @@ awk -F, 'NR > 1 {
   }
   exit bad
 }' "$csv"
-# The label is the variant alone, in the summary too.
-grep -q '| volume |' "$out/single/summary.md" || grep -q ' volume (' "$out/single/summary.md" \
-  || { echo "no volume setting in summary.md"; exit 1; }
+# (Whether summary.md lists volume depends on the machine's timings -- its rows are the most
+# accurate setting within a shadow-time budget and the time/error front -- so it is not checked
+# here: under ASan on a fresh machine it listed none. The label is checked in the plot's data.)
 # The plot draws volume's points in a shape of their own, larger, named in the legend.
 plot=$out/single/time_vs_error.gp
 grep -q '"volume" 1.8$' "$plot" || { echo "no volume point of size 1.8 in the plot's data"; exit 1; }
