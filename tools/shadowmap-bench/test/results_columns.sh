@@ -7,6 +7,16 @@ check_results_header() {
   [[ "$(head -n 1 "$1")" == "$results_header" ]] || { echo "bad header: $(head -n 1 "$1")"; exit 1; }
 }
 
+# Exits with a message unless every row of results file $1 was measured: 33 fields, a positive
+# shadow time, errors (columns 9-15) in [0, 100].
+check_rows_measured() {
+  awk -F, 'NR > 1 {
+    if (NF != 33) { print NF " fields, expected 33: " $0; bad = 1 }
+    if (!($7 > 0)) { print "no shadow time: " $0; bad = 1 }
+    for (i = 9; i <= 15; ++i) if (!($i >= 0 && $i <= 100)) { print "error out of [0,100]: " $0; bad = 1 }
+  } END { exit bad }' "$1" || exit 1
+}
+
 # Results file $1 without its timing columns, which differ from run to run: 7-8 (shadow_ms,
 # frame_ms) and 32-33 (frame_p99_ms, frame_max_ms).
 results_without_times() { cut -d, -f1-6,9-31 "$1"; }
