@@ -690,20 +690,44 @@ TEST(ShadowVolumeMeshTest, MirroredTargetTurnsVolumeInsideOut) {
     expectMeaningful(checkVolume(quadSheet(), pointLight(0.3, 0.2, -3.0), {.halfSize = 3.0}, mirror));
 }
 
+namespace {
+
+// Both far-from-origin tests' scene: a cube and a sheet 1e7 from the origin (integer corners,
+// exact in float), toTarget bringing them back near 0 and turning them, and three lights.
+struct FarFromOrigin {
+    glm::dvec3 far{1e7, -1e7, 1e7};
+    glm::dmat4 toTarget{1.0};
+    Mesh cube, sheet;
+    std::vector<NamedLight> lights;
+};
+
+FarFromOrigin farFromOrigin() {
+    FarFromOrigin scene;
+    const glm::dvec3 far = scene.far;
+    scene.toTarget = glm::rotate(glm::dmat4(1.0), 0.7, glm::normalize(glm::dvec3(1.0, 2.0, 3.0))) *
+                     glm::translate(glm::dmat4(1.0), -far);
+    scene.cube = splitCube(glm::vec3(far), 2.0f);
+    scene.sheet = quadSheet();
+    for (glm::vec3& p : scene.sheet.positions) p = glm::vec3(glm::dvec3(p) * 2.0 + far + glm::dvec3(0, 0, -4));
+    scene.lights = {{"point", pointLight(far.x + 3.3, far.y + 0.7, far.z + 5.1)},
+                    {"point close", pointLight(far.x + 0.3, far.y - 0.2, far.z + 2.15)},
+                    {"directional", towardLight(0.3, -0.5, 1.0)}};
+    return scene;
+}
+
+} // namespace
+
 TEST(ShadowVolumeMeshTest, FarFromOriginCameraRelativeTargetStaysExact) {
     // Mesh and light 1e7 from the origin (integer corners, exact in float), toTarget brings them
     // back near 0 and turns them. Rounded to float before that subtraction, the light would move
     // by up to half a unit and the vertices by a unit (float's step at 1e7): the shadow edges
     // would land wrong by far more than the boundary margin.
-    const glm::dvec3 far(1e7, -1e7, 1e7);
-    const glm::dmat4 toTarget = glm::rotate(glm::dmat4(1.0), 0.7, glm::normalize(glm::dvec3(1.0, 2.0, 3.0))) *
-                                glm::translate(glm::dmat4(1.0), -far);
-    const Mesh cube = splitCube(glm::vec3(far), 2.0f);
-    Mesh farSheet = quadSheet();
-    for (glm::vec3& p : farSheet.positions) p = glm::vec3(glm::dvec3(p) * 2.0 + far + glm::dvec3(0, 0, -4));
-    const NamedLight lights[] = {{"point", pointLight(far.x + 3.3, far.y + 0.7, far.z + 5.1)},
-                                 {"point close", pointLight(far.x + 0.3, far.y - 0.2, far.z + 2.15)},
-                                 {"directional", towardLight(0.3, -0.5, 1.0)}};
+    const FarFromOrigin scene = farFromOrigin();
+    const glm::dvec3& far = scene.far;
+    const glm::dmat4& toTarget = scene.toTarget;
+    const Mesh& cube = scene.cube;
+    const Mesh& farSheet = scene.sheet;
+    const std::vector<NamedLight>& lights = scene.lights;
     for (const NamedLight& light : lights) {
         SCOPED_TRACE(light.name);
         const Sampling sampling{.center = far, .halfSize = 6.0, .seed = 9};
@@ -1102,15 +1126,12 @@ TEST(ShadowVolumeMeshTest, BoundedLightInsideClosedCasterShadowsEverythingInTheB
 TEST(ShadowVolumeMeshTest, BoundedFarFromOriginCameraRelativeTargetStaysExact) {
     // FarFromOriginCameraRelativeTargetStaysExact with bounds: the bound is in target space,
     // near the origin, and its distances are measured after the subtraction.
-    const glm::dvec3 far(1e7, -1e7, 1e7);
-    const glm::dmat4 toTarget = glm::rotate(glm::dmat4(1.0), 0.7, glm::normalize(glm::dvec3(1.0, 2.0, 3.0))) *
-                                glm::translate(glm::dmat4(1.0), -far);
-    const Mesh cube = splitCube(glm::vec3(far), 2.0f);
-    Mesh farSheet = quadSheet();
-    for (glm::vec3& p : farSheet.positions) p = glm::vec3(glm::dvec3(p) * 2.0 + far + glm::dvec3(0, 0, -4));
-    const NamedLight lights[] = {{"point", pointLight(far.x + 3.3, far.y + 0.7, far.z + 5.1)},
-                                 {"point close", pointLight(far.x + 0.3, far.y - 0.2, far.z + 2.15)},
-                                 {"directional", towardLight(0.3, -0.5, 1.0)}};
+    const FarFromOrigin scene = farFromOrigin();
+    const glm::dvec3& far = scene.far;
+    const glm::dmat4& toTarget = scene.toTarget;
+    const Mesh& cube = scene.cube;
+    const Mesh& farSheet = scene.sheet;
+    const std::vector<NamedLight>& lights = scene.lights;
     const Sampling sampling{.center = far, .halfSize = 6.0, .seed = 9};
     const glm::dvec3 offCenter = glm::dvec3(toTarget * glm::dvec4(far + glm::dvec3(1.0, -1.5, -3.0), 1.0));
     const NamedBound bounds[] = {{"holding all", {glm::dvec3(0.0), std::sqrt(3.0) * 6.0 + 1.0}, true},
