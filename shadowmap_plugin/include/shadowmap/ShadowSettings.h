@@ -111,6 +111,11 @@
 //                   Hard filters only (pcss with lispsm is an error)
 //   lispsm_n_scale  > 0: multiplies LiSPSM's optimal n; above 1     1
 //                   the warp weakens toward uniform, below 1 it magnifies the near end more
+//   caster_lod      >= 0, a fraction of a texel: the depth passes   0 (off)
+//                   draw each caster's coarsest simplified level (math/CasterLod.h) whose
+//                   recorded error, at the instance's scale, is below caster_lod times the
+//                   world size of one of this light's texels at the caster's nearest point
+//                   (technique/CasterLodChoice.h). 0 draws every caster as loaded
 // Cascades (directional lights only; spot and point lights ignore them):
 //   cascades        auto, or 1 .. 4 slices of the camera's view  auto
 //                   depth, one array layer (and depth pass) each; 1: one map fitted to
@@ -225,6 +230,7 @@ struct ShadowSettings {
     bool cullUnseenCasters = true;  // leave out casters whose shadow no visible receiver can show
     Projection projection = Projection::Uniform;  // directional lights' single map
     double lispsmNScale = 1.0;  // n = lispsmNScale * n_opt (math/LispsmWarp.h)
+    double casterLod = 0.0;     // texels; 0: every caster drawn as loaded
     double shadowDistance = 0.0;  // directional lights, world units; 0: no limit
     double shadowFade = 0.1;      // fraction of shadowDistance
     // The light's size (see the table above): what the area truth samples and what a

@@ -36,6 +36,7 @@ nlohmann::json printSettings(const ShadowSettings& settings) {
                           {"cull_unseen_casters", settings.cullUnseenCasters},
                           {"projection", toString(settings.projection)},
                           {"lispsm_n_scale", settings.lispsmNScale},
+                          {"caster_lod", settings.casterLod},
                           {"shadow_distance", settings.shadowDistance},
                           {"shadow_fade", settings.shadowFade},
                           {"light_radius", settings.lightRadius},

@@ -245,6 +245,14 @@ std::vector<SettingKey> makeKeys() {
                          "uniform, below 1 it magnifies the near end more";
     keys.push_back(nScale);
 
+    SettingKey lod = makeKey("caster_lod", SettingKind::Number);
+    lod.minimum = 0;
+    lod.values = "≥ 0, texels";
+    lod.description = "draw each caster's coarsest simplified level whose geometric error is below this fraction of "
+                      "the light's texel at the caster (closed meshes keep closed levels; "
+                      "[caster LOD](docs/caster-lod.md)); 0: every caster as loaded";
+    keys.push_back(lod);
+
     const nlohmann::json defaults = printSettings(ShadowSettings{});
     for (SettingKey& key : keys) {
         if (defaults.contains(key.name)) key.defaultValue = defaults[key.name];

@@ -211,6 +211,14 @@ void applySettings(ShadowSettings& settings, const nlohmann::json& json, const s
                                         json["lispsm_n_scale"].dump());
         settings.lispsmNScale = scale;
     }
+    if (json.contains("caster_lod")) {
+        const double fraction = json_read::readNumber(json["caster_lod"], source, key("caster_lod"));
+        if (!(fraction >= 0.0) || !std::isfinite(fraction))
+            engine::throwInputError(source, key("caster_lod"),
+                                    "must be a finite number >= 0 (a fraction of a texel; 0: off), got " +
+                                        json["caster_lod"].dump());
+        settings.casterLod = fraction;
+    }
     if (json.contains("bleed_reduction")) {
         const double reduction = json_read::readNumber(json["bleed_reduction"], source, key("bleed_reduction"));
         if (!(reduction >= 0.0 && reduction <= kMaxBleedReduction))

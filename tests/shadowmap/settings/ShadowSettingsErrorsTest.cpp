@@ -54,7 +54,7 @@ TEST(ShadowSettingsErrors, UnknownKeyListsTheKnownOnes) {
     EXPECT_EQ(known, "variant, resolution, depth_format, filter, filter_taps, filter_radius, bleed_reduction, evsm_exponents, "
                      "moments_mipmaps, normal_offset, polygon_offset, dimming, near_plane, far_plane, "
                      "reversed_z, polygon_offset_clamp, cascades, cascade_lambda, cascade_blend, stable, shadow_distance, shadow_fade, "
-                     "light_radius, angular_diameter, cull_unseen_casters, projection, lispsm_n_scale");
+                     "light_radius, angular_diameter, cull_unseen_casters, projection, lispsm_n_scale, caster_lod");
     expectNamed({"unknown key", {{"colour", "red"}}, "colour", "unknown key (known: " + known + ")"});
 }
 
@@ -304,4 +304,11 @@ TEST(ShadowSettingsErrors, LispsmIsForDirectionalLightsHardFiltersAndAPositiveSc
             << error.what();
     }
     EXPECT_NO_THROW(shadowmap::checkFilterForType(settings, Type::Spot, kSource, kObject));
+}
+
+TEST(ShadowSettingsErrors, CasterLodIsAFiniteFractionAtLeastZero) {
+    expectNamed({"caster_lod", {{"caster_lod", -0.5}}, "caster_lod", "must be a finite number >= 0"});
+    for (const double bad : {kNaN, kInfinity})
+        expectNamed({"caster_lod", {{"caster_lod", bad}}, "caster_lod", "must be finite"});
+    expectNamed({"caster_lod", {{"caster_lod", "coarse"}}, "caster_lod", "must be a number"});
 }

@@ -54,6 +54,7 @@ std::vector<KeyChange> oneChangePerKey() {
         {"cull_unseen_casters", [](ShadowSettings& s) { s.cullUnseenCasters = false; }},
         {"projection", [](ShadowSettings& s) { s.projection = shadowmap::Projection::Lispsm; }},
         {"lispsm_n_scale", [](ShadowSettings& s) { s.lispsmNScale = 2.5; }},
+        {"caster_lod", [](ShadowSettings& s) { s.casterLod = 0.5; }},
     };
 }
 
@@ -80,7 +81,8 @@ TEST(ShadowSettingsRoundTrip, DefaultsPrintAsDocumented) {
                                      {"stable", true},             {"shadow_distance", 0.0},
                                      {"shadow_fade", 0.1},         {"light_radius", 0.0},
                                      {"angular_diameter", 0.0},    {"cull_unseen_casters", true},
-                                     {"projection", "uniform"},    {"lispsm_n_scale", 1.0}};
+                                     {"projection", "uniform"},    {"lispsm_n_scale", 1.0},
+                                     {"caster_lod", 0.0}};
     EXPECT_EQ(shadowmap::printSettings(ShadowSettings{}), expected);
     EXPECT_EQ(roundTrip(ShadowSettings{}), ShadowSettings{});
     // The float 0.4 prints as the decimal it was written as, not 0.4000000059604645.
