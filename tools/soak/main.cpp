@@ -41,7 +41,7 @@ const char* const kUsage =
     "  [--warmup N (1200)]       frames left out of the slopes: one period of the settings\n"
     "                            cycle (12 changes), caches filling, the allocator settling\n"
     "Writes one CSV row per sample (frame, rss_kib, heap_kib, textures, framebuffers, buffers, programs,\n"
-    "shaders, samplers, vertex_arrays, gl_objects) and prints the slopes after the warm-up.\n";
+    "shaders, samplers, vertex_arrays, queries, gl_objects) and prints the slopes after the warm-up.\n";
 
 struct Options {
     bool help = false;
@@ -151,12 +151,12 @@ int run(const Options& options, tools::ToolSession& session) {
     }
 
     std::ostringstream csv;
-    csv << "frame,rss_kib,heap_kib,textures,framebuffers,buffers,programs,shaders,samplers,vertex_arrays,gl_objects\n";
+    csv << "frame,rss_kib,heap_kib,textures,framebuffers,buffers,programs,shaders,samplers,vertex_arrays,queries,gl_objects\n";
     std::vector<double> frames, rss, heap, objects;
     for (const Sample& s : samples) {
         const engine::gl::LiveObjectCounts& o = s.objects;
         csv << s.frame << ',' << s.rssKib << ',' << s.heapKib << ',' << o.textures << ',' << o.framebuffers << ',' << o.buffers << ','
-            << o.programs << ',' << o.shaders << ',' << o.samplers << ',' << o.vertexArrays << ',' << o.total() << '\n';
+            << o.programs << ',' << o.shaders << ',' << o.samplers << ',' << o.vertexArrays << ',' << o.queries << ',' << o.total() << '\n';
         if (s.frame <= options.warmup) continue;
         frames.push_back(s.frame);
         rss.push_back(static_cast<double>(s.rssKib));

@@ -8,6 +8,7 @@
 #include <epoxy/gl.h>
 
 #include <cmath>
+#include <optional>
 #include <string>
 
 namespace shadowmap {
@@ -126,6 +127,7 @@ void LightShadow::ensureVisibility(int width, int height) {
     visibility.setParameter(GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     visibility.setParameter(GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     visibilityKey = 0;
+    if (!volumeFill) volumeFill = engine::gl::Query::create(GL_SAMPLES_PASSED);
 }
 
 nlohmann::json LightShadow::stats() const {
@@ -148,6 +150,14 @@ nlohmann::json LightShadow::stats() const {
         out["silhouette_edges"] = frame.silhouetteEdges;
         out["cap_triangles"] = frame.capTriangles;
         out["casters_extruded_on_gpu"] = frame.gpuVolumeCasters;
+        // The pass's fill: 0 when it drew no volume or kept last frame's visibility; null
+        // when the GPU has not finished it yet (the stats of an untimed frame).
+        if (frame.volumeFillQueried) {
+            const std::optional<std::uint64_t> fill = volumeFill.resultIfReady();
+            out["stencil_fragments"] = fill ? nlohmann::json(*fill) : nlohmann::json(nullptr);
+        } else {
+            out["stencil_fragments"] = 0;
+        }
     }
     if (const MapProjection* projection = mapProjection(frame.kind)) projection->addStats(*this, out);
     if (frame.autoCascades) {

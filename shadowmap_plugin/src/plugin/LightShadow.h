@@ -4,6 +4,7 @@
 // projection's MapShape says), owned here so it can outlive a frame.
 #include "technique/LightState.h"
 
+#include "engine/gl/Query.h"
 #include "engine/gl/Texture.h"
 #include "engine/render/ShadowView.h"
 
@@ -26,6 +27,9 @@ struct LightShadow : LightState {
     // (R8, the camera's size), and the key of what it was last made from (0: nothing).
     engine::gl::Texture visibility;
     std::uint64_t visibilityKey = 0;
+    // volume: counts the volume faces' samples that changed the stencil count (those behind
+    // the nearest surface) in the light's last volume pass: its fill, for --stats.
+    engine::gl::Query volumeFill;
 
     // (Re)creates the map when size, format or shape changed (a new texture holds nothing:
     // its rendered keys are reset), with the comparison state and filter the lookup needs.

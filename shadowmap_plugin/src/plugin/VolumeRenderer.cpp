@@ -266,20 +266,25 @@ VolumeCounts VolumeRenderer::render(const engine::Frame& frame, engine::PassCont
         // z-fail: a volume face behind the nearest surface counts, +1 facing away from the
         // camera, -1 facing it (wrapping, so the order of faces does not matter); a surface
         // point inside k volumes ends with k. The volumes are wound outward (ShadowVolumeMesh.h).
+        // "Behind" is the depth test's complement made the passing side, so that the samples
+        // passed (light.volumeFill) are exactly those that count.
         const VolumeDepth depthMapping = volumeDepth(camera.projection);
         glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
         glDepthMask(GL_FALSE);
         glEnable(GL_DEPTH_TEST);
         setDepthDirection(depthMapping);
+        glDepthFunc(depthMapping.reversed ? GL_LEQUAL : GL_GEQUAL);
         glDisable(GL_CULL_FACE);
         glFrontFace(GL_CCW);
         glEnable(GL_DEPTH_CLAMP);  // no far plane clips a volume's far end
         glEnable(GL_STENCIL_TEST);
         glStencilFunc(GL_ALWAYS, 0, 0xff);
-        glStencilOpSeparate(GL_BACK, GL_KEEP, GL_INCR_WRAP, GL_KEEP);
-        glStencilOpSeparate(GL_FRONT, GL_KEEP, GL_DECR_WRAP, GL_KEEP);
+        glStencilOpSeparate(GL_BACK, GL_KEEP, GL_KEEP, GL_INCR_WRAP);
+        glStencilOpSeparate(GL_FRONT, GL_KEEP, GL_KEEP, GL_DECR_WRAP);
+        light.volumeFill.begin();
         // The near caps are the casters' own lit faces, made again on the CPU: pushed a little
-        // away so that on those faces they fail the depth test, as the rest of their volume.
+        // away so that on those faces they lie behind the surface and count, as the rest of
+        // their volume.
         glEnable(GL_POLYGON_OFFSET_FILL);
         const float away = depthMapping.reversed ? -1.0f : 1.0f;  // reversed Z: away is toward 0
         glPolygonOffset(away * kVolumeOffsetFactor, away * kVolumeOffsetUnits);
@@ -297,6 +302,7 @@ VolumeCounts VolumeRenderer::render(const engine::Frame& frame, engine::PassCont
             glFrontFace(glm::determinant(glm::dmat3(instance->world)) < 0.0 ? GL_CW : GL_CCW);
             context.countDraw(gpu_->draw(*instance, viewProjection, lightWorld));
         }
+        light.volumeFill.end();
         glFrontFace(GL_CCW);
         glBindVertexArray(0);
         glDisable(GL_POLYGON_OFFSET_FILL);

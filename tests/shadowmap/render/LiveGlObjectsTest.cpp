@@ -27,7 +27,7 @@ LiveObjectCounts maxOf(const LiveObjectCounts& a, const LiveObjectCounts& b) {
     return {std::max(a.textures, b.textures),         std::max(a.framebuffers, b.framebuffers),
             std::max(a.buffers, b.buffers),           std::max(a.programs, b.programs),
             std::max(a.shaders, b.shaders),           std::max(a.samplers, b.samplers),
-            std::max(a.vertexArrays, b.vertexArrays)};
+            std::max(a.vertexArrays, b.vertexArrays), std::max(a.queries, b.queries)};
 }
 
 } // namespace

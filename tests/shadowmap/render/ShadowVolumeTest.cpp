@@ -186,7 +186,9 @@ TEST_P(ShadowVolume, CastersFarFromTheOriginAreExact) {
 }
 
 // A still camera, light and scene keep the visibility of the frame before: no volume pass.
-// Moving the light makes it again, and the mask follows.
+// Moving the light makes it again, and the mask follows. The pass's fill (stencil_fragments)
+// is 0 when it does not run, and when it runs at least one counting sample lies behind each
+// shadowed pixel (a count of 0 there would light it).
 TEST_P(ShadowVolume, AStillFrameReusesTheVisibilityAndAMovedLightRemakesIt) {
     SceneBuilder builder = litFloor("sun", Light::Type::Directional, kSunPosition, {0, 0, 0});
     engine::Scene scene = builder.build();
@@ -195,20 +197,28 @@ TEST_P(ShadowVolume, AStillFrameReusesTheVisibilityAndAMovedLightRemakesIt) {
     engine::FrameRequest request;
     request.camera = overview();
     request.shadowMaskSlots = {0};
+    request.timing = true;  // waits for the frame, so the fill's count is there to read
+    nlohmann::json stats;
     const auto rendered = [&] {
         const engine::FrameResult result = renderer.renderFrame(request);
         EXPECT_EQ(result.shadowViews.size(), 1u);
         // Floor and box are closed: with volume_extrusion "gpu" the geometry shader makes both
         // volumes (when the frame makes them at all).
-        const nlohmann::json& stats = result.pluginStats.at("shadowmap_plugin").at("lights").at(0);
+        stats = result.pluginStats.at("shadowmap_plugin").at("lights").at(0);
         if (result.shadowViews.at(0).renderedThisFrame) {
             EXPECT_EQ(stats.at("casters_extruded_on_gpu"), std::string(GetParam()) == "gpu" ? 2 : 0) << stats;
+        } else {
+            EXPECT_EQ(stats.at("stencil_fragments"), 0) << stats;
         }
         EXPECT_TRUE(result.shadowViews.at(0).hasScreenVisibility);
         return result.shadowViews.at(0).renderedThisFrame;
     };
     EXPECT_TRUE(rendered());
     const std::vector<std::uint8_t> first = renderer.readShadowMask(0);
+    const auto firstMask = engine::test::compareFloorMask(first, scene, 0, overview(), {kFloor, kBox}, 0.0, 9.9,
+                                                          kEverywhere, 0);
+    ASSERT_TRUE(stats.at("stencil_fragments").is_number()) << stats;
+    EXPECT_GE(stats.at("stencil_fragments").get<std::int64_t>(), firstMask.truthShadowed) << stats;
     EXPECT_FALSE(rendered());
     EXPECT_EQ(renderer.readShadowMask(0), first);
 
@@ -219,6 +229,8 @@ TEST_P(ShadowVolume, AStillFrameReusesTheVisibilityAndAMovedLightRemakesIt) {
                                                       {kFloor, kBox}, 0.0, 9.9, kEverywhere, 0);
     EXPECT_GT(moved.truthShadowed, 200);
     EXPECT_LE(moved.wrongFraction(), kMaxWrongFraction);
+    ASSERT_TRUE(stats.at("stencil_fragments").is_number()) << stats;
+    EXPECT_GE(stats.at("stencil_fragments").get<std::int64_t>(), moved.truthShadowed) << stats;
 }
 
 // A mirroring node (scale -1) turns its caster's triangles clockwise, so its volume would count

@@ -15,9 +15,9 @@ namespace engine::gl {
 
 struct LiveObjectCounts {
     std::int64_t textures = 0, framebuffers = 0, buffers = 0, programs = 0, shaders = 0,
-                 samplers = 0, vertexArrays = 0;
+                 samplers = 0, vertexArrays = 0, queries = 0;
     std::int64_t total() const {
-        return textures + framebuffers + buffers + programs + shaders + samplers + vertexArrays;
+        return textures + framebuffers + buffers + programs + shaders + samplers + vertexArrays + queries;
     }
 };
 
@@ -26,7 +26,8 @@ LiveObjectCounts liveObjectCounts() noexcept;
 
 namespace detail {
 // Called by Handle: `delta` (+1 or -1) objects of the kind `labelNamespace` names
-// (GL_TEXTURE, GL_FRAMEBUFFER, GL_BUFFER, GL_PROGRAM, GL_SHADER, GL_SAMPLER, GL_VERTEX_ARRAY).
+// (GL_TEXTURE, GL_FRAMEBUFFER, GL_BUFFER, GL_PROGRAM, GL_SHADER, GL_SAMPLER, GL_VERTEX_ARRAY,
+// GL_QUERY).
 void countOwnedObjects(GLenum labelNamespace, int delta) noexcept;
 } // namespace detail
 
