@@ -29,24 +29,10 @@ light = next(l for l in g["extensions"]["KHR_lights_punctual"]["lights"] if l.ge
 for k, v in light.get("extras", {}).get("shadow", {}).items():
     print("--light-set\n%s.%s=%s" % (sys.argv[2], k, json.dumps(v)))' "$tuned" "$1"
 }
-# Frame median/p99/max, the light's shadow ms and (volume) silhouette edges and cap triangles.
-figures() {
-  python3 -c 'import json, sys
-s = json.load(open(sys.argv[1]))
-light = next(l for l in s["shadow_maps"] if l["light"] == sys.argv[2])
-plugin = next(l for l in s["plugins"]["shadowmap_plugin"]["lights"] if l["light"] == sys.argv[2])
-print("%.1f %.1f %.1f %s %s %s" % (s["frame_ms_median"], s["frame_ms_p99"], s["frame_ms_max"],
-      "%.1f" % light["map_ms"] if light["map_ms"] is not None else "-",
-      plugin.get("silhouette_edges", "-"), plugin.get("cap_triangles", "-")))' "$1" "$2"
-}
-errors() {
-  python3 -c 'import json, sys
-light = next(l for l in json.load(open(sys.argv[1]))["lights"] if l["light"] == sys.argv[2])
-print("%.3f %.3f" % (light["error"], light["error_noedge"]))' "$1" "$2"
-}
+source tools/scripts/volume-bench-figures.sh
 
 echo "$(basename "$scene"): $frames frames at 1280x720, llvmpipe ($(nproc) cores); error at 1280x720"
-printf "%-12s %-6s %-8s %4s %s\n" light motion variant run "frame-median frame-p99 frame-max shadow-ms silhouette-edges cap-triangles error% error-off-edges%"
+printf "%-12s %-6s %-8s %4s %s\n" light motion variant run "$FIGURES_HEADER $ERRORS_HEADER"
 for light in ${lights//,/ }; do
   mapfile -t best < <(tuned_args "$light")
   declare -A args=([default]="--light $light=standard" [tuned]="" [volume]="--light $light=volume")

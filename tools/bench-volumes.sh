@@ -5,7 +5,7 @@
 # the light orbiting at 1280x720 (its shadow redone every frame), the variants alternating
 # run by run: the median, p99 and max frame time, the light's shadow time (its map or volume
 # passes; the first volume pass of a frame also draws the camera's depth), the silhouette
-# edges and cap triangles the volumes drew; then the error against ray-traced truth at
+# edges, cap triangles and stencil fragments (fill) the volumes drew; then the error against ray-traced truth at
 # 640x360 (percent of the light's evaluated pixels, and off truth's shadow edges).
 # Usage: tools/bench-volumes.sh [FRAMES] [TRIANGLE COUNTS...]   (build first: tools/build.sh)
 set -euo pipefail
@@ -19,23 +19,7 @@ engine_glb=/usr/share/assimp/models/glTF2/2CylinderEngine-glTF-Binary/2CylinderE
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
 
-# One light's figures from --stats: frame median/p99/max, the light's shadow ms, and (volume)
-# silhouette edges and cap triangles of the last frame.
-figures() {
-  python3 -c 'import json, sys
-s = json.load(open(sys.argv[1]))
-light = next(l for l in s["shadow_maps"] if l["light"] == sys.argv[2])
-plugin = next(l for l in s["plugins"]["shadowmap_plugin"]["lights"] if l["light"] == sys.argv[2])
-print("%.1f %.1f %.1f %s %s %s" % (s["frame_ms_median"], s["frame_ms_p99"], s["frame_ms_max"],
-      "%.1f" % light["map_ms"] if light["map_ms"] is not None else "-",
-      plugin.get("silhouette_edges", "-"), plugin.get("cap_triangles", "-")))' "$1" "$2"
-}
-# The light's error and error off edges from --truth's --stats.
-errors() {
-  python3 -c 'import json, sys
-light = next(l for l in json.load(open(sys.argv[1]))["lights"] if l["light"] == sys.argv[2])
-print("%.3f %.3f" % (light["error"], light["error_noedge"]))' "$1" "$2"
-}
+source tools/scripts/volume-bench-figures.sh
 
 row() {  # name, scene, light, then extra engine-render args
   local name=$1 scene=$2 light=$3; shift 3
@@ -57,7 +41,7 @@ row() {  # name, scene, light, then extra engine-render args
 }
 
 echo "light orbiting, $frames frames at 1280x720; error at 640x360; llvmpipe ($(nproc) cores)"
-printf "%-22s %-9s %5s %s\n" scene variant run "frame-median frame-p99 frame-max shadow-ms silhouette-edges cap-triangles error% error-off-edges%"
+printf "%-22s %-9s %5s %s\n" scene variant run "$FIGURES_HEADER $ERRORS_HEADER"
 row showcase content/scenes/showcase.gltf spot_light
 if [ -f "$engine_glb" ]; then
   row 2CylinderEngine "$engine_glb" key_light --key-light spot

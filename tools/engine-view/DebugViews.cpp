@@ -45,6 +45,18 @@ std::string noMapNote(const ViewedLight& light, const engine::ShadowView* view) 
     return light.name + " has no shadow map this frame: shaded view";
 }
 
+// A volume light's map view: the count of shadow volumes holding each pixel's surface, 0
+// (lit) black and each volume a quarter of the way to white, so the usual 0, 1 and 2 read
+// apart at a glance.
+constexpr int kStencilCountStep = 64;
+
+std::vector<std::uint8_t> stencilCountsToGray(const std::vector<std::uint8_t>& counts) {
+    std::vector<std::uint8_t> gray(counts.size());
+    for (std::size_t i = 0; i < counts.size(); ++i)
+        gray[i] = static_cast<std::uint8_t>(std::min(255, counts[i] * kStencilCountStep));
+    return gray;
+}
+
 // The penumbra view: partly lit pixels mostly magenta (a colour lit scenes rarely show), the
 // rest at 30% of their brightness, dark enough that the magenta stands out and light enough
 // that the scene stays readable around it.
@@ -165,6 +177,14 @@ ViewFrame DebugViews::depthMap(const ViewedLight& light, const engine::FrameCame
     ViewFrame out;
     out.frame = renderFrame(request);
     const auto found = out.frame.shadowMaps.find(light.slot);
+    const auto counted = out.frame.stencilCounts.find(light.slot);
+    if (found == out.frame.shadowMaps.end() && counted != out.frame.stencilCounts.end()) {
+        out.image = Image::fromGray(counted->second.width, counted->second.height,
+                                    stencilCountsToGray(counted->second.counts));
+        out.notes.push_back(light.name + ": volume, no map; the count of shadow volumes at each pixel: black 0 (lit), "
+                                         "each volume brighter");
+        return out;
+    }
     if (found == out.frame.shadowMaps.end()) {
         out.image = {camera.width, camera.height, renderer_.readColor()};
         out.notes.push_back(noMapNote(light, out.frame.shadowView(light.slot)));

@@ -130,6 +130,7 @@ FrameResult Renderer::renderFrame(const FrameRequest& request) {
     gpu_->updateDeformed(*scene_);
     RenderGraph graph;
     Frame frame(*scene_, *gpu_, graph, request.camera, frameIndex_++);
+    frame.setMapReadbackSlots(request.shadowMapSlots);
     const ResourceHandle color =
         graph.importTexture("scene_color", {width, height, kLitColorFormat}, color_.id());
     for (RenderPlugin* plugin : plugins_) {
@@ -186,6 +187,12 @@ FrameResult Renderer::renderFrame(const FrameRequest& request) {
     result.shadowViews = frame.shadowViews();
     for (const int slot : request.shadowMapSlots) {
         const ShadowView* view = result.shadowView(slot);
+        if (view && view->hasScreenVisibility && view->stencilCount.valid()) {
+            const std::uint32_t texture = graph.importedPhysical(view->stencilCount);
+            const TextureDesc& desc = graph.descOf(view->stencilCount);
+            if (texture && desc.format == TextureFormat::R8)
+                result.stencilCounts[slot] = {desc.width, desc.height, readR8TopDown(texture, desc.width, desc.height)};
+        }
         if (!view || !view->hasMap) continue;
         const ResourceHandle resource = view->map;
         const std::uint32_t texture = graph.importedPhysical(resource);

@@ -48,4 +48,8 @@ std::vector<float> readDepthLayersTopDown(unsigned texture, int width, int heigh
     return readTopDown<float>(texture, width, height, layers, GL_DEPTH_COMPONENT, GL_FLOAT, 1);
 }
 
+std::vector<std::uint8_t> readR8TopDown(unsigned texture, int width, int height) {
+    return readTopDown<std::uint8_t>(texture, width, height, 1, GL_RED, GL_UNSIGNED_BYTE, 1);
+}
+
 } // namespace engine

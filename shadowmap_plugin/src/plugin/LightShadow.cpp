@@ -130,6 +130,12 @@ void LightShadow::ensureVisibility(int width, int height) {
     if (!volumeFill) volumeFill = engine::gl::Query::create(GL_SAMPLES_PASSED);
 }
 
+void LightShadow::ensureStencilCount(int width, int height) {
+    if (stencilCount.id() && stencilCount.width() == width && stencilCount.height() == height) return;
+    stencilCount = engine::gl::Texture::create2D(GL_R8, width, height);
+    stencilCountKey = 0;
+}
+
 nlohmann::json LightShadow::stats() const {
     nlohmann::json out = settingsJson();
     out.update({{"light", name},
@@ -190,6 +196,7 @@ engine::ShadowView LightShadow::view() const {
     out.hasMap = frame.kind != MapKind::None && frame.kind != MapKind::Screen;
     if (frame.kind == MapKind::Screen) {
         out.hasScreenVisibility = true;
+        out.stencilCount = frame.stencilCount;
         out.renderedThisFrame = !frame.cacheHit;
         out.passes = frame.passes;
     }

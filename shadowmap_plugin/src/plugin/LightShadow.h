@@ -30,6 +30,10 @@ struct LightShadow : LightState {
     // volume: counts the volume faces' samples that changed the stencil count (those behind
     // the nearest surface) in the light's last volume pass: its fill, for --stats.
     engine::gl::Query volumeFill;
+    // volume, made only for a frame that reads the light's map back (a viewer's map view): the
+    // count of volumes holding each camera pixel's surface (R8), and the key it was made for.
+    engine::gl::Texture stencilCount;
+    std::uint64_t stencilCountKey = 0;
 
     // (Re)creates the map when size, format or shape changed (a new texture holds nothing:
     // its rendered keys are reset), with the comparison state and filter the lookup needs.
@@ -40,6 +44,7 @@ struct LightShadow : LightState {
     engine::TextureDesc momentsDesc() const;
     // volume: (re)creates the visibility texture at the camera's size.
     void ensureVisibility(int width, int height);
+    void ensureStencilCount(int width, int height);
     // --stats' summary of the settings in effect, keyed as in extras.shadow (the tools read
     // ShadowView::settings instead, through shadowmap/ShadowViewSettings.h).
     nlohmann::json settingsJson() const;

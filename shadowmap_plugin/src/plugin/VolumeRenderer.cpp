@@ -18,6 +18,7 @@ extern const char shadow_volume_vert[];
 extern const char shadow_volume_frag[];
 extern const char moments_vert[];
 extern const char volume_resolve_frag[];
+extern const char stencil_count_frag[];
 } // namespace shaders
 
 namespace {
@@ -156,6 +157,10 @@ void VolumeRenderer::prepareScene(const engine::Scene& scene) {
 void VolumeRenderer::ensureTargets(int width, int height) {
     if (depthStencil_.id() && depthStencil_.width() == width && depthStencil_.height() == height) return;
     depthStencil_ = engine::gl::Texture::create2D(GL_DEPTH32F_STENCIL8, width, height);
+    // Sampled (writeStencilCounts) as its stencil counts, one texel a pixel.
+    depthStencil_.setParameter(GL_DEPTH_STENCIL_TEXTURE_MODE, GL_STENCIL_INDEX);
+    depthStencil_.setParameter(GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    depthStencil_.setParameter(GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     framebuffer_.attach(GL_DEPTH_STENCIL_ATTACHMENT, depthStencil_);
     depthFrame_ = std::numeric_limits<std::uint64_t>::max();
 }
@@ -238,8 +243,33 @@ void VolumeRenderer::upload() {
     points_.update(0, scratch_.size() * sizeof(glm::vec4), scratch_.data());
 }
 
+void VolumeRenderer::writeStencilCounts(const engine::gl::Texture& target, const engine::PixelRect& footprint) {
+    if (!countProgram_.id())
+        countProgram_ = compileProgram("shadow volume counts", shaders::moments_vert, shaders::stencil_count_frag);
+    if (!countFramebuffer_.id()) countFramebuffer_ = engine::gl::Framebuffer::create();
+    // Its own framebuffer: the stencil it reads must not be attached where it draws.
+    countFramebuffer_.attach(GL_COLOR_ATTACHMENT0, target);
+    countFramebuffer_.bind();
+    glDisable(GL_SCISSOR_TEST);
+    glDisable(GL_STENCIL_TEST);
+    glDisable(GL_DEPTH_TEST);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+    glClear(GL_COLOR_BUFFER_BIT);  // outside the footprint no volume is counted
+    if (footprint.empty()) return;
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(footprint.x0, footprint.y0, footprint.x1 - footprint.x0, footprint.y1 - footprint.y0);
+    glBindTextureUnit(0, depthStencil_.id());
+    countProgram_.use();
+    empty_.bind();
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glBindVertexArray(0);
+    glBindTextureUnit(0, 0);
+    glDisable(GL_SCISSOR_TEST);
+}
+
 VolumeCounts VolumeRenderer::render(const engine::Frame& frame, engine::PassContext& context, DepthRenderer& depth,
-                                    const LightShadow& light) {
+                                    const LightShadow& light, const engine::gl::Texture* stencilCounts) {
     const engine::FrameCamera& camera = frame.camera();
     ensureTargets(camera.width, camera.height);
     framebuffer_.attach(GL_COLOR_ATTACHMENT0, light.visibility);
@@ -320,6 +350,7 @@ VolumeCounts VolumeRenderer::render(const engine::Frame& frame, engine::PassCont
     glBindVertexArray(0);
     glDisable(GL_STENCIL_TEST);
     glDisable(GL_SCISSOR_TEST);
+    if (stencilCounts) writeStencilCounts(*stencilCounts, footprint);
     glDepthMask(GL_TRUE);
     glClipControl(GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE);
     return counts;

@@ -20,6 +20,7 @@
 #include "engine/gl/Texture.h"
 #include "engine/gl/VertexArray.h"
 #include "engine/render/Frame.h"
+#include "engine/scene/ScreenFootprint.h"
 
 #include <cstdint>
 #include <limits>
@@ -47,9 +48,10 @@ public:
     // ones left out: a light with such casters gets a map instead, LightResolver.h).
     void prepareScene(const engine::Scene& scene);
 
-    // Inside the light's volume pass: makes light.visibility for this frame's camera.
+    // Inside the light's volume pass: makes light.visibility for this frame's camera, and with
+    // `stencilCounts` the count of volumes at each pixel into it (R8, the camera's size).
     VolumeCounts render(const engine::Frame& frame, engine::PassContext& context, DepthRenderer& depth,
-                        const LightShadow& light);
+                        const LightShadow& light, const engine::gl::Texture* stencilCounts = nullptr);
 
 private:
     void ensureTargets(int width, int height);
@@ -57,9 +59,12 @@ private:
     // The volumes of every caster, in eye space, into scratch_.
     VolumeCounts buildVolumes(const engine::Frame& frame, const LightShadow& light);
     void upload();
+    void writeStencilCounts(const engine::gl::Texture& target, const engine::PixelRect& footprint);
 
     std::vector<ShadowVolumeMesh> meshes_;  // per Scene::meshes; empty ones cast nothing
     engine::gl::Program volumeProgram_, resolveProgram_;
+    engine::gl::Program countProgram_;  // compiled when a viewer first asks for the counts
+    engine::gl::Framebuffer countFramebuffer_;
     engine::gl::Texture depthStencil_;
     engine::gl::Framebuffer framebuffer_;
     // The frame whose camera depth depthStencil_ holds (all volume lights of a frame share it).

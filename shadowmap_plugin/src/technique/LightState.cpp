@@ -30,6 +30,7 @@ std::string LightState::momentsRowsResource(int layer) const {
 }
 
 std::string LightState::visibilityResource() const { return "shadow_visibility_" + std::to_string(slot); }
+std::string LightState::stencilCountResource() const { return "shadow_stencil_count_" + std::to_string(slot); }
 std::string LightState::volumePass() const { return "shadow_" + std::to_string(slot) + "_" + name + "_volumes"; }
 
 } // namespace shadowmap

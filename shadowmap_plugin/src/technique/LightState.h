@@ -52,6 +52,7 @@ struct LightShadowFrame {
     std::vector<bool> cascadeHits;           // cascades: the layer was still right
     std::uint64_t mapKey = 0;              // what the map holds this frame (MapCacheKey.h)
     engine::ResourceHandle map;            // the map in this frame's graph
+    engine::ResourceHandle stencilCount;   // volume, when the frame reads the map back: the counts
     std::vector<engine::PassId> passes;    // the passes rendering it this frame, in order
 };
 
@@ -90,6 +91,7 @@ struct LightState {
     std::string momentsRowsResource(int layer) const;
     // volume: its visibility per camera pixel as imported, and the pass that makes it.
     std::string visibilityResource() const;
+    std::string stencilCountResource() const;
     std::string volumePass() const;
 };
 

@@ -233,6 +233,46 @@ TEST_P(ShadowVolume, AStillFrameReusesTheVisibilityAndAMovedLightRemakesIt) {
     EXPECT_GE(stats.at("stencil_fragments").get<std::int64_t>(), moved.truthShadowed) << stats;
 }
 
+// A frame that reads the light's map back (a viewer's map view) gets the count of volumes at
+// each pixel instead: on the floor under the sun, 0 where truth is lit and 1 where the box
+// shadows it (the floor's own volume counts 0 on its lit top), so "count 0" is held to the
+// same bound against truth as the visibility. A frame that stops asking keeps its cache.
+TEST_P(ShadowVolume, AMapReadbackGetsTheStencilCountsAgreeingWithTruth) {
+    SceneBuilder builder = litFloor("sun", Light::Type::Directional, kSunPosition, {0, 0, 0});
+    const engine::Scene scene = builder.build();
+    engine::Renderer renderer({}, plugins());
+    renderer.setScene(scene);
+    engine::FrameRequest request;
+    request.camera = overview();
+    request.shadowMapSlots = {0};
+    const engine::FrameResult result = renderer.renderFrame(request);
+    ASSERT_EQ(result.stencilCounts.count(0), 1u);
+    EXPECT_EQ(result.shadowMaps.count(0), 0u);  // no map: the counts are in its place
+    const engine::StencilCountReadback& counts = result.stencilCounts.at(0);
+    ASSERT_EQ(counts.width, kWidth);
+    ASSERT_EQ(counts.height, kHeight);
+    ASSERT_EQ(counts.counts.size(), std::size_t(kWidth) * kHeight);
+    std::vector<std::uint8_t> litWhereZero(counts.counts.size());
+    for (std::size_t i = 0; i < counts.counts.size(); ++i) litWhereZero[i] = counts.counts[i] == 0 ? 255 : 0;
+    const auto stats = engine::test::compareFloorMask(litWhereZero, scene, 0, overview(), {kFloor, kBox}, 0.0, 9.9,
+                                                      kEverywhere, 0);
+    EXPECT_GT(stats.truthShadowed, 200);
+    EXPECT_LE(stats.wrongFraction(), kMaxWrongFraction);
+    int ones = 0, more = 0;
+    engine::test::forEachFloorPixel(overview(), 0.0, 9.9, [&](int x, int y, const glm::dvec3&) {
+        const std::uint8_t count = counts.counts[std::size_t(y) * kWidth + x];
+        ones += count == 1;
+        more += count > 1;
+    });
+    EXPECT_GE(ones, stats.truthShadowed - 2);  // the bound's 2 pixels
+    EXPECT_EQ(more, 0);
+
+    request.shadowMapSlots.clear();
+    const engine::FrameResult still = renderer.renderFrame(request);
+    EXPECT_FALSE(still.shadowViews.at(0).renderedThisFrame);
+    EXPECT_TRUE(still.stencilCounts.empty());
+}
+
 // A mirroring node (scale -1) turns its caster's triangles clockwise, so its volume would count
 // -1 inside where an overlapping unmirrored caster's counts +1: together, light. Rewound, both
 // shadow.

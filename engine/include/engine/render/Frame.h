@@ -7,6 +7,7 @@
 
 #include <glm/glm.hpp>
 
+#include <algorithm>
 #include <cstdint>
 #include <functional>
 #include <map>
@@ -106,6 +107,13 @@ public:
     void publishShadowView(ShadowView view) { shadowViews_.push_back(std::move(view)); }
     const std::vector<ShadowView>& shadowViews() const { return shadowViews_; }
 
+    // The lights (slots) whose map the caller reads back after the frame (FrameRequest::
+    // shadowMapSlots): a plugin may make, for those only, what it shows in a map's place.
+    void setMapReadbackSlots(std::vector<int> slots) { mapReadbackSlots_ = std::move(slots); }
+    bool mapReadbackRequested(int slot) const {
+        return std::find(mapReadbackSlots_.begin(), mapReadbackSlots_.end(), slot) != mapReadbackSlots_.end();
+    }
+
 private:
     const Scene& scene_;
     const SceneGpu& gpu_;
@@ -114,6 +122,7 @@ private:
     std::uint64_t index_;
     std::optional<LightVisibilityHook> visibility_;
     std::vector<ShadowView> shadowViews_;
+    std::vector<int> mapReadbackSlots_;
 };
 
 } // namespace engine

@@ -38,6 +38,11 @@ struct DepthReadback {
     std::vector<float> depth;               // layer after layer, each top row first
 };
 
+struct StencilCountReadback {
+    int width = 0, height = 0;
+    std::vector<std::uint8_t> counts;
+};
+
 // Where the shaded image took each light's shade from (ShadeCache.h), by light slot.
 struct ShadeCacheReport {
     int layers = 0;                 // of the cache's array (0: nothing cacheable)
@@ -70,6 +75,9 @@ struct FrameResult {
     // after warm-up, each is a frame that waited for the shader compiler.
     int programsLinked = 0;
     std::map<int, DepthReadback> shadowMaps;  // by light slot (FrameRequest::shadowMapSlots)
+    // The same lights' ShadowView::stencilCount where they have one instead of a map (shadow
+    // volumes): width × height counts, top row first.
+    std::map<int, StencilCountReadback> stencilCounts;
     // Every light instance's shadow as the shadow plugin published it (ShadowView.h), by slot.
     std::vector<ShadowView> shadowViews;
     const ShadowView* shadowView(int slot) const;

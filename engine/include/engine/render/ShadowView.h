@@ -61,6 +61,10 @@ struct ShadowView {
     // light's shadow time: FrameResult::shadowPassMs).
     ResourceHandle map;
     std::vector<PassId> passes;
+    // With hasScreenVisibility, when the frame asked for the light's map (Frame::
+    // mapReadbackRequested): how many shadow volumes hold each camera pixel's surface (R8,
+    // the count itself, wrapping at 256; 0: lit), what a map view shows for such a light.
+    ResourceHandle stencilCount;
 };
 
 // The kind of `view`'s map as the tools report it: "none", "cube", "cascades", "2d", or
