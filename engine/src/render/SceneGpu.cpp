@@ -172,9 +172,20 @@ glm::dmat4 SceneGpu::modelMatrix(const MeshInstance& instance) const {
 }
 
 std::uint64_t SceneGpu::draw(const Primitive& primitive) const {
-    glBindVertexArray(primitive.vertexArray.id());
-    glDrawElements(GL_TRIANGLES, primitive.indexCount, GL_UNSIGNED_INT, nullptr);
-    return static_cast<std::uint64_t>(primitive.indexCount / 3);
+    return drawIndices(primitive, primitive.indices, 0, static_cast<std::uint32_t>(primitive.indexCount));
+}
+
+std::uint64_t SceneGpu::drawIndices(const Primitive& primitive, const gl::Buffer& indices, std::uint32_t first,
+                                    std::uint32_t count) const {
+    const GLuint vertexArray = primitive.vertexArray.id();
+    const bool own = indices.id() == primitive.indices.id();
+    // The element buffer is vertex-array state: swapped in for this draw, then put back.
+    if (!own) glVertexArrayElementBuffer(vertexArray, indices.id());
+    glBindVertexArray(vertexArray);
+    glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(count), GL_UNSIGNED_INT,
+                   reinterpret_cast<const void*>(static_cast<std::uintptr_t>(first) * sizeof(std::uint32_t)));
+    if (!own) glVertexArrayElementBuffer(vertexArray, primitive.indices.id());
+    return count / 3;
 }
 
 unsigned SceneGpu::materialTexture(int material, MaterialTexture kind) const {

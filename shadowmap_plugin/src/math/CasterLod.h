@@ -9,8 +9,9 @@
 // estimate passes kMaxRelativeError of the primitive's size); a level that is not at least
 // a quarter smaller than the last one kept ends the list. Primitive borders are locked
 // (meshopt_SimplifyLockBorder), so the primitives of a mesh stay stitched to each other. A
-// closed mesh (Mesh::closed) keeps only closed levels: backface culls front faces and woo
-// peels two layers, and both need every ray through the caster to cross it twice.
+// closed mesh (Mesh::closed) keeps only closed levels (levelIsClosed): backface culls front
+// faces and woo peels two layers, and both need every ray through the caster to cross it
+// an even number of times.
 //
 // Error: the simplifier's estimate is relative and not a bound, so each level's error is
 // measured against the mesh as loaded, both ways (math/SurfaceDistance.h: the largest
@@ -46,11 +47,20 @@ struct CasterLodOptions {
 };
 
 // The levels coarser than the mesh as loaded, finest first (errors grow, triangles shrink).
-// Empty when the mesh cannot be simplified by enough.
-std::vector<CasterLevel> simplifiedLevels(const engine::Mesh& mesh, const CasterLodOptions& options = {});
+// Empty when the mesh cannot be simplified by enough. readsTexcoords, per primitive (missing:
+// false): its depth pass samples a texture (alpha-masked), so its levels keep its vertices
+// as they are, UV seams included; the others are simplified with vertices that deform
+// alike welded (only positions reach an opaque caster's depth), each welded corner one of
+// the vertices it stands for.
+std::vector<CasterLevel> simplifiedLevels(const engine::Mesh& mesh, const std::vector<bool>& readsTexcoords = {},
+                                         const CasterLodOptions& options = {});
 
-// Whether the mesh, with each primitive's triangles replaced by the level's, is closed
-// (engine::isClosedSurface: welded by position, every edge used once each way).
+// Whether the mesh, with each primitive's triangles replaced by the level's, is closed for
+// a shadow: welded by position (degenerate triangles ignored), every edge is walked as
+// often one way as the other, so every ray enters the solid as often as it leaves it. That
+// is engine::isClosedSurface (each edge once each way) except that it also accepts what the
+// simplifier makes of a thin part, two sheets pinched along an edge (walked twice each
+// way): parity, which woo's two layers and backface's back faces rest on, is kept there.
 bool levelIsClosed(const engine::Mesh& mesh, const CasterLevel& level);
 
 // The mesh's triangles (all primitives) in object space, and a level's.

@@ -36,7 +36,8 @@ void addCounts(LightShadowFrame& plan, const DepthDrawCounts& counts) {
 } // namespace
 
 void addDepthPasses(LightShadow& light, engine::Frame& frame, engine::ResourceHandle& map, DepthRenderer& renderer,
-                    const std::vector<bool>& closedMeshes) {
+                    const std::vector<bool>& closedMeshes, const CasterLods* casterLods,
+                    std::vector<std::uint64_t>& levelDraws) {
     const MapProjection& projection = *mapProjection(light.frame.kind);
     const DepthTechnique& technique = *depthTechnique(light.settings.variant);
     DepthPassStyle style;
@@ -44,14 +45,23 @@ void addDepthPasses(LightShadow& light, engine::Frame& frame, engine::ResourceHa
     style.reversedZ = light.settings.reversedZ;
     style.offsetClamp = offsetClamp(light, projection);
     technique.adjustStyle(light, {frame.scene(), closedMeshes}, style);
+    if (light.settings.casterLod > 0.0) {
+        style.casterLods = casterLods;
+        style.lodTexelFraction = light.settings.casterLod;
+        style.mapResolution = light.settings.resolution;
+    }
 
     const std::vector<MapLayer> layers = projection.layers(light);
     // Rendered: layers drawn this frame; skipped: the rest (empty, or still right).
     for (const MapLayer& layer : layers) light.frame.facesRendered += layer.drawsCasters ? 1 : 0;
     light.frame.facesSkipped = projection.shape(light).layers - light.frame.facesRendered;
-    const CasterDraw draw = [&renderer, &light, &frame](engine::PassContext& context, const glm::dmat4& viewProjection,
-                                                        const DepthPassStyle& drawStyle) {
-        addCounts(light.frame, renderer.draw(frame, context, viewProjection, drawStyle));
+    const CasterDraw draw = [&renderer, &light, &frame, &levelDraws](engine::PassContext& context,
+                                                                     const glm::dmat4& viewProjection,
+                                                                     const DepthPassStyle& drawStyle) {
+        const DepthDrawCounts counts = renderer.draw(frame, context, viewProjection, drawStyle);
+        addCounts(light.frame, counts);
+        if (levelDraws.size() < counts.levelDraws.size()) levelDraws.resize(counts.levelDraws.size());
+        for (std::size_t l = 0; l < counts.levelDraws.size(); ++l) levelDraws[l] += counts.levelDraws[l];
     };
     for (const MapLayer& layer : layers) {
         // Only once its passes have run does the layer hold what its key says.

@@ -1,5 +1,7 @@
 #include "plugin/DepthRenderer.h"
 
+#include "plugin/CasterLods.h"
+#include "technique/CasterLodChoice.h"
 #include "technique/Techniques.h"
 
 #include "engine/scene/FrustumCull.h"
@@ -99,11 +101,22 @@ DepthDrawCounts DepthRenderer::draw(const engine::Frame& frame, engine::PassCont
             else glDisable(GL_CULL_FACE);
             setPolygonOffset(closed ? style.polygonOffset : style.openCasterOffset, style);
         }
+        // caster_lod: the coarsest level within the allowed fraction of a texel here.
+        int level = 0;
+        if (style.casterLods && style.lodTexelFraction > 0.0) {
+            const std::vector<double>& errors = style.casterLods->errors(instance.mesh);
+            if (!errors.empty())
+                level = coarsestLevelWithin(
+                    errors, largestScale(instance.world),
+                    style.lodTexelFraction * texelSizeAt(viewProjection, instance.worldBounds, style.mapResolution));
+        }
         // A mirroring transform turns counter-clockwise triangles clockwise.
         glFrontFace(glm::determinant(glm::dmat3(instance.world)) < 0.0 ? GL_CW : GL_CCW);
         // P_light * L^-1 * M in double: only the light-relative product is rounded.
         const glm::mat4 lightModelViewProjection(viewProjection * gpu.modelMatrix(instance));
-        for (const auto& primitive : gpu.primitives(instance)) {
+        const std::vector<engine::SceneGpu::Primitive>& primitives = gpu.primitives(instance);
+        for (std::size_t p = 0; p < primitives.size(); ++p) {
+            const engine::SceneGpu::Primitive& primitive = primitives[p];
             // KHR_lights_shadows on the primitive: a caster only if instance and primitive cast.
             if (!drawn(instance.castShadows && primitive.castShadows,
                        instance.receiveShadows && primitive.receiveShadows))
@@ -118,9 +131,13 @@ DepthDrawCounts DepthRenderer::draw(const engine::Frame& frame, engine::PassCont
             const engine::gl::Program& drawing = use(features);
             drawing.set("uLightModelViewProjection", lightModelViewProjection);
             engine::applyMaterial(drawing, scene, gpu, primitive, features, engine::MaterialUse::ShadowCasting);
-            const std::uint64_t triangles = gpu.draw(primitive);
+            const std::uint64_t triangles = style.casterLods
+                                                ? style.casterLods->draw(gpu, primitive, instance.mesh, p, level)
+                                                : gpu.draw(primitive);
             context.countDraw(triangles);
             ++counts.draws;
+            if (counts.levelDraws.size() <= static_cast<std::size_t>(level)) counts.levelDraws.resize(level + 1);
+            ++counts.levelDraws[level];
             counts.triangles += triangles;
         }
     }

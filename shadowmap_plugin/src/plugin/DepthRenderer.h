@@ -19,6 +19,7 @@ namespace shadowmap {
 
 struct DepthDrawCounts {
     std::uint64_t draws = 0, triangles = 0, castersCulled = 0, castersUnseen = 0;
+    std::vector<std::uint64_t> levelDraws;  // caster_lod: draws per level (0: as loaded)
 };
 
 class DepthRenderer {

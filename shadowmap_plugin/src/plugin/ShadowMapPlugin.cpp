@@ -49,6 +49,7 @@ void ShadowMapPlugin::prepareScene(const engine::Scene& scene) {
     resolve(scene);
     ++sceneGeneration_;  // new geometry: no map is still right
     volumes_.reset();      // its meshes' adjacency is the old scene's
+    casterLods_.reset();   // the old scene's meshes
     cacheHits_ = cacheMisses_ = 0;
 }
 
@@ -93,6 +94,9 @@ void ShadowMapPlugin::addPasses(engine::Frame& frame) {
             volumes_ = std::make_unique<VolumeRenderer>(volumesOnGpu_);
             volumes_->prepareScene(frame.scene());
         }
+    for (const LightShadow& light : lights_)
+        if (light.settings.casterLod > 0.0 && !casterLods_) casterLods_ = std::make_unique<CasterLods>(frame.scene());
+    levelDraws_.assign(lights_.size(), {});
     const PlanContext context = planContext(frame.scene(), frame.camera());
     std::vector<engine::ResourceHandle> maps;
     for (LightShadow& light : lights_) {
@@ -124,7 +128,8 @@ void ShadowMapPlugin::addPasses(engine::Frame& frame) {
                 ++cacheHits_;  // the map is an input nobody writes this frame: no depth pass
             } else {
                 ++cacheMisses_;
-                addDepthPasses(light, frame, map, *depth_, closedMeshes_);  // moves map to its last version
+                addDepthPasses(light, frame, map, *depth_, closedMeshes_, casterLods_.get(),
+                               levelDraws_[&light - lights_.data()]);  // moves map to its last version
                 if (moments.valid()) addMomentsPasses(light, frame, map, moments, *moments_);
             }
             light.frame.map = map;  // the version the lit pass (and its comparison view) reads
@@ -146,6 +151,11 @@ nlohmann::json ShadowMapPlugin::frameStats() const {
     nlohmann::json lights = nlohmann::json::array();
     for (const LightShadow& light : lights_) {
         nlohmann::json stats = light.stats();
+        // caster_lod: the depth passes' draws per level (0: as loaded).
+        if (light.settings.casterLod > 0.0) {
+            const std::size_t index = &light - lights_.data();
+            stats["lod_draws"] = index < levelDraws_.size() ? levelDraws_[index] : std::vector<std::uint64_t>{};
+        }
         // JSON has no infinity: an infinite far plane (far_plane "infinite", reversed_z)
         // is reported as the string "infinite".
         if (stats.contains("far") && stats["far"].is_number() && std::isinf(stats["far"].get<double>()))
@@ -153,8 +163,10 @@ nlohmann::json ShadowMapPlugin::frameStats() const {
         if (light.settings.reversedZ) stats["reversed_z"] = true;
         lights.push_back(std::move(stats));
     }
-    return {{"lights", lights}, {"cache_hits", cacheHits_}, {kCacheMapsKey, cacheMaps_},
-            {"cache_misses", cacheMisses_}};
+    nlohmann::json out = {{"lights", lights}, {"cache_hits", cacheHits_}, {kCacheMapsKey, cacheMaps_},
+                          {"cache_misses", cacheMisses_}};
+    if (casterLods_) out["caster_lod"] = {{"build_s", casterLods_->buildSeconds()}, {"meshes", casterLods_->stats()}};
+    return out;
 }
 
 } // namespace shadowmap

@@ -4,6 +4,7 @@
 // glue between the engine and the techniques (technique/Techniques.h): it resolves the
 // lights' settings, asks the planner what each light needs this frame, keeps the maps, and
 // lets each light's techniques declare their passes and lookups.
+#include "plugin/CasterLods.h"
 #include "plugin/DepthRenderer.h"
 #include "plugin/LightResolver.h"
 #include "plugin/LightShadow.h"
@@ -48,6 +49,9 @@ private:
     std::vector<LightShadow> lights_;           // one per lit-pass light slot
     std::vector<bool> closedMeshes_;            // per mesh: closed, not double-sided
     std::unique_ptr<DepthRenderer> depth_;      // created with the first frame (needs GL)
+    // caster_lod's levels: made with the first frame of a scene in which a light asks for them.
+    std::unique_ptr<CasterLods> casterLods_;
+    std::vector<std::vector<std::uint64_t>> levelDraws_;  // per light: this frame's draws per level
     std::unique_ptr<MomentsRenderer> moments_;  // created with the first frame with a vsm or evsm light
     std::unique_ptr<VolumeRenderer> volumes_;  // created with the first frame with a volume light, per scene
     int maxTextureUnits_ = 16;                  // GL_MAX_TEXTURE_IMAGE_UNITS

@@ -12,6 +12,8 @@
 
 namespace shadowmap {
 
+class CasterLods;
+
 // One float uniform of a depth program, by its GLSL name.
 struct DepthUniform {
     const char* name;
@@ -48,6 +50,12 @@ struct DepthPassStyle {
     // Per Scene::meshInstances: casters this layer leaves out, their shadow reaching no visible
     // receiver (UnseenShadows.h); null: none.
     const std::vector<bool>* unseenCasters = nullptr;
+    // caster_lod: each caster's levels (plugin/CasterLods.h) and the largest error a drawn
+    // level may have, as a fraction of one of the map's texels (resolution across) at the
+    // caster (technique/CasterLodChoice.h); null or 0: every caster as loaded.
+    const CasterLods* casterLods = nullptr;
+    double lodTexelFraction = 0.0;
+    int mapResolution = 0;
 };
 
 // The state a depth pass of this style declares (engine/graph/PassState.h): depth test and

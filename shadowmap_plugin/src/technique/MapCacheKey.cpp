@@ -20,6 +20,8 @@ void addSettings(engine::Hasher& hasher, const LightState& light, std::uint64_t 
     hasher.add(s.standardPolygonOffset().x);
     hasher.add(s.standardPolygonOffset().y);
     hasher.add(static_cast<int>(light.frame.kind));
+    // The levels drawn are chosen from it, the views and the casters' boxes and transforms.
+    hasher.add(s.casterLod);
     // vsm, evsm: the moments made with the map hold its blur and warp.
     if (readsMoments(s.filter)) {
         hasher.add(static_cast<int>(s.filter));

@@ -62,6 +62,11 @@ public:
     glm::dmat4 modelMatrix(const MeshInstance& instance) const;
     // Binds the primitive's vertex array and draws it; returns its triangle count.
     std::uint64_t draw(const Primitive& primitive) const;
+    // Draws `count` indices from `first` of another triangle list into the primitive's
+    // vertices (a simplified level of it, say), with its vertex arrays: whatever is per vertex
+    // (a deformed instance's pose, UVs) is the primitive's. Returns the triangles drawn.
+    std::uint64_t drawIndices(const Primitive& primitive, const gl::Buffer& indices, std::uint32_t first,
+                              std::uint32_t count) const;
     // The material's texture of that kind (mipmapped, sRGB-decoded where isSrgb says so,
     // its glTF sampler's filters and wrap modes set on it), or 0 when it has none.
     unsigned materialTexture(int material, MaterialTexture texture) const;
