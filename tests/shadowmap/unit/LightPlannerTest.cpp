@@ -201,6 +201,23 @@ TEST(LightPlanner, AMapIsStillRightUntilACasterInItsFrustumMoves) {
     }
 }
 
+TEST(LightPlanner, ChangingCasterLodDrawsTheMapAgain) {
+    // The levels a pass draws follow from caster_lod with what the key already holds (the
+    // views, the casters' boxes and transforms): the key must hold caster_lod itself.
+    World world(engine::Light::Type::Spot);
+    world.frame();
+    world.frame();
+    ASSERT_TRUE(world.light.frame.cacheHit);
+    world.light.settings.casterLod = 1.0;
+    world.frame();
+    EXPECT_FALSE(world.light.frame.cacheHit);
+    world.frame();
+    EXPECT_TRUE(world.light.frame.cacheHit);
+    world.light.settings.casterLod = 0.5;
+    world.frame();
+    EXPECT_FALSE(world.light.frame.cacheHit);
+}
+
 TEST(LightPlanner, ACasterOutsideTheFrustumMovesWithoutCostingTheMap) {
     World world(engine::Light::Type::Spot);
     world.addInstance({{40, 0, 40}, {41, 1, 41}});  // far outside the spot's cone
