@@ -347,11 +347,16 @@ inline constexpr char kCacheMapsKey[] = "cache_maps";
 // mesh's edge adjacency on the CPU, or "gpu" in a geometry shader for closed meshes (the others,
 // and skinned or morphed casters, stay on the CPU). docs/shadow-volumes.md measures both.
 inline constexpr char kVolumeExtrusionKey[] = "volume_extrusion";
+// "volume_counting": how variant volume counts a caster's volume: "auto" (default) with z-pass,
+// without caps, where the volume cannot hold the camera (the CPU's closed casters), else
+// z-fail; or "z-fail" for every volume (the same shadows; for measuring what z-pass saves).
+inline constexpr char kVolumeCountingKey[] = "volume_counting";
 
 struct PluginSettings {
     ShadowSettings lightDefaults;
     bool cacheMaps = true;
     bool volumesOnGpu = false;  // volume_extrusion "gpu"
+    bool volumesZPass = true;   // volume_counting "auto"
 
     bool operator==(const PluginSettings&) const = default;
 };

@@ -312,8 +312,9 @@ void ShadowVolumeMesh::classifyClosed() {
 }
 
 ShadowVolumeCounts ShadowVolumeMesh::appendVolume(const glm::dvec4& light, const glm::dmat4& toTarget,
-                                                  std::vector<glm::vec4>& out, const ShadowVolumeBound& bound) const {
-    return emitVolume(light, toTarget, positions_, normals_, out, bound);
+                                                  std::vector<glm::vec4>& out, const ShadowVolumeBound& bound,
+                                                  VolumeCaps caps) const {
+    return emitVolume(light, toTarget, positions_, normals_, out, bound, caps);
 }
 
 // The posed positions and normals are made in locals, like the other per-call buffers of
@@ -322,7 +323,7 @@ ShadowVolumeCounts ShadowVolumeMesh::appendVolume(const glm::dvec4& light, const
 // beside the work on them (see PrintsTimeForLargeSphere).
 ShadowVolumeCounts ShadowVolumeMesh::appendVolume(const glm::dvec4& light, const glm::dmat4& toTarget,
                                                   const std::vector<glm::vec3>& posed, std::vector<glm::vec4>& out,
-                                                  const ShadowVolumeBound& bound) const {
+                                                  const ShadowVolumeBound& bound, VolumeCaps caps) const {
     if (posed.size() != inputVertexCount_)
         throw std::invalid_argument("shadow volume mesh: " + std::to_string(posed.size()) +
                                     " posed positions for a mesh built from " + std::to_string(inputVertexCount_));
@@ -330,7 +331,7 @@ ShadowVolumeCounts ShadowVolumeMesh::appendVolume(const glm::dvec4& light, const
     for (std::size_t v = 0; v < sources_.size(); ++v) positions[v] = glm::dvec3(posed[sources_[v]]);
     std::vector<glm::dvec3> normals;
     computeNormals(positions, corners_, normals);
-    return emitVolume(light, toTarget, positions, normals, out, bound);
+    return emitVolume(light, toTarget, positions, normals, out, bound, caps);
 }
 
 // positions: per welded vertex; normals: per triangle of corners_, cross(b - a, c - a) of those
@@ -338,7 +339,7 @@ ShadowVolumeCounts ShadowVolumeMesh::appendVolume(const glm::dvec4& light, const
 ShadowVolumeCounts ShadowVolumeMesh::emitVolume(const glm::dvec4& light, const glm::dmat4& toTarget,
                                                 const std::vector<glm::dvec3>& positions,
                                                 const std::vector<glm::dvec3>& normals, std::vector<glm::vec4>& out,
-                                                const ShadowVolumeBound& bound) const {
+                                                const ShadowVolumeBound& bound, VolumeCaps caps) const {
     ShadowVolumeCounts counts;
     const bool directional = light.w == 0.0;
     const bool bounded = boundGiven(bound);
@@ -399,10 +400,12 @@ ShadowVolumeCounts ShadowVolumeMesh::emitVolume(const glm::dvec4& light, const g
 
     // Either way a far cap triangle is (x, y, z) or (x, z, y) extruded; none for a directional
     // light without a bound, where all three corners are the same point.
-    const std::size_t nearCount = classic ? facingCount : corners_.size() - flatCount;
-    const std::size_t farCount = vertices.shared ? 0 : (classic ? corners_.size() - facingCount : nearCount);
+    const bool capsEmitted = !(classic && caps == VolumeCaps::LeftOutIfClosed);
+    const std::size_t nearCount = !capsEmitted ? 0 : classic ? facingCount : corners_.size() - flatCount;
+    const std::size_t farCount =
+        !capsEmitted || vertices.shared ? 0 : (classic ? corners_.size() - facingCount : nearCount);
     out.reserve(out.size() + 3 * (nearCount + farCount));
-    for (std::size_t t = 0; t < corners_.size(); ++t) {
+    for (std::size_t t = 0; capsEmitted && t < corners_.size(); ++t) {
         if (flat[t]) continue;
         const glm::u32vec3& c = corners_[t];
         if (facing[t])

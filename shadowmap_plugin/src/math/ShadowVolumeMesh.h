@@ -95,6 +95,13 @@ struct ShadowVolumeBound {
     double radius = 0.0;
 };
 
+// Whether a classic volume's caps are emitted. Counted with z-pass (the volume faces in front of
+// each pixel's surface, for a camera outside every volume), a closed outward caster's caps never
+// count: its near cap is its own lit surface, behind which nothing of it is seen, and its far cap
+// lies past every receiver (at the bound or at infinity). z-fail needs them. The summed
+// per-triangle volumes always keep theirs: an open surface can be seen through from behind.
+enum class VolumeCaps { Emitted, LeftOutIfClosed };
+
 // A mesh's edge adjacency, built once at load, from which each frame's volume is extruded.
 class ShadowVolumeMesh {
 public:
@@ -135,7 +142,8 @@ public:
     // counts.silhouetteEdges still counts a quad whose collapsed halves are left out. A light at a
     // vertex (in target space) keeps (0, 0, 0, 0) for that vertex and constrains no other.
     ShadowVolumeCounts appendVolume(const glm::dvec4& light, const glm::dmat4& toTarget, std::vector<glm::vec4>& out,
-                                    const ShadowVolumeBound& bound = {}) const;
+                                    const ShadowVolumeBound& bound = {},
+                                    VolumeCaps caps = VolumeCaps::Emitted) const;
 
     // The same volume for the mesh posed: `posed` holds a position per input vertex (the
     // constructor's `positions` indexing, same size), e.g. a skinned or morphed pose. The
@@ -174,7 +182,8 @@ public:
     // triangles) on top of the rest overload's work.
     ShadowVolumeCounts appendVolume(const glm::dvec4& light, const glm::dmat4& toTarget,
                                     const std::vector<glm::vec3>& posed, std::vector<glm::vec4>& out,
-                                    const ShadowVolumeBound& bound = {}) const;
+                                    const ShadowVolumeBound& bound = {},
+                                    VolumeCaps caps = VolumeCaps::Emitted) const;
 
 private:
     // An undirected edge between welded vertices a < b; its triangles are
@@ -191,7 +200,7 @@ private:
     // normals: per triangle, cross(b - a, c - a) of those positions.
     ShadowVolumeCounts emitVolume(const glm::dvec4& light, const glm::dmat4& toTarget,
                                   const std::vector<glm::dvec3>& positions, const std::vector<glm::dvec3>& normals,
-                                  std::vector<glm::vec4>& out, const ShadowVolumeBound& bound) const;
+                                  std::vector<glm::vec4>& out, const ShadowVolumeBound& bound, VolumeCaps caps) const;
 
     std::vector<glm::dvec3> positions_;                // welded, object space
     std::vector<std::uint32_t> sources_;               // per welded vertex, the input vertex first welded into it

@@ -156,6 +156,7 @@ nlohmann::json LightShadow::stats() const {
         out["silhouette_edges"] = frame.silhouetteEdges;
         out["cap_triangles"] = frame.capTriangles;
         out["casters_extruded_on_gpu"] = frame.gpuVolumeCasters;
+        out["casters_z_pass"] = frame.zPassVolumeCasters;
         // The pass's fill: 0 when it drew no volume or kept last frame's visibility; null
         // when the GPU has not finished it yet (the stats of an untimed frame).
         if (frame.volumeFillQueried) {

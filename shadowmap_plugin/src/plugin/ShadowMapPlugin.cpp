@@ -91,7 +91,7 @@ void ShadowMapPlugin::addPasses(engine::Frame& frame) {
     }
     for (const LightShadow& light : lights_)
         if (light.settings.variant == Variant::Volume && !volumes_) {
-            volumes_ = std::make_unique<VolumeRenderer>(volumesOnGpu_);
+            volumes_ = std::make_unique<VolumeRenderer>(volumesOnGpu_, volumesZPass_);
             volumes_->prepareScene(frame.scene());
         }
     for (const LightShadow& light : lights_)

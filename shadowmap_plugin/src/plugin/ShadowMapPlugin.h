@@ -28,7 +28,10 @@ public:
     // the lit pass shade keys so it may reuse the lights' shade too. volumesOnGpu: where
     // variant volume's volumes are made (shadowmap/ShadowSettings.h volume_extrusion).
     explicit ShadowMapPlugin(const PluginSettings& settings)
-        : defaults_(settings.lightDefaults), cacheMaps_(settings.cacheMaps), volumesOnGpu_(settings.volumesOnGpu) {}
+        : defaults_(settings.lightDefaults),
+          cacheMaps_(settings.cacheMaps),
+          volumesOnGpu_(settings.volumesOnGpu),
+          volumesZPass_(settings.volumesZPass) {}
 
     std::string name() const override { return kPluginName; }
     // Any key of extras.shadow (ShadowSettings.h), checked now: over the light's extras.
@@ -60,6 +63,7 @@ private:
     std::string scenePath_;                     // the scene's file, for messages
     bool cacheMaps_ = true;
     bool volumesOnGpu_ = false;
+    bool volumesZPass_ = true;
     std::uint64_t sceneGeneration_ = 0;
     std::uint64_t cacheHits_ = 0, cacheMisses_ = 0;  // since the scene was prepared
 };

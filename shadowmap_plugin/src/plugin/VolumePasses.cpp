@@ -75,6 +75,7 @@ engine::ResourceHandle addVolumePass(LightShadow& light, engine::Frame& frame, V
             light.frame.silhouetteEdges += counts.silhouetteEdges;
             light.frame.capTriangles += counts.capTriangles;
             light.frame.gpuVolumeCasters += counts.gpuCasters;
+            light.frame.zPassVolumeCasters += counts.zPassCasters;
             light.frame.volumeFillQueried = counts.volumeTriangles > 0 || counts.gpuCasters > 0;
             light.visibilityKey = key;
             if (countsWanted) light.stencilCountKey = key;

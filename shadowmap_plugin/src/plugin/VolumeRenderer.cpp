@@ -135,12 +135,13 @@ engine::PixelRect lightFootprint(const engine::Frame& frame, const LightShadow& 
 
 } // namespace
 
-VolumeRenderer::VolumeRenderer(bool onGpu)
+VolumeRenderer::VolumeRenderer(bool onGpu, bool zPass)
     : volumeProgram_(compileProgram("shadow volumes", shaders::shadow_volume_vert, shaders::shadow_volume_frag)),
       resolveProgram_(compileProgram("shadow volume resolve", shaders::moments_vert, shaders::volume_resolve_frag)),
       framebuffer_(engine::gl::Framebuffer::create()),
       pointArray_(engine::gl::VertexArray::create()),
-      empty_(engine::gl::VertexArray::create()) {
+      empty_(engine::gl::VertexArray::create()),
+      zPass_(zPass) {
     if (onGpu) gpu_ = std::make_unique<GpuVolumeExtrusion>();
 }
 
@@ -192,8 +193,15 @@ VolumeCounts VolumeRenderer::buildVolumes(const engine::Frame& frame, const Ligh
     const engine::LightInstance& placed = scene.lightInstances[light.slot];
     const glm::dmat4 viewMatrix = glm::inverse(frame.camera().eyeToWorld);  // V^-1
     const ShadowVolumeBound bound = receiverBound(frame, viewMatrix);
+    // z-pass for the closed casters whose volumes cannot hold the camera (CameraInVolume.h):
+    // no caps to make or draw. A perspective camera only: with depth clamp an orthographic
+    // one's rays reach behind it. Posed casters stay z-fail: their bounds are the rest pose's.
+    const bool perspective = frame.camera().projection[3][3] == 0.0;
+    const CameraRegion cameraNear = cameraRegion(frame.camera().eyeToWorld, frame.camera().projection);
+    const glm::dvec4 lightWorld = lightInObject(placed, light.type, glm::dmat4(1.0));
     VolumeCounts counts;
     scratch_.clear();
+    zPassScratch_.clear();
     gpuCasters_.clear();
     for (const engine::MeshInstance& instance : scene.meshInstances) {
         if (!instance.castShadows || instance.mesh < 0) continue;
@@ -205,29 +213,39 @@ VolumeCounts VolumeRenderer::buildVolumes(const engine::Frame& frame, const Ligh
             ++counts.gpuCasters;
             continue;
         }
+        const glm::dvec3 center = (instance.worldBounds.min + instance.worldBounds.max) * 0.5;
+        const bool zPass = zPass_ && perspective && !instance.deformed && volumeMesh.closedOutward() &&
+                           !volumeMayHoldCamera(lightWorld, cameraNear, center,
+                                                glm::length(instance.worldBounds.max - instance.worldBounds.min) * 0.5);
+        std::vector<glm::vec4>& out = zPass ? zPassScratch_ : scratch_;
+        const VolumeCaps caps = zPass ? VolumeCaps::LeftOutIfClosed : VolumeCaps::Emitted;
         ShadowVolumeCounts added;
-        const std::size_t first = scratch_.size();
+        const std::size_t first = out.size();
         if (instance.deformed) {
             // The pose moves the vertices, not the adjacency built at load. Posed vertices are
             // relative to the deformed mesh's origin, in the frame `world`.
             const glm::dmat4 model = glm::translate(instance.world, instance.deformed->origin);
             const CastingGeometry posed = castingGeometry(scene, scene.meshes[instance.mesh], instance.deformed.get());
             added = volumeMesh.appendVolume(lightInObject(placed, light.type, model), viewMatrix * model,
-                                            posed.positions, scratch_, bound);
+                                            posed.positions, out, bound, caps);
         } else {
             added = volumeMesh.appendVolume(lightInObject(placed, light.type, instance.world),
-                                            viewMatrix * instance.world, scratch_, bound);
+                                            viewMatrix * instance.world, out, bound, caps);
         }
         // A mirroring transform turns the volume inside out: its count would be -1 where the
         // others' are +1, and overlapping volumes of a mirrored and an unmirrored caster would
         // cancel into light. Rewound, every volume counts +1 inside.
         if (glm::determinant(glm::dmat3(instance.world)) < 0.0)
-            for (std::size_t corner = first; corner + 2 < scratch_.size(); corner += 3)
-                std::swap(scratch_[corner + 1], scratch_[corner + 2]);
+            for (std::size_t corner = first; corner + 2 < out.size(); corner += 3)
+                std::swap(out[corner + 1], out[corner + 2]);
         ++counts.casters;
+        counts.zPassCasters += zPass;
         counts.silhouetteEdges += added.silhouetteEdges;
         counts.capTriangles += added.capTriangles;
     }
+    // One buffer: the z-fail volumes, then the z-pass ones from zPassFirst_.
+    zPassFirst_ = scratch_.size();
+    scratch_.insert(scratch_.end(), zPassScratch_.begin(), zPassScratch_.end());
     counts.volumeTriangles = scratch_.size() / 3;
     return counts;
 }
@@ -293,24 +311,22 @@ VolumeCounts VolumeRenderer::render(const engine::Frame& frame, engine::PassCont
     const VolumeCounts counts = footprint.empty() ? VolumeCounts{} : buildVolumes(frame, light);
     upload();
     if (counts.volumeTriangles > 0 || !gpuCasters_.empty()) {
-        // z-fail: a volume face behind the nearest surface counts, +1 facing away from the
-        // camera, -1 facing it (wrapping, so the order of faces does not matter); a surface
-        // point inside k volumes ends with k. The volumes are wound outward (ShadowVolumeMesh.h).
-        // "Behind" is the depth test's complement made the passing side, so that the samples
-        // passed (light.volumeFill) are exactly those that count.
+        // A surface point inside k volumes ends with the count k (the volumes are wound outward,
+        // ShadowVolumeMesh.h; the ops wrap, so the order of faces does not matter). z-fail: a
+        // volume face behind the nearest surface counts, +1 facing away from the camera, -1
+        // facing it; z-pass, for volumes that cannot hold the camera: a face in front counts,
+        // +1 facing the camera, -1 facing away. Either way the counting side of the depth test
+        // is made its passing side, so the samples passed (light.volumeFill) are those that count.
         const VolumeDepth depthMapping = volumeDepth(camera.projection);
         glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
         glDepthMask(GL_FALSE);
         glEnable(GL_DEPTH_TEST);
         setDepthDirection(depthMapping);
-        glDepthFunc(depthMapping.reversed ? GL_LEQUAL : GL_GEQUAL);
         glDisable(GL_CULL_FACE);
         glFrontFace(GL_CCW);
         glEnable(GL_DEPTH_CLAMP);  // no far plane clips a volume's far end
         glEnable(GL_STENCIL_TEST);
         glStencilFunc(GL_ALWAYS, 0, 0xff);
-        glStencilOpSeparate(GL_BACK, GL_KEEP, GL_KEEP, GL_INCR_WRAP);
-        glStencilOpSeparate(GL_FRONT, GL_KEEP, GL_KEEP, GL_DECR_WRAP);
         light.volumeFill.begin();
         // The near caps are the casters' own lit faces, made again on the CPU: pushed a little
         // away so that on those faces they lie behind the surface and count, as the rest of
@@ -320,10 +336,20 @@ VolumeCounts VolumeRenderer::render(const engine::Frame& frame, engine::PassCont
         glPolygonOffset(away * kVolumeOffsetFactor, away * kVolumeOffsetUnits);
         volumeProgram_.use();
         volumeProgram_.set("uProjection", glm::mat4(depthMapping.projection));
-        if (counts.volumeTriangles > 0) {
-            pointArray_.bind();
-            glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(scratch_.size()));
-            context.countDraw(counts.volumeTriangles);
+        pointArray_.bind();
+        if (zPassFirst_ < scratch_.size()) {
+            glDepthFunc(depthMapping.reversed ? GL_GREATER : GL_LESS);
+            glStencilOpSeparate(GL_FRONT, GL_KEEP, GL_KEEP, GL_INCR_WRAP);
+            glStencilOpSeparate(GL_BACK, GL_KEEP, GL_KEEP, GL_DECR_WRAP);
+            glDrawArrays(GL_TRIANGLES, static_cast<GLint>(zPassFirst_), static_cast<GLsizei>(scratch_.size() - zPassFirst_));
+            context.countDraw((scratch_.size() - zPassFirst_) / 3);
+        }
+        glDepthFunc(depthMapping.reversed ? GL_LEQUAL : GL_GEQUAL);
+        glStencilOpSeparate(GL_BACK, GL_KEEP, GL_KEEP, GL_INCR_WRAP);
+        glStencilOpSeparate(GL_FRONT, GL_KEEP, GL_KEEP, GL_DECR_WRAP);
+        if (zPassFirst_ > 0) {
+            glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(zPassFirst_));
+            context.countDraw(zPassFirst_ / 3);
         }
         const glm::dmat4 viewProjection = depthMapping.projection * glm::inverse(camera.eyeToWorld);
         const glm::dvec4 lightWorld = lightInObject(frame.scene().lightInstances[light.slot], light.type, glm::dmat4(1.0));

@@ -9,6 +9,7 @@
 // The volumes are made on the CPU from each mesh's edge adjacency (math/ShadowVolumeMesh.h),
 // in camera-relative eye space composed in double, or for closed meshes optionally in a
 // geometry shader (GpuVolumeExtrusion.h).
+#include "math/CameraInVolume.h"
 #include "math/ShadowVolumeMesh.h"
 #include "plugin/DepthRenderer.h"
 #include "plugin/GpuVolumeExtrusion.h"
@@ -36,13 +37,16 @@ struct VolumeCounts {
     std::uint64_t silhouetteEdges = 0;
     std::uint64_t capTriangles = 0;
     std::uint64_t gpuCasters = 0;       // of `casters`, those extruded in the geometry shader
+    std::uint64_t zPassCasters = 0;     // of `casters`, those counted with z-pass (no caps)
 };
 
 class VolumeRenderer {
 public:
     // onGpu: closed, undeformed casters' volumes are extruded in a geometry shader
     // (GpuVolumeExtrusion.h); the rest on the CPU.
-    explicit VolumeRenderer(bool onGpu);
+    // zPass: volumes that cannot hold the camera are counted with z-pass, without caps (else
+    // every volume with z-fail).
+    VolumeRenderer(bool onGpu, bool zPass);
 
     // Each mesh's edge adjacency, from its casting primitives, once per scene (alpha-tested
     // ones left out: a light with such casters gets a map instead, LightResolver.h).
@@ -72,7 +76,10 @@ private:
     engine::gl::Buffer points_;
     std::size_t pointCapacity_ = 0;
     engine::gl::VertexArray pointArray_, empty_;
-    std::vector<glm::vec4> scratch_;
+    std::vector<glm::vec4> scratch_;       // z-fail volumes, then from zPassFirst_ z-pass ones
+    std::vector<glm::vec4> zPassScratch_;  // the z-pass ones while they are made
+    std::size_t zPassFirst_ = 0;
+    bool zPass_ = true;
     std::unique_ptr<GpuVolumeExtrusion> gpu_;  // volume_extrusion "gpu"
     std::vector<const engine::MeshInstance*> gpuCasters_;  // this light's casters gpu_ draws
 };

@@ -19,6 +19,7 @@ std::vector<std::string> pluginSettingKeys() {
     for (const SettingKey& key : settingKeys()) keys.push_back(key.name);
     keys.push_back(kCacheMapsKey);
     keys.push_back(kVolumeExtrusionKey);
+    keys.push_back(kVolumeCountingKey);
     return keys;
 }
 
@@ -39,6 +40,14 @@ PluginSettings parsePluginSettings(const nlohmann::json& json, const std::string
             engine::throwInputError(source, object, "unknown value \"" + where + "\" (known: cpu, gpu)");
         settings.volumesOnGpu = where == "gpu";
         lightDefaults.erase(kVolumeExtrusionKey);
+    }
+    if (json.contains(kVolumeCountingKey)) {
+        const std::string object = std::string(kObject) + "." + kVolumeCountingKey;
+        const std::string how = engine::json::readString(json[kVolumeCountingKey], source, object);
+        if (how != "auto" && how != "z-fail")
+            engine::throwInputError(source, object, "unknown value \"" + how + "\" (known: auto, z-fail)");
+        settings.volumesZPass = how == "auto";
+        lightDefaults.erase(kVolumeCountingKey);
     }
     applySettings(settings.lightDefaults, lightDefaults, source, kObject);
     return settings;

@@ -41,6 +41,7 @@ struct LightShadowFrame {
     // volume: the silhouette edges extruded and the cap triangles drawn this frame by the CPU,
     // and the casters whose volumes a geometry shader made instead (volume_extrusion "gpu").
     std::uint64_t silhouetteEdges = 0, capTriangles = 0, gpuVolumeCasters = 0;
+    std::uint64_t zPassVolumeCasters = 0;  // volume: casters counted with z-pass (no caps)
     bool volumeFillQueried = false;  // volume: the pass drew volumes and counted their fill
     // Casters left out because their shadow reaches no visible receiver (UnseenShadows.h),
     // counted per layer drawn; and per map layer (layerIndex), which ones: empty when none is.

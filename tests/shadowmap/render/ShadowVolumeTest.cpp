@@ -64,13 +64,16 @@ SceneBuilder litFloor(const char* name, Light::Type type, const glm::dvec3& posi
 // The sun the directional scenes share: above and behind the box, toward the camera's left.
 const glm::dvec3 kSunPosition{-5, 6, -5};
 
-// Every test runs with the volumes made on the CPU and with those of closed casters made in
-// a geometry shader (the plugin's volume_extrusion): both must be exact.
+// Every test runs with the volumes made on the CPU (closed casters' counted with z-pass where
+// they cannot hold the camera), on the CPU all counted with z-fail (volume_counting), and with
+// those of closed casters made in a geometry shader (volume_extrusion): all must be exact.
 class ShadowVolume : public engine::test::ShadowPluginTest, public ::testing::WithParamInterface<const char*> {
 protected:
     void SetUp() override {
         if (loaded_ == GetParam()) return;
-        loadPlugin({{"volume_extrusion", GetParam()}});
+        const std::string mode = GetParam();
+        loadPlugin({{"volume_extrusion", mode == "gpu" ? "gpu" : "cpu"},
+                    {"volume_counting", mode == "cpu_z_fail" ? "z-fail" : "auto"}});
         loaded_ = GetParam();
     }
     static void TearDownTestSuite() {
@@ -133,7 +136,19 @@ TEST_P(ShadowVolume, GrazingLightIsExactEdgesIncluded) {
 TEST_P(ShadowVolume, CameraInsideAVolumeIsExact) {
     SceneBuilder builder = litFloor("bulb", Light::Type::Point, {0.3, 6, 0.2}, {0.3, 0, 0.2});
     const engine::FrameCamera camera = engine::test::cameraLooking({0.2, 0.6, 0.1}, {4, 0, 3}, kWidth, kHeight);
-    const auto result = compare(builder.build(), camera, {kFloor, kBox});
+    const engine::Scene scene = builder.build();
+    {
+        // The box's volume holds the camera: it must be counted with z-fail (the floor's may
+        // take z-pass on the CPU).
+        engine::Renderer renderer({}, plugins());
+        renderer.setScene(scene);
+        engine::FrameRequest request;
+        request.camera = camera;
+        const nlohmann::json stats =
+            renderer.renderFrame(request).pluginStats.at("shadowmap_plugin").at("lights").at(0);
+        EXPECT_LE(stats.at("casters_z_pass").get<int>(), 1) << stats;
+    }
+    const auto result = compare(scene, camera, {kFloor, kBox});
     EXPECT_GT(result.truthShadowed, 200);
     EXPECT_GT(result.truthLit, 200);
     EXPECT_LE(result.wrongFraction(), kMaxWrongFraction);
@@ -207,6 +222,9 @@ TEST_P(ShadowVolume, AStillFrameReusesTheVisibilityAndAMovedLightRemakesIt) {
         stats = result.pluginStats.at("shadowmap_plugin").at("lights").at(0);
         if (result.shadowViews.at(0).renderedThisFrame) {
             EXPECT_EQ(stats.at("casters_extruded_on_gpu"), std::string(GetParam()) == "gpu" ? 2 : 0) << stats;
+            // Seen from above, neither volume can hold the camera: the CPU counts both with
+            // z-pass, without caps, unless asked for z-fail (the geometry shader's are z-fail).
+            EXPECT_EQ(stats.at("casters_z_pass"), std::string(GetParam()) == "cpu" ? 2 : 0) << stats;
         } else {
             EXPECT_EQ(stats.at("stencil_fragments"), 0) << stats;
         }
@@ -286,5 +304,5 @@ TEST_P(ShadowVolume, AMirroredCasterOverlappingAnotherShadowsAsBoth) {
     EXPECT_LE(result.wrongFraction(), kMaxWrongFraction);
 }
 
-INSTANTIATE_TEST_SUITE_P(Extrusion, ShadowVolume, ::testing::Values("cpu", "gpu"),
+INSTANTIATE_TEST_SUITE_P(Extrusion, ShadowVolume, ::testing::Values("cpu", "cpu_z_fail", "gpu"),
                          [](const ::testing::TestParamInfo<const char*>& info) { return std::string(info.param); });

@@ -59,7 +59,18 @@ TEST(PluginSettings, KeysAreTheLightKeysThenThePluginWideOnes) {
     for (const shadowmap::SettingKey& key : shadowmap::settingKeys()) expected.push_back(key.name);
     expected.push_back("cache_maps");
     expected.push_back("volume_extrusion");
+    expected.push_back("volume_counting");
     EXPECT_EQ(shadowmap::pluginSettingKeys(), expected);
+}
+
+TEST(PluginSettings, VolumeCountingIsAutoUnlessZFailIsAsked) {
+    EXPECT_TRUE(shadowmap::parsePluginSettings(nlohmann::json::object(), "engine.json").volumesZPass);
+    EXPECT_TRUE(shadowmap::parsePluginSettings({{"volume_counting", "auto"}}, "engine.json").volumesZPass);
+    const shadowmap::PluginSettings zFail = shadowmap::parsePluginSettings({{"volume_counting", "z-fail"}}, "engine.json");
+    EXPECT_FALSE(zFail.volumesZPass);
+    EXPECT_EQ(zFail.lightDefaults, shadowmap::ShadowSettings{});
+    EXPECT_EQ(parseError({{"volume_counting", "z-pass"}}),
+              "engine.json: settings.volume_counting: unknown value \"z-pass\" (known: auto, z-fail)");
 }
 
 TEST(PluginSettings, VolumeExtrusionIsCpuUnlessGpuIsAsked) {

@@ -33,6 +33,7 @@ namespace {
 using shadowmap::ShadowVolumeBound;
 using shadowmap::ShadowVolumeCounts;
 using shadowmap::ShadowVolumeMesh;
+using shadowmap::VolumeCaps;
 
 struct Mesh {
     std::vector<glm::vec3> positions;
@@ -506,6 +507,32 @@ TEST(ShadowVolumeMeshTest, CubeCountsFromDiagonalAndAbove) {
         EXPECT_EQ(counts.capTriangles, c.caps);
         EXPECT_EQ(out.size(), 1 + emittedVertices(counts, c.light.w == 0.0));
         EXPECT_EQ(out[0], glm::vec4(7.0f));
+    }
+}
+
+// For z-pass a closed mesh's volume is its side quads alone: the same quads, vertex for vertex,
+// as with caps, and no cap. An open sheet (summed per-triangle volumes) keeps its caps: it can
+// be seen through from behind, so its caps may lie in front of a surface.
+TEST(ShadowVolumeMeshTest, CapsLeftOutOnlyForClosedMeshes) {
+    const ShadowVolumeMesh cube = build(splitCube(glm::vec3(0.0f), 1.0f));
+    const ShadowVolumeMesh sheet = build(quadSheet());
+    for (const glm::dvec4& light : {pointLight(5, 5, 5), towardLight(1, 1, 1), pointLight(0, 0, 10)}) {
+        std::vector<glm::vec4> withCaps, without;
+        const ShadowVolumeCounts full = cube.appendVolume(light, glm::dmat4(1.0), withCaps);
+        const ShadowVolumeCounts sides = cube.appendVolume(light, glm::dmat4(1.0), without, {}, VolumeCaps::LeftOutIfClosed);
+        EXPECT_EQ(sides.capTriangles, 0u);
+        EXPECT_EQ(sides.silhouetteEdges, full.silhouetteEdges);
+        ASSERT_EQ(without.size(), withCaps.size() - 3 * full.capTriangles);
+        // The caps come first in the output, the quads after them.
+        EXPECT_TRUE(std::equal(without.begin(), without.end(), withCaps.end() - without.size()));
+
+        std::vector<glm::vec4> sheetWith, sheetWithout;
+        const ShadowVolumeCounts sheetFull = sheet.appendVolume(light, glm::dmat4(1.0), sheetWith);
+        const ShadowVolumeCounts sheetKept =
+            sheet.appendVolume(light, glm::dmat4(1.0), sheetWithout, {}, VolumeCaps::LeftOutIfClosed);
+        EXPECT_GT(sheetFull.capTriangles, 0u);
+        EXPECT_EQ(sheetKept.capTriangles, sheetFull.capTriangles);
+        EXPECT_EQ(sheetWithout, sheetWith);
     }
 }
 
