@@ -5,12 +5,32 @@
 #include "engine/util/Error.h"
 #include "engine/util/JsonRead.h"
 
+#include <algorithm>
+#include <optional>
+
 namespace shadowmap {
 
 namespace {
 
 // The object the messages name, as the engine config nests it: plugins[...].settings.
 constexpr char kObject[] = "settings";
+
+// A plugin-wide key whose value is one of `known` words: the word, taken out of the light
+// defaults, or nullopt when the key is absent.
+std::optional<std::string> readChoice(const nlohmann::json& json, const char* key,
+                                      const std::vector<std::string>& known, const std::string& source,
+                                      nlohmann::json& lightDefaults) {
+    if (!json.contains(key)) return std::nullopt;
+    const std::string object = std::string(kObject) + "." + key;
+    const std::string word = engine::json::readString(json[key], source, object);
+    if (std::find(known.begin(), known.end(), word) == known.end()) {
+        std::string list;
+        for (const std::string& k : known) list += (list.empty() ? "" : ", ") + k;
+        engine::throwInputError(source, object, "unknown value \"" + word + "\" (known: " + list + ")");
+    }
+    lightDefaults.erase(key);
+    return word;
+}
 
 } // namespace
 
@@ -33,22 +53,10 @@ PluginSettings parsePluginSettings(const nlohmann::json& json, const std::string
             engine::json::readBool(json[kCacheMapsKey], source, std::string(kObject) + "." + kCacheMapsKey);
         lightDefaults.erase(kCacheMapsKey);
     }
-    if (json.contains(kVolumeExtrusionKey)) {
-        const std::string object = std::string(kObject) + "." + kVolumeExtrusionKey;
-        const std::string where = engine::json::readString(json[kVolumeExtrusionKey], source, object);
-        if (where != "cpu" && where != "gpu")
-            engine::throwInputError(source, object, "unknown value \"" + where + "\" (known: cpu, gpu)");
-        settings.volumesOnGpu = where == "gpu";
-        lightDefaults.erase(kVolumeExtrusionKey);
-    }
-    if (json.contains(kVolumeCountingKey)) {
-        const std::string object = std::string(kObject) + "." + kVolumeCountingKey;
-        const std::string how = engine::json::readString(json[kVolumeCountingKey], source, object);
-        if (how != "auto" && how != "z-fail")
-            engine::throwInputError(source, object, "unknown value \"" + how + "\" (known: auto, z-fail)");
-        settings.volumesZPass = how == "auto";
-        lightDefaults.erase(kVolumeCountingKey);
-    }
+    if (const auto where = readChoice(json, kVolumeExtrusionKey, {"cpu", "gpu"}, source, lightDefaults))
+        settings.volumesOnGpu = *where == "gpu";
+    if (const auto how = readChoice(json, kVolumeCountingKey, {"auto", "z-fail"}, source, lightDefaults))
+        settings.volumesZPass = *how == "auto";
     applySettings(settings.lightDefaults, lightDefaults, source, kObject);
     return settings;
 }
