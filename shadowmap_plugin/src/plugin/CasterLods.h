@@ -21,8 +21,12 @@ public:
     // alone) and uploads the levels. Needs a GL context.
     explicit CasterLods(const engine::Scene& scene);
 
-    // The errors of the mesh's levels 1.. (object units, ascending); empty: it has none.
-    const std::vector<double>& errors(int mesh) const { return meshes_.at(mesh).errors; }
+    // The errors of the mesh's levels 1.. (object units, ascending); empty: it has none (or
+    // it is not a mesh these levels were made for: one an edit added since).
+    const std::vector<double>& errors(int mesh) const {
+        static const std::vector<double> none;
+        return mesh >= 0 && static_cast<std::size_t>(mesh) < meshes_.size() ? meshes_[mesh].errors : none;
+    }
 
     // Draws `level` (0: as loaded) of the mesh's drawn primitive `primitive` (its index in
     // SceneGpu::primitives: the mesh's primitives that have triangles, in order) with that
