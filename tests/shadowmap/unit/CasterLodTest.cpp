@@ -17,6 +17,17 @@ namespace {
 
 using shadowmap::SurfaceTriangle;
 
+// One primitive as a mesh: normals up (the simplifier reads positions only), bounds, closedness.
+engine::Mesh meshOf(engine::Primitive primitive) {
+    primitive.normals.assign(primitive.positions.size(), glm::vec3(0.0f, 1.0f, 0.0f));
+    for (const glm::vec3& p : primitive.positions) primitive.bounds.extend(glm::dvec3(p));
+    engine::Mesh mesh;
+    mesh.bounds = primitive.bounds;
+    mesh.primitives.push_back(std::move(primitive));
+    mesh.closed = engine::isClosedSurface(mesh);
+    return mesh;
+}
+
 // A torus (ring radius R, tube radius r) of segments x sides quads, split as glTF exporters
 // split it: the last ring of vertices repeats the first (a UV seam) with its own UVs, so it
 // is closed only once welded by position. Bumps make the simplifier's error vary.
@@ -36,13 +47,7 @@ engine::Mesh torusMesh(int segments, int sides, double bumps) {
         for (int j = 0; j < sides; ++j)
             for (const std::uint32_t index : {at(i, j), at(i, j + 1), at(i + 1, j), at(i + 1, j), at(i, j + 1), at(i + 1, j + 1)})
                 primitive.indices.push_back(index);
-    primitive.normals.assign(primitive.positions.size(), glm::vec3(0.0f, 1.0f, 0.0f));
-    for (const glm::vec3& p : primitive.positions) primitive.bounds.extend(glm::dvec3(p));
-    engine::Mesh mesh;
-    mesh.bounds = primitive.bounds;
-    mesh.primitives.push_back(std::move(primitive));
-    mesh.closed = engine::isClosedSurface(mesh);
-    return mesh;
+    return meshOf(std::move(primitive));
 }
 
 // A wavy open sheet: its border must survive (locked).
@@ -58,13 +63,7 @@ engine::Mesh sheetMesh(int n) {
             const std::uint32_t a = i * (n + 1) + j, b = a + 1, c = a + n + 1, d = c + 1;
             for (const std::uint32_t index : {a, b, c, c, b, d}) primitive.indices.push_back(index);
         }
-    primitive.normals.assign(primitive.positions.size(), glm::vec3(0.0f, 1.0f, 0.0f));
-    for (const glm::vec3& p : primitive.positions) primitive.bounds.extend(glm::dvec3(p));
-    engine::Mesh mesh;
-    mesh.bounds = primitive.bounds;
-    mesh.primitives.push_back(std::move(primitive));
-    mesh.closed = engine::isClosedSurface(mesh);
-    return mesh;
+    return meshOf(std::move(primitive));
 }
 
 // `count` points uniform by area on the surface.
