@@ -217,6 +217,35 @@ class GltfBuilder:
             {"name": name, "samplers": [{"input": inputs, "output": outputs, "interpolation": "LINEAR"}],
              "channels": [{"sampler": 0, "target": {"node": node, "path": "rotation"}}]})
 
+    def animation(self, name, channels):
+        """One animation of LINEAR channels, each (node, path, times, values): path "translation"
+        (values (x, y, z)) or "rotation" (values (x, y, z, w)). Channels sharing the same times
+        share one input accessor."""
+        samplers, targets, inputs = [], [], {}
+        for node, path, times, values in channels:
+            key = tuple(times)
+            if key not in inputs:
+                inputs[key] = self._raw_accessor("f", list(times), len(times), "SCALAR", 5126)
+                self.doc["accessors"][inputs[key]].update({"min": [min(times)], "max": [max(times)]})
+            kind = {"translation": "VEC3", "rotation": "VEC4"}[path]
+            outputs = self._raw_accessor("f", [c for v in values for c in v], len(values), kind, 5126)
+            samplers.append({"input": inputs[key], "output": outputs, "interpolation": "LINEAR"})
+            targets.append({"sampler": len(samplers) - 1, "target": {"node": node, "path": path}})
+        self.doc.setdefault("animations", []).append({"name": name, "samplers": samplers, "channels": targets})
+        return len(self.doc["animations"]) - 1
+
+    def translation_animation(self, name, node, times, translations):
+        """A LINEAR animation of `node`'s translation through `translations` (x, y, z) at `times`."""
+        return self.animation(name, [(node, "translation", times, translations)])
+
+    def parent(self, parent, children):
+        """Makes nodes `children` (made by node(), light(), camera()...: scene roots) children of
+        node `parent`: their transforms become relative to it, and they leave the scene's roots."""
+        roots = self.doc["scenes"][0]["nodes"]
+        for child in children:
+            roots.remove(child)
+        self.doc["nodes"][parent].setdefault("children", []).extend(children)
+
     def texture(self, name, png, sampler):
         """A texture of one PNG (bytes, embedded as a data URI) with a sampler (dict with
         magFilter, minFilter, wrapS, wrapT). Returns the texture's index."""
