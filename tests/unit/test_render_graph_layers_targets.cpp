@@ -109,6 +109,23 @@ TEST_F(LayersTest, AWholeWriteDropsTheFacesBeforeItAFaceWriteKeepsTheWholeBefore
     EXPECT_EQ(graph.reports().front().cullReason, "no surviving pass reads 'cube'");
 }
 
+TEST_F(LayersTest, PartWritesKeepTheVersionsBeforeThemAWholeWriteDropsThem) {
+    // A shadow atlas: each pass renders its own rectangle, so a reader of the last version
+    // needs every part written before it, back to the last whole write.
+    graph.markOutput(color);
+    auto addPart = [&](const std::string& name) {
+        graph.addPass(name, [&](PassBuilder& b) { cube = b.writePart(cube); },
+                      [this, name](PassContext&) { log.push_back("run " + name); });
+    };
+    addPart("early");
+    graph.addPass("whole", [&](PassBuilder& b) { cube = b.write(cube); }, [&](PassContext&) { log.push_back("run whole"); });
+    for (const char* name : {"a", "b", "c"}) addPart(name);
+    addReader();
+    graph.execute(allocator);
+    EXPECT_EQ(log, (std::vector<std::string>{"run whole", "run a", "run b", "run c", "run lit"}));
+    EXPECT_EQ(graph.reports().front().cullReason, "no surviving pass reads 'cube'");
+}
+
 TEST_F(LayersTest, ALayerOutsideTheTextureIsRejected) {
     expectGraphError([&] { graph.addPass("seventh", [&](PassBuilder& b) { (void)b.write(cube, 6); }, {}); },
                      {"'seventh'", "layer 6 of 'cube'", "6 layers"});

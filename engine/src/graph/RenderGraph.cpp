@@ -149,6 +149,12 @@ ResourceHandle PassBuilder::read(ResourceHandle handle) {
 
 ResourceHandle PassBuilder::write(ResourceHandle handle) { return write(handle, -1); }
 
+ResourceHandle PassBuilder::writePart(ResourceHandle handle) {
+    const ResourceHandle written = write(handle, -1);
+    graph_.resources_[written.index].versions.back().partial = true;
+    return written;
+}
+
 ResourceHandle PassBuilder::write(ResourceHandle handle, int layer) {
     const auto& resource = graph_.resourceAt(handle, pass_);
     auto& pass = graph_.passes_[pass_];

@@ -12,7 +12,7 @@ std::string quoted(const std::string& name) { return "'" + name + "'"; }
 
 // ---- Culling ----------------------------------------------------------------------------
 // Passes and resource versions form one bipartite graph (pass -> version it writes, version
-// -> pass that reads it, version -> the layer write that keeps its other layers). A node's
+// -> pass that reads it, version -> the layer or part write that keeps the rest of it). A node's
 // reference count is its out-degree, plus one for side-effect passes and the latest version
 // of an output. Nodes at zero are unused: popping one releases a reference on every node
 // feeding it, which may drop to zero in turn. Whatever stays above zero survives.
@@ -34,7 +34,7 @@ std::vector<bool> RenderGraph::cull() {
         const std::vector<Version>& versions = resources_[r].versions;
         if (resources_[r].output) ++refs[firstNode[r] + static_cast<int>(versions.size()) - 1];
         for (std::size_t v = 1; v < versions.size(); ++v)
-            if (!versions[v].layers.empty()) ++refs[firstNode[r] + static_cast<int>(v) - 1];
+            if (versions[v].keepsPrevious()) ++refs[firstNode[r] + static_cast<int>(v) - 1];
     }
 
     std::vector<int> unused;
@@ -55,7 +55,7 @@ std::vector<bool> RenderGraph::cull() {
         const int v = node - firstNode[r];
         const Version& version = resources_[r].versions[v];
         if (version.writer >= 0) release(version.writer);
-        if (!version.layers.empty()) release(node - 1);
+        if (version.keepsPrevious()) release(node - 1);
     }
     std::vector<bool> culled(passCount);
     for (int p = 0; p < passCount; ++p) culled[p] = refs[p] == 0;

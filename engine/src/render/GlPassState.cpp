@@ -32,8 +32,9 @@ void applyPassState(const PassState& state) {
 
     setEnabled(GL_FRAMEBUFFER_SRGB, state.srgbWrites);
     glDisable(GL_BLEND);
-    glDisable(GL_SCISSOR_TEST);
-    glViewport(0, 0, state.viewportWidth, state.viewportHeight);
+    setEnabled(GL_SCISSOR_TEST, state.scissorToViewport);
+    if (state.scissorToViewport) glScissor(state.viewportX, state.viewportY, state.viewportWidth, state.viewportHeight);
+    glViewport(state.viewportX, state.viewportY, state.viewportWidth, state.viewportHeight);
 }
 
 } // namespace engine

@@ -25,6 +25,10 @@ struct PassState {
     bool srgbWrites = false;  // GL_FRAMEBUFFER_SRGB: linear colour encoded on write
     // 0: the size of the first texture the pass writes.
     int viewportWidth = 0, viewportHeight = 0;
+    int viewportX = 0, viewportY = 0;  // the viewport's lower left corner
+    // Clears and draws stay inside the viewport (the scissor test on it): a pass that
+    // renders one rectangle of a shared texture (PassBuilder::writePart) clears only that.
+    bool scissorToViewport = false;
 
     bool operator==(const PassState&) const = default;
 };

@@ -68,6 +68,10 @@ public:
     [[nodiscard]] ResourceHandle write(ResourceHandle resource);
     // Writes one layer (array layer or cube face); the other layers keep their contents.
     [[nodiscard]] ResourceHandle write(ResourceHandle resource, int layer);
+    // Writes part of the texture (a viewport's rectangle, PassState::scissorToViewport): the
+    // rest keeps its contents, so the version before lives as long as this one is needed (a
+    // shadow atlas's maps, each rendered by its own pass).
+    [[nodiscard]] ResourceHandle writePart(ResourceHandle resource);
     void sideEffect();  // never culled (e.g. a readback)
     // The state the pass's draws start from (PassState.h); PassState{} when not declared.
     void setState(const PassState& state);
@@ -168,6 +172,9 @@ private:
     struct Version {
         int writer = -1;            // the pass that made it; -1: an import as it comes in
         std::vector<int> layers{};  // the layers written; empty: the whole texture
+        bool partial = false;       // writePart: a rectangle, the rest kept
+        // Whether the version before still shows in this one.
+        bool keepsPrevious() const { return partial || !layers.empty(); }
     };
     struct Resource {
         std::string name;
