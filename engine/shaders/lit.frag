@@ -20,6 +20,9 @@
 // Then it appends the hook and, with at least one light, loadShades() (ShadeCache.h),
 // which takes each light's shade from the hook or from the shade cache, with constant
 // slots too, before the terms are summed.
+// The clustered lit pass (CLUSTERED_LIGHTS, engine/render/LightTiles.h) instead loops over
+// the lights of the pixel's screen tile, reading them from storage buffers, and asks the
+// hook for each light's shade as it reaches it (LIGHT_COUNT is 0 there: nothing unrolled).
 const int LIGHT_DIRECTIONAL = 0;
 const int LIGHT_SPOT = 1;
 const int LIGHT_POINT = 2;
@@ -27,20 +30,37 @@ const float PI = 3.14159265358979;
 
 struct LightData {
     vec4 positionRange;   // eye space position; w = range (0 = infinite)
-    vec4 direction;       // eye space direction the light shines along; w unused
+    vec4 direction;       // eye space direction the light shines along; w: clustered, the type
     vec4 radiance;        // linear color * intensity
-    vec4 cone;            // x = cos(outer), y = cos(inner)
+    vec4 cone;            // x = cos(outer), y = cos(inner); z: clustered, the dimming
 };
+#ifdef CLUSTERED_LIGHTS
+// The clustered lit pass (engine/render/LightTiles.h): every light, and per screen tile of
+// LIGHT_TILE_SIZE pixels (row by row from the bottom) the range of its list of light slots.
+layout(std430, binding = CLUSTERED_LIGHTS_BINDING) readonly buffer Lights {
+    LightData uLights[];
+};
+layout(std430, binding = LIGHT_TILE_RANGES_BINDING) readonly buffer LightTileRanges {
+    uvec2 uTileRanges[];  // first, count
+};
+layout(std430, binding = TILE_LIGHTS_BINDING) readonly buffer TileLights {
+    uint uTileLights[];
+};
+uniform int uTileColumns;
+#define LIGHT_DIMMING(slot) uLights[slot].cone.z
+#else
 layout(std140, binding = LIGHTS_BLOCK_BINDING) uniform Lights {
     LightData uLights[MAX_LIGHTS];
 };
+uniform float uLightDimming[MAX_LIGHTS];  // the visibility hook's d per light
+#define LIGHT_DIMMING(slot) uLightDimming[slot]
+#endif
 uniform vec3 uAmbient;
 #ifdef EXPOSURE
 // Only when not 1: the multiply cost llvmpipe 3 % of the showcase's unshadowed frame (1280x720,
 // alternating runs: 10.3-10.6 ms without it, 10.7-10.9 with it).
 uniform float uExposure;
 #endif
-uniform float uLightDimming[MAX_LIGHTS];  // the visibility hook's d per light
 
 // The base color (factor, vertex color, texture), the alpha test and the surface
 // (metalness, roughness, normal map, occlusion, emission: material_surface.glsl) come from
@@ -123,7 +143,7 @@ vec3 lightContribution(int slot, int type, float shade, vec3 N, vec3 V, float Nd
     vec3 F = f0 + (1.0 - f0) * (oneMinusVdotH2 * oneMinusVdotH2 * oneMinusVdotH);
     vec3 diffuse = (1.0 - F) * diffuseColor / PI * radiance;
     vec3 specular = F * (D * visibility) * radiance;
-    float dimming = uLightDimming[slot];
+    float dimming = LIGHT_DIMMING(slot);
     // d + (1 - d) * shade, written so that a constant shade of 1 (no shadows) folds away at
     // compile time whatever d is.
     float diffuseShade = 1.0 - (1.0 - dimming) * (1.0 - shade);
@@ -187,7 +207,18 @@ void main() {
     float NdotV = max(dot(shadingNormal, V), 1e-4);
 
     vec3 color = materialEmissive() + materialOccludedAmbient(uAmbient * albedo.rgb);
-#if LIGHT_COUNT > 0
+#if defined(CLUSTERED_LIGHTS)
+    // The lights of this pixel's tile, each shaded where the loop reaches it: a tile's list
+    // is the same for its whole 16x16 block, so neighbouring lanes mostly take the same path.
+    ivec2 tile = ivec2(gl_FragCoord.xy) / LIGHT_TILE_SIZE;
+    uvec2 range = uTileRanges[tile.y * uTileColumns + tile.x];
+    for (uint i = 0u; i < range.y; ++i) {
+        int slot = int(uTileLights[range.x + i]);
+        float shade = shadeOf(slot, vEyePosition, N);
+        color += lightContribution(slot, int(uLights[slot].direction.w), shade, shadingNormal, V, NdotV, diffuseColor,
+                                   f0, alpha);
+    }
+#elif LIGHT_COUNT > 0
     // Every light's shade first, outside the terms' branches: llvmpipe runs lookups in
     // divergent branches far slower (measured, three shadowed lights at 1280x720: lit
     // pass 50 -> 21 ms), and implicit-LOD sampling belongs in uniform control flow anyway.

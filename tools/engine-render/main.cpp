@@ -39,7 +39,7 @@ namespace {
 // The light instance a command-line word means. A name that several instances share (one
 // light placed by two nodes, or a repeated name) is refused with their numbers, unless the
 // option applies to all of them (`sharedNameSelectsAll`: --light sets every such instance).
-int lightSlot(const engine::Scene& scene, const std::string& sceneFile, const std::string& name,
+int lightSlot(const engine::Scene& scene, const std::string& sceneFile, int renderedLights, const std::string& name,
               bool sharedNameSelectsAll = false) {
     const int slot = engine::findLightInstanceByNameOrNumber(scene, name);
     if (slot < 0)
@@ -55,10 +55,9 @@ int lightSlot(const engine::Scene& scene, const std::string& sceneFile, const st
         engine::throwInputError(sceneFile, "light \"" + name + "\"",
                                 "names " + std::to_string(shared) + " light instances (numbers " + sharing +
                                     "): choose one by its number (--list)");
-    if (slot >= engine::kMaxLights)
+    if (slot >= renderedLights)
         engine::throwInputError(sceneFile, "light \"" + name + "\"",
-                                "only the first " + std::to_string(engine::kMaxLights) +
-                                    " lights are rendered");
+                                "only the first " + std::to_string(renderedLights) + " lights are rendered");
     return slot;
 }
 
@@ -309,6 +308,7 @@ int run(const RenderOptions& options, std::unique_ptr<engine::GlContext>& contex
     tools::applySettingOverrides(config, options.pluginSettings);
     if (options.exposureEv100) config.renderer.exposure = engine::exposureFromEv100(*options.exposureEv100);
     if (options.msaa) config.renderer.msaa = *options.msaa;
+    const int renderedLights = engine::renderedLightCount(config.renderer.clusteredLights, scene.lightInstances.size());
     context = engine::createEglContext();
     context->makeCurrent();
 
@@ -318,7 +318,7 @@ int run(const RenderOptions& options, std::unique_ptr<engine::GlContext>& contex
     // name sets every instance of it.
     const std::vector<tools::LightOverride> lightSettings =
         tools::resolveLightOverrides(options.lightSettings, [&](const std::string& light) {
-            return engine::lightInstanceName(scene, lightSlot(scene, options.scene, light, true));
+            return engine::lightInstanceName(scene, lightSlot(scene, options.scene, renderedLights, light, true));
         });
     // A light's intensity and color are the scene's (the lit pass reads them), the rest the plugins'.
     std::vector<std::string> propertyWarnings;
@@ -338,7 +338,7 @@ int run(const RenderOptions& options, std::unique_ptr<engine::GlContext>& contex
         if (playback.animations.empty()) std::cerr << "warning: --time: " << options.scene << " has no animations\n";
         tools::poseScene(scene, playback, playback.secondsAtFrame(0));
     }
-    const int orbitingSlot = options.orbitLight.empty() ? -1 : lightSlot(scene, options.scene, options.orbitLight);
+    const int orbitingSlot = options.orbitLight.empty() ? -1 : lightSlot(scene, options.scene, renderedLights, options.orbitLight);
     const int orbitingLight = orbitingSlot < 0 ? -1 : scene.lightInstances[orbitingSlot].node;
     const glm::dvec3 orbitCenter = scene.worldBounds.empty() ? glm::dvec3(0.0) : scene.worldBounds.center();
     constexpr double kOrbitStep = 0.034906585039886591;  // 2 degrees per frame: deterministic
@@ -359,19 +359,19 @@ int run(const RenderOptions& options, std::unique_ptr<engine::GlContext>& contex
     renderer.setScene(scene);
     request.timing = true;
     for (const auto& [light, file] : options.shadowMasks)
-        request.shadowMaskSlots.push_back(lightSlot(scene, options.scene, light));
+        request.shadowMaskSlots.push_back(lightSlot(scene, options.scene, renderedLights, light));
     for (const auto& [light, file] : options.comparisons)
-        request.comparisonSlots.push_back(lightSlot(scene, options.scene, light));
+        request.comparisonSlots.push_back(lightSlot(scene, options.scene, renderedLights, light));
 
     for (const auto& [light, file] : options.shadowMaps)
-        request.shadowMapSlots.push_back(lightSlot(scene, options.scene, light));
+        request.shadowMapSlots.push_back(lightSlot(scene, options.scene, renderedLights, light));
     // Resolved before rendering, so a bad name costs no frames.
     std::vector<int> truthMaskSlots;
     for (const auto& [light, file] : options.truthMasks)
-        truthMaskSlots.push_back(lightSlot(scene, options.scene, light));
+        truthMaskSlots.push_back(lightSlot(scene, options.scene, renderedLights, light));
     std::vector<int> texelDensitySlots;
     for (const auto& [light, file] : options.texelDensities)
-        texelDensitySlots.push_back(lightSlot(scene, options.scene, light));
+        texelDensitySlots.push_back(lightSlot(scene, options.scene, renderedLights, light));
 
     std::vector<double> frameMs;
     std::vector<std::string> order;

@@ -97,12 +97,14 @@ double stepLightSize(double size, engine::Light::Type type, bool grow) {
 ViewerState::ViewerState(engine::Scene& scene, nlohmann::json pluginDefaults)
     : scene_(scene), defaults_(std::move(pluginDefaults)) {
     if (!defaults_.is_object()) defaults_ = nlohmann::json::object();
-    for (std::size_t slot = 0; slot < scene.lightInstances.size() && slot < engine::kMaxLights; ++slot) {
+    // The lights the renderer shades with its lit pass chosen as by default ("auto").
+    const int rendered = engine::renderedLightCount(std::nullopt, scene.lightInstances.size());
+    for (int slot = 0; slot < rendered; ++slot) {
         const engine::LightInstance& placed = scene.lightInstances[slot];
         ViewedLight light;
         light.name = scene.lights[placed.light].name;
         if (light.name.empty()) light.name = scene.nodes[placed.node].name;
-        light.slot = static_cast<int>(slot);
+        light.slot = slot;
         light.light = placed.light;
         light.type = scene.lights[placed.light].type;
         lights_.push_back(light);

@@ -44,7 +44,7 @@ void readSwitch(const nlohmann::json& node, const char* key, const std::string& 
 
 RendererConfig parseRenderer(const nlohmann::json& node, const std::string& file) {
     json::requireKnownKeys(node,
-                           {"ambient", "clear_color", "exposure", "tone_mapping", "msaa", "shade_cache", "light_footprints", "unrolled_light_sum",
+                           {"ambient", "clear_color", "exposure", "tone_mapping", "msaa", "shade_cache", "light_footprints", "unrolled_light_sum", "clustered_lights",
                             "check_gl_errors"},
                            file, "renderer");
     RendererConfig renderer;
@@ -81,6 +81,7 @@ RendererConfig parseRenderer(const nlohmann::json& node, const std::string& file
                         "true needs renderer.msaa 1 (a multisampled image has no shade cache); set it to \"auto\" or false");
     readSwitch(node, "light_footprints", file, renderer.lightFootprints);
     readSwitch(node, "unrolled_light_sum", file, renderer.unrolledLightSum);
+    readSwitch(node, "clustered_lights", file, renderer.clusteredLights);
     if (node.contains("check_gl_errors"))
         renderer.checkGlErrors = json::readBool(node["check_gl_errors"], file, "renderer.check_gl_errors");
     return renderer;

@@ -76,7 +76,7 @@ Scene loadGltf(const std::filesystem::path& path, std::vector<std::string>* warn
     gltf::decodeDracoPrimitives(context, document, parsed.model);
     gltf::validateModel(context, parsed.model, lights.size());
     Scene scene = gltf::convertToScene(context, parsed, document, std::move(lights));
-    if (const std::string dropped = lightsPastTheLimit(scene, kMaxLights); !dropped.empty())
+    if (const std::string dropped = lightsPastTheLimit(scene, kMaxClusteredLights); !dropped.empty())
         context.warn("", dropped);
     return scene;
 }

@@ -106,6 +106,8 @@ void LitPass::setWarmingUp(bool warmingUp, const ExpectedMotion& motion) {
 
 const LightVisibilityHook* LitPass::hookFor(const Frame& frame, const ShadeCache::Plan& plan, LitOutput output) const {
     const auto& hook = frame.lightVisibility();
+    // The clustered pass has no per-light plan: every light it reaches is evaluated.
+    if (frame.clusteredLights()) return hook ? &*hook : nullptr;
     // A shaded image that takes every light's shade from the cache needs none of the hook's
     // code: leaving it out spares llvmpipe its interpolated inputs and uniforms (measured:
     // 16.8 -> 15.7 ms for the showcase at 1280x720, whose unshadowed frame takes 14.0).
@@ -299,17 +301,22 @@ void LitPass::drawInstance(const Frame& frame, int index, const glm::dmat4& view
 void LitPass::addPass(Frame& frame, const std::string& name, ResourceHandle target, LitOutput output,
                       int maskSlot) {
     const auto& hook = frame.lightVisibility();
+    // The clustered pass loops over its tiles' lights: nothing is unrolled, cached per pixel
+    // or split by footprints (the tiles are its footprints), and its programs are the same
+    // whichever lights a frame sees, so there is nothing to warm up for motion.
+    const bool clustered = frame.clusteredLights();
     const int lightCount =
-        std::min(static_cast<int>(frame.scene().lightInstances.size()), kMaxLights);
+        clustered ? 0 : std::min(static_cast<int>(frame.scene().lightInstances.size()), kMaxLights);
     // Only the shaded image uses the shade cache: the per-light views always ask the hook.
     if (output == LitOutput::Color) {
-        const bool cacheable = switches_.shadeCache && hook;
+        const bool cacheable = switches_.shadeCache && hook && !clustered;
         shadePlan_ = cacheable ? shadeCache_.plan(shadeViewKey(frame, sceneGeneration_), *hook, lightCount,
                                                   frame.camera().width, frame.camera().height)
                                : ShadeCache::uncached(lightCount);
     }
     const bool color = output == LitOutput::Color;
-    const std::string lights = lightDefines(frame.scene(), lightCount, switches_.unrolledLightSum);
+    const std::string lights =
+        clustered ? clusteredLightDefines() : lightDefines(frame.scene(), lightCount, switches_.unrolledLightSum);
     const std::vector<unsigned> variants = variantsInUse(frame.scene(), frame.gpu());
     // The shaded image may be split by light footprints, each region with a shade plan of its
     // own; the per-light views always ask the hook, everywhere.
@@ -322,8 +329,8 @@ void LitPass::addPass(Frame& frame, const std::string& name, ResourceHandle targ
         // programs are new anyway: a split whose regions would need new programs is left out
         // otherwise (measured on the lamps' orbit: 1.1-1.5 s frames, each compiling 6).
         const bool mayCompile = warmingUp_ || !compiledFor(frame, shadePlan_, output, lights, variants);
-        if (expectedMotion_.any()) addWarmUpPasses(frame, compileForMotion(frame, lights, variants));
-        if (switches_.lightFootprints) {
+        if (expectedMotion_.any() && !clustered) addWarmUpPasses(frame, compileForMotion(frame, lights, variants));
+        if (switches_.lightFootprints && !clustered) {
             FootprintSplit split = splitByLightFootprints(frame, shadePlan_);
             const bool ready = mayCompile || std::all_of(split.regions.begin(), split.regions.end(), [&](const auto& region) {
                                    return compiledFor(frame, region.second, output, lights, variants);
@@ -348,7 +355,7 @@ void LitPass::addPass(Frame& frame, const std::string& name, ResourceHandle targ
             region.programs[variant] = &programs_.programFor(regionHook, lights, output, loadShadesGlsl, variant);
     }
     const LightVisibilityHook* shading = evaluatesHook ? &*hook : nullptr;
-    const std::vector<float> dimming = lightDimming(frame);
+    const std::vector<float> dimming = clustered && hook ? hook->dimming : lightDimming(frame);
     // Setup runs inside addPass, after both callbacks were built: share the handles it
     // declares with the execute callback through one small heap object.
     struct Handles { ResourceHandle target, depth; };
@@ -394,8 +401,9 @@ void LitPass::addPass(Frame& frame, const std::string& name, ResourceHandle targ
             state.srgbWrites = color;
             builder.setState(state);
         },
-        [this, &frame, regions, output, maskSlot, shading, shadePlan, dimming](PassContext& context) {
-            if (output == LitOutput::Color) lights_.upload(frame.scene(), frame.camera());
+        [this, &frame, regions, output, maskSlot, shading, shadePlan, dimming, clustered](PassContext& context) {
+            if (clustered) uploadClusteredLights(frame, dimming, regions);
+            else if (output == LitOutput::Color) lights_.upload(frame.scene(), frame.camera());
             if (shadePlan && shadePlan->readArray) glBindTextureUnit(ShadeCache::kTextureUnit, shadePlan->readArray);
             for (const Region& region : regions)
                 for (const gl::Program* program : region.programs) {
@@ -411,6 +419,22 @@ void LitPass::addPass(Frame& frame, const std::string& name, ResourceHandle targ
             }
         });
     if (samples > 1) addResolvePass(frame, name + "_resolve", handles->target, target);
+}
+
+void LitPass::uploadClusteredLights(const Frame& frame, const std::vector<float>& dimming,
+                                    const std::vector<Region>& regions) {
+    const FrameCamera& camera = frame.camera();
+    const LightTiles tiles =
+        buildLightTiles(lightFootprints(frame.scene(), camera), camera.width, camera.height, kLightTileSize);
+    tileListEntries_ = static_cast<std::int64_t>(tiles.lights.size());
+    longestTileList_ = 0;
+    for (std::size_t tile = 0; tile + 1 < tiles.ranges.size(); tile += 2)
+        longestTileList_ = std::max<int>(longestTileList_, static_cast<int>(tiles.ranges[tile + 1]));
+    clusteredLights_.upload(frame.scene(), camera, dimming, tiles);
+    clusteredLights_.bind();
+    for (const Region& region : regions)
+        for (const gl::Program* program : region.programs)
+            if (program) program->set("uTileColumns", tiles.columns);
 }
 
 void LitPass::addResolvePass(Frame& frame, const std::string& name, ResourceHandle drawn, ResourceHandle target) {

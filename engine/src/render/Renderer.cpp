@@ -129,7 +129,8 @@ FrameResult Renderer::renderFrame(const FrameRequest& request) {
     // Skinned and morphed instances posed since the last frame (the scene is the caller's).
     gpu_->updateDeformed(*scene_);
     RenderGraph graph;
-    Frame frame(*scene_, *gpu_, graph, request.camera, frameIndex_++);
+    const bool clustered = usesClusteredLights(config_.clusteredLights, scene_->lightInstances.size());
+    Frame frame(*scene_, *gpu_, graph, request.camera, frameIndex_++, clustered);
     frame.setMapReadbackSlots(request.shadowMapSlots);
     const ResourceHandle color =
         graph.importTexture("scene_color", {width, height, kLitColorFormat}, color_.id());
@@ -212,6 +213,9 @@ FrameResult Renderer::renderFrame(const FrameRequest& request) {
     result.shadeCache = shadeCacheReport(litPass_->shadePlan());
     result.footprintLimitedLights = litPass_->footprintLimitedLights();
     result.shadingRegions = litPass_->shadingRegionCount();
+    result.clusteredLights = frame.clusteredLights();
+    result.tileListEntries = litPass_->tileListEntries();
+    result.longestTileList = litPass_->longestTileList();
     for (RenderPlugin* plugin : plugins_) result.pluginStats[plugin->name()] = plugin->frameStats();
     result.programsLinked = static_cast<int>(gl::Program::linkedCount() - linkedBefore);
     result.frameMs =

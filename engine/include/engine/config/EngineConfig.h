@@ -75,6 +75,12 @@ struct RendererConfig {
     // off: one loop over the lights with their types in a constant array. Unrolled is what
     // llvmpipe runs fastest (lit.frag's header has the numbers).
     std::optional<bool> unrolledLightSum;
+    // Shade with the clustered lit pass (Frame.h, kMaxClusteredLights): every light in one loop
+    // over the lights of the pixel's screen tile, shadows from one atlas. Unset ("auto"): for
+    // scenes with more lights than the unrolled pass takes (kMaxLights) only; true: always
+    // (to measure it against the unrolled pass); false: never (lights past kMaxLights are
+    // left out, with a warning).
+    std::optional<bool> clusteredLights;
     // glGetError after every pass, and a GlError naming the pass whose commands raised the
     // flag. GL reports errors late and anonymously, so without it a bad call shows up, if
     // ever, far from its cause. On by default in builds without NDEBUG (Debug); it costs a

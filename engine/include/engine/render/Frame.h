@@ -29,6 +29,33 @@ namespace gl { class Program; }
 // texture unit, of which llvmpipe has 32 (GL 4.5 guarantees 16), so more slots than units
 // would buy only unshadowed lights.
 constexpr int kMaxLights = 32;
+// A scene with more lights than kMaxLights (or a renderer told to: RendererConfig::
+// clusteredLights) is shaded by the clustered lit pass instead (LightTiles.h): every light in
+// storage buffers, the target cut into tiles of kLightTileSize pixels, each listing the lights
+// whose screen footprint touches it, and one loop per pixel over its tile's list; a visibility
+// hook then shades lights by a slot that is not a constant (Frame::clusteredLights). Why 4096:
+// the CPU builds the tile lists each frame, lights x covered tiles, and 4096 lights with
+// footprints of a few tiles stay under a millisecond of it; the shadow plugin's atlas holds
+// 4096 of its smallest maps (ShadowAtlas.h). Nothing on the GPU side is sized by it: the
+// buffers take the scene's count.
+constexpr int kMaxClusteredLights = 4096;
+constexpr int kLightTileSize = 16;
+// Whether a renderer whose RendererConfig::clusteredLights is `configured` shades a scene of
+// `lightCount` light instances with the clustered lit pass (unset: only past kMaxLights),
+// and how many of them it renders (the first ones; a loaded scene names the rest).
+inline bool usesClusteredLights(std::optional<bool> configured, std::size_t lightCount) {
+    return configured.value_or(lightCount > static_cast<std::size_t>(kMaxLights));
+}
+inline int renderedLightCount(std::optional<bool> configured, std::size_t lightCount) {
+    const int limit = usesClusteredLights(configured, lightCount) ? kMaxClusteredLights : kMaxLights;
+    return static_cast<int>(std::min<std::size_t>(lightCount, static_cast<std::size_t>(limit)));
+}
+// The clustered lit pass's storage buffers (lit.frag reads them by these bindings); a
+// visibility hook's storage buffers start after them.
+constexpr unsigned kClusteredLightsBinding = 0;
+constexpr unsigned kLightTileRangesBinding = 1;
+constexpr unsigned kTileLightsBinding = 2;
+constexpr unsigned kFirstPluginStorageBinding = 3;
 // Texture units 0..kFirstPluginTextureUnit-1 belong to the engine: the five material
 // textures (MaterialTextures.h) and the shade cache (ShadeCache.h).
 constexpr int kFirstPluginTextureUnit = 6;
@@ -89,14 +116,20 @@ struct LightVisibilityHook {
 class Frame {
 public:
     Frame(const Scene& scene, const SceneGpu& gpu, RenderGraph& graph, const FrameCamera& camera,
-          std::uint64_t index)
-        : scene_(scene), gpu_(gpu), graph_(graph), camera_(camera), index_(index) {}
+          std::uint64_t index, bool clusteredLights = false)
+        : scene_(scene), gpu_(gpu), graph_(graph), camera_(camera), index_(index), clusteredLights_(clusteredLights) {}
 
     const Scene& scene() const { return scene_; }
     const SceneGpu& gpu() const { return gpu_; }
     RenderGraph& graph() { return graph_; }
     const FrameCamera& camera() const { return camera_; }
     std::uint64_t index() const { return index_; }
+    // Whether this frame's lit pass is the clustered one (kMaxClusteredLights). Its hook's
+    // lightVisibility and lightDebugColor are then called with slots that are not constants,
+    // in a loop over a tile's lights (so the hook must index its data and textures
+    // uniformly: one texture for every light), the hook's vertex part is not used, and
+    // shadeKeys and constantShades are ignored (nothing is cached per pixel).
+    bool clusteredLights() const { return clusteredLights_; }
 
     // Only one plugin may shade lights; a second hook is a configuration error.
     void setLightVisibility(LightVisibilityHook hook);
@@ -120,6 +153,7 @@ private:
     RenderGraph& graph_;
     FrameCamera camera_;
     std::uint64_t index_;
+    bool clusteredLights_ = false;
     std::optional<LightVisibilityHook> visibility_;
     std::vector<ShadowView> shadowViews_;
     std::vector<int> mapReadbackSlots_;

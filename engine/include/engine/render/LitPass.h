@@ -53,6 +53,10 @@ public:
     // not split).
     const std::vector<int>& footprintLimitedLights() const { return footprintLimitedLights_; }
     int shadingRegionCount() const { return shadingRegionCount_; }
+    // The clustered lit pass's last tile lists (LightTiles.h): their entries over all tiles,
+    // and the longest list (0 when the pass was not clustered).
+    std::int64_t tileListEntries() const { return tileListEntries_; }
+    int longestTileList() const { return longestTileList_; }
     // A new scene: nothing cached is still right.
     void sceneChanged();
 
@@ -106,6 +110,10 @@ private:
     // moves. One pass per number of written layers.
     void addWarmUpPasses(Frame& frame, const std::vector<WarmUpDraw>& draws);
     void addWarmUpPass(Frame& frame, int writtenLayers, std::vector<WarmUpDraw> draws);
+    // The clustered pass's lights and tile lists for this frame, bound, with each region's
+    // programs told the tile columns.
+    void uploadClusteredLights(const Frame& frame, const std::vector<float>& dimming,
+                               const std::vector<Region>& regions);
     // One mesh instance's primitives with `programs`; `current` is the program in use.
     void drawInstance(const Frame& frame, int index, const glm::dmat4& view, const Variants& programs,
                       const gl::Program*& current, PassContext& context);
@@ -114,6 +122,9 @@ private:
     RendererSwitches switches_;
     LitPrograms programs_;
     LitLights lights_;
+    ClusteredLights clusteredLights_;
+    std::int64_t tileListEntries_ = 0;
+    int longestTileList_ = 0;
     int culledInstances_ = 0;
     ShadeCache shadeCache_;
     ShadeCache::Plan shadePlan_;  // of this frame's shaded image

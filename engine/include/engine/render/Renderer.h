@@ -71,6 +71,11 @@ struct FrameResult {
     // footprint, and the regions that split the lit pass into (1: not split).
     std::vector<int> footprintLimitedLights;
     int shadingRegions = 1;
+    // Whether the clustered lit pass shaded the image (Frame::clusteredLights), and then its
+    // tile lists' entries over all tiles and its longest list (LightTiles.h).
+    bool clusteredLights = false;
+    std::int64_t tileListEntries = 0;
+    int longestTileList = 0;
     // GL programs linked while rendering this frame (the lit pass's and the plugins'):
     // after warm-up, each is a frame that waited for the shader compiler.
     int programsLinked = 0;
