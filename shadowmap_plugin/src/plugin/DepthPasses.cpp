@@ -37,13 +37,14 @@ void addCounts(LightShadowFrame& plan, const DepthDrawCounts& counts) {
 
 void addDepthPasses(LightShadow& light, engine::Frame& frame, engine::ResourceHandle& map, DepthRenderer& renderer,
                     const std::vector<bool>& closedMeshes, const CasterLods* casterLods,
-                    std::vector<std::uint64_t>& levelDraws) {
+                    std::vector<std::uint64_t>& levelDraws, DepthPassStyle::Viewport atlasViewport) {
     const MapProjection& projection = *mapProjection(light.frame.kind);
     const DepthTechnique& technique = *depthTechnique(light.settings.variant);
     DepthPassStyle style;
     style.polygonOffset = light.settings.effectivePolygonOffset();
     style.reversedZ = light.settings.reversedZ;
     style.offsetClamp = offsetClamp(light, projection);
+    style.atlasViewport = atlasViewport;
     technique.adjustStyle(light, {frame.scene(), closedMeshes}, style);
     if (light.settings.casterLod > 0.0) {
         style.casterLods = casterLods;

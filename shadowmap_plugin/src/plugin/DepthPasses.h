@@ -19,6 +19,6 @@ namespace shadowmap {
 // levelDraws: where the passes add their draws per level when they run.
 void addDepthPasses(LightShadow& light, engine::Frame& frame, engine::ResourceHandle& map, DepthRenderer& renderer,
                     const std::vector<bool>& closedMeshes, const CasterLods* casterLods,
-                    std::vector<std::uint64_t>& levelDraws);
+                    std::vector<std::uint64_t>& levelDraws, DepthPassStyle::Viewport atlasViewport = {});
 
 } // namespace shadowmap

@@ -59,7 +59,7 @@ std::vector<LightShadow> resolveLights(const engine::Scene& scene, const ShadowS
     }
     std::vector<LightShadow> lights;
     for (std::size_t slot = 0; slot < scene.lightInstances.size(); ++slot) {
-        if (static_cast<int>(slot) == engine::kMaxLights) break;
+        if (static_cast<int>(slot) == engine::kMaxClusteredLights) break;
         const engine::LightInstance& placed = scene.lightInstances[slot];
         const engine::Light& light = scene.lights[placed.light];
         LightShadow shadow;

@@ -16,7 +16,7 @@ namespace shadowmap {
 
 using LightOptions = std::map<std::string, nlohmann::json>;  // light name -> {key: value}
 
-// One LightShadow per lit-pass light slot (at most engine::kMaxLights). `warn` hears what is
+// One LightShadow per lit-pass light slot (at most engine::kMaxClusteredLights). `warn` hears what is
 // set but not used.
 std::vector<LightShadow> resolveLights(const engine::Scene& scene, const ShadowSettings& defaults,
                                        const LightOptions& options, int maxTextureSize,

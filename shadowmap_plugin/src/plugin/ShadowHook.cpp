@@ -43,6 +43,7 @@ engine::LightVisibilityHook ShadowHook::build(const engine::Frame& frame, const 
     // functions and whether its comparison view has a texture unit.
     std::vector<HookGlsl::Lookup> lookups;
     for (const LightShadow& light : lights) {
+        if (light.slot >= engine::kMaxLights) break;  // past what the unrolled lit pass renders
         const LightShadowFrame& plan = light.frame;
         // Outside a spot light's frustum is outside its cone: never lit by it. Directional
         // frusta hold every visible receiver, so what lies outside has nothing to fear.

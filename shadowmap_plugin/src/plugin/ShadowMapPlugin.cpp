@@ -48,6 +48,7 @@ void ShadowMapPlugin::resolve(const engine::Scene& scene) {
 void ShadowMapPlugin::prepareScene(const engine::Scene& scene) {
     resolve(scene);
     ++sceneGeneration_;  // new geometry: no map is still right
+    atlas_.reset();
     volumes_.reset();      // its meshes' adjacency is the old scene's
     casterLods_.reset();   // the old scene's meshes
     cacheHits_ = cacheMisses_ = 0;
@@ -56,6 +57,7 @@ void ShadowMapPlugin::prepareScene(const engine::Scene& scene) {
 void ShadowMapPlugin::reloadSettings(const engine::Scene& scene) {
     std::vector<LightShadow> previous = std::move(lights_);
     resolve(scene);
+    atlas_.reset();
     // Keep each light's map: its cache key covers the settings, so a light whose settings
     // changed misses and re-renders, and the others keep hitting.
     for (LightShadow& light : lights_)
@@ -98,8 +100,23 @@ void ShadowMapPlugin::addPasses(engine::Frame& frame) {
         if (light.settings.casterLod > 0.0 && !casterLods_) casterLods_ = std::make_unique<CasterLods>(frame.scene());
     levelDraws_.assign(lights_.size(), {});
     const PlanContext context = planContext(frame.scene(), frame.camera());
+    const auto warn = [this](const LightShadow& light, const std::string& message) { warnOnce(light, message); };
+    if (frame.clusteredLights()) {
+        const engine::ResourceHandle atlas = atlas_.addPasses(frame, lights_, context, *depth_, closedMeshes_,
+                                                              casterLods_.get(), levelDraws_, sceneGeneration_,
+                                                              cacheMaps_, warn);
+        cacheHits_ += atlas_.counts().cached;
+        cacheMisses_ += atlas_.counts().rendered;
+        for (const LightShadow& light : lights_) {
+            for (const std::string& warning : light.frame.warnings) warnOnce(light, warning);
+            frame.publishShadowView(light.view());
+        }
+        frame.setLightVisibility(atlas_.hook(frame, lights_, atlas));
+        return;
+    }
     std::vector<engine::ResourceHandle> maps;
     for (LightShadow& light : lights_) {
+        if (light.slot >= engine::kMaxLights) break;  // the unrolled lit pass renders no more
         // Each shadowed light samples its map on unit kFirstPluginTextureUnit + slot.
         const bool shadowed =
             planLight(light, context, engine::kFirstPluginTextureUnit + light.slot, maxTextureUnits_);
@@ -139,7 +156,8 @@ void ShadowMapPlugin::addPasses(engine::Frame& frame) {
         for (const std::string& warning : light.frame.warnings) warnOnce(light, warning);
     }
     // Every light instance's view, shadowed or not (ShadowView.h): what the tools read.
-    for (const LightShadow& light : lights_) frame.publishShadowView(light.view());
+    for (const LightShadow& light : lights_)
+        if (light.slot < engine::kMaxLights) frame.publishShadowView(light.view());
     engine::LightVisibilityHook hook =
         hook_.build(frame, lights_, cacheMaps_, maxTextureUnits_,
                     [this](const LightShadow& light, const std::string& message) { warnOnce(light, message); });
@@ -165,6 +183,7 @@ nlohmann::json ShadowMapPlugin::frameStats() const {
     }
     nlohmann::json out = {{"lights", lights}, {"cache_hits", cacheHits_}, {kCacheMapsKey, cacheMaps_},
                           {"cache_misses", cacheMisses_}};
+    if (const nlohmann::json atlas = atlas_.stats(); !atlas.is_null()) out["atlas"] = atlas;
     if (casterLods_) out["caster_lod"] = {{"build_s", casterLods_->buildSeconds()}, {"meshes", casterLods_->stats()}};
     return out;
 }

@@ -5,6 +5,7 @@
 // lights' settings, asks the planner what each light needs this frame, keeps the maps, and
 // lets each light's techniques declare their passes and lookups.
 #include "plugin/CasterLods.h"
+#include "plugin/AtlasMaps.h"
 #include "plugin/DepthRenderer.h"
 #include "plugin/LightResolver.h"
 #include "plugin/LightShadow.h"
@@ -59,6 +60,7 @@ private:
     std::unique_ptr<VolumeRenderer> volumes_;  // created with the first frame with a volume light, per scene
     int maxTextureUnits_ = 16;                  // GL_MAX_TEXTURE_IMAGE_UNITS
     ShadowHook hook_;
+    AtlasMaps atlas_;  // the maps of frames the clustered lit pass shades
     std::set<std::string> warned_;              // warnings already printed
     std::string scenePath_;                     // the scene's file, for messages
     bool cacheMaps_ = true;

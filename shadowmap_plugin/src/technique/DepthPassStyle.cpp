@@ -19,6 +19,12 @@ engine::PassState depthPassState(const DepthPassStyle& style) {
         state.offsetUnits = offset.y;
         state.offsetClamp = offset.z;
     }
+    if (style.inAtlas()) {
+        state.viewportX = style.atlasViewport.x;
+        state.viewportY = style.atlasViewport.y;
+        state.viewportWidth = state.viewportHeight = style.atlasViewport.size;
+        state.scissorToViewport = true;
+    }
     return state;
 }
 

@@ -56,6 +56,14 @@ struct DepthPassStyle {
     const CasterLods* casterLods = nullptr;
     double lodTexelFraction = 0.0;
     int mapResolution = 0;
+    // A map in a shadow atlas (plugin/AtlasMaps.h): the pass renders, clears and writes only
+    // this square of the shared texture (x, y its lower corner, size texels per side);
+    // size 0: the whole target.
+    struct Viewport {
+        int x = 0, y = 0, size = 0;
+    };
+    Viewport atlasViewport;
+    bool inAtlas() const { return atlasViewport.size > 0; }
 };
 
 // The state a depth pass of this style declares (engine/graph/PassState.h): depth test and

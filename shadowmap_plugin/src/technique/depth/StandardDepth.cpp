@@ -9,7 +9,7 @@ void addSingleDepthPass(const LayerPasses& passes) {
     passes.added.push_back(passes.graph.addPass(
         passes.light.depthPass(layer),
         [&map, layer, style](engine::PassBuilder& builder) {  // setup runs inside addPass
-            map = builder.write(map, layer);
+            map = style.inAtlas() ? builder.writePart(map) : builder.write(map, layer);
             builder.setTargets(depthPassTargets(map, layer, style));
             builder.setState(depthPassState(style));
         },
