@@ -22,6 +22,7 @@
 # (build first: tools/build.sh). CONFIG=ENGINE.json runs every render with that engine config
 # (e.g. one with "renderer": {"clustered_lights": true} to time the clustered pass below 33 lamps).
 set -euo pipefail
+config=${CONFIG:+$(realpath "$CONFIG")}  # before the cd: a path relative to where it was typed
 cd "$(dirname "$0")/.."
 frames=${1:-60}
 shift || true
@@ -37,7 +38,7 @@ trap 'rm -rf "$out"' EXIT
 # $out/warnings (printed once per lamp count: with many lights each run repeats them); on
 # failure the report is shown and the bench stops.
 render() {
-  if ! "$render" ${CONFIG:+--config "$CONFIG"} "$@" > "$out/last.log" 2> "$out/last.err"; then
+  if ! "$render" ${config:+--config "$config"} "$@" > "$out/last.log" 2> "$out/last.err"; then
     cat "$out/last.log" "$out/last.err" >&2
     echo "bench-many-lights: engine-render $* failed" >&2
     exit 1
