@@ -35,23 +35,22 @@ struct LightData {
     vec4 cone;            // x = cos(outer), y = cos(inner); z: clustered, the dimming
 };
 #ifdef CLUSTERED_LIGHTS
-// The clustered lit pass (engine/render/LightTiles.h): every light, and per screen tile of
-// LIGHT_TILE_SIZE pixels (row by row from the bottom) the range of its list of light slots.
-layout(std430, binding = CLUSTERED_LIGHTS_BINDING) readonly buffer Lights {
-    LightData uLights[];
-};
-layout(std430, binding = LIGHT_TILE_RANGES_BINDING) readonly buffer LightTileRanges {
-    uvec2 uTileRanges[];  // first, count
-};
-layout(std430, binding = TILE_LIGHTS_BINDING) readonly buffer TileLights {
-    uint uTileLights[];
-};
-uniform int uTileColumns;
-#define LIGHT_DIMMING(slot) uLights[slot].cone.z
+// The clustered lit pass (engine/render/LightTiles.h): every light as four texels of a row,
+// and per screen tile of LIGHT_TILE_SIZE pixels the (first, count) of its list of light
+// slots, the lists TILE_LISTS_WIDTH to a row (textures: Frame.h says why).
+layout(binding = LIGHT_DATA_UNIT) uniform sampler2D uLightData;
+layout(binding = TILE_RANGES_UNIT) uniform usampler2D uTileRanges;
+layout(binding = TILE_LIGHTS_UNIT) uniform usampler2D uTileLights;
+LightData lightAt(int slot) {
+    return LightData(texelFetch(uLightData, ivec2(0, slot), 0), texelFetch(uLightData, ivec2(1, slot), 0),
+                     texelFetch(uLightData, ivec2(2, slot), 0), texelFetch(uLightData, ivec2(3, slot), 0));
+}
+#define LIGHT_DIMMING(slot) texelFetch(uLightData, ivec2(3, slot), 0).z
 #else
 layout(std140, binding = LIGHTS_BLOCK_BINDING) uniform Lights {
     LightData uLights[MAX_LIGHTS];
 };
+LightData lightAt(int slot) { return uLights[slot]; }
 uniform float uLightDimming[MAX_LIGHTS];  // the visibility hook's d per light
 #define LIGHT_DIMMING(slot) uLightDimming[slot]
 #endif
@@ -108,7 +107,7 @@ float rangeWindow(float distance, float range) {
 // directional one) and reads uniforms at constant indices.
 vec3 lightContribution(int slot, int type, float shade, vec3 N, vec3 V, float NdotV, vec3 diffuseColor,
                        vec3 f0, float alpha) {
-    LightData light = uLights[slot];
+    LightData light = lightAt(slot);
     vec3 L;
     float attenuation = 1.0;
     if (type == LIGHT_DIRECTIONAL) {
@@ -210,13 +209,13 @@ void main() {
 #if defined(CLUSTERED_LIGHTS)
     // The lights of this pixel's tile, each shaded where the loop reaches it: a tile's list
     // is the same for its whole 16x16 block, so neighbouring lanes mostly take the same path.
-    ivec2 tile = ivec2(gl_FragCoord.xy) / LIGHT_TILE_SIZE;
-    uvec2 range = uTileRanges[tile.y * uTileColumns + tile.x];
+    uvec2 range = texelFetch(uTileRanges, ivec2(gl_FragCoord.xy) / LIGHT_TILE_SIZE, 0).xy;
     for (uint i = 0u; i < range.y; ++i) {
-        int slot = int(uTileLights[range.x + i]);
+        uint entry = range.x + i;
+        int slot = int(texelFetch(uTileLights, ivec2(entry % uint(TILE_LISTS_WIDTH), entry / uint(TILE_LISTS_WIDTH)), 0).r);
         float shade = shadeOf(slot, vEyePosition, N);
-        color += lightContribution(slot, int(uLights[slot].direction.w), shade, shadingNormal, V, NdotV, diffuseColor,
-                                   f0, alpha);
+        color += lightContribution(slot, int(texelFetch(uLightData, ivec2(1, slot), 0).w), shade, shadingNormal, V, NdotV,
+                                   diffuseColor, f0, alpha);
     }
 #elif LIGHT_COUNT > 0
     // Every light's shade first, outside the terms' branches: llvmpipe runs lookups in

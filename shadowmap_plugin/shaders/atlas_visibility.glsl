@@ -1,8 +1,8 @@
 // The shadow plugin's visibility hook for the clustered lit pass (engine/render/Frame.h):
 // called with a light slot that is not a constant, so every light's map lives in one atlas
-// texture (plugin/AtlasMaps.h) and its parameters in one storage buffer, both indexed the
-// same way on every lane. ATLAS_LIGHTS_BINDING, ATLAS_UNIT and ATLAS_DEPTH_UNIT are defined
-// by the plugin (AtlasHook.cpp), from its constants.
+// texture (plugin/AtlasMaps.h) and its parameters in another, a row of eight texels per
+// light (a texture, not a storage buffer: engine/render/Frame.h says why). ATLAS_UNIT,
+// ATLAS_DEPTH_UNIT and ATLAS_LIGHTS_UNIT are defined by the plugin (AtlasMaps.cpp).
 //
 // The lookup is shadowMap2D's (visibility.glsl) with the hardware comparison, the
 // coordinates computed per pixel from the eye planes (no per-light interpolated inputs: a
@@ -17,9 +17,12 @@ struct AtlasLight {
     vec4 lightInEye;  // as shadow_data.glsl's lightInEye
     vec4 texel;       // xy: texelWidths.xy as shadow_data.glsl's; z: half an atlas texel; w: 1 = a map
 };
-layout(std430, binding = ATLAS_LIGHTS_BINDING) readonly buffer AtlasLights {
-    AtlasLight atlasLights[];
-};
+layout(binding = ATLAS_LIGHTS_UNIT) uniform sampler2D atlasLightData;
+AtlasLight atlasLightAt(int slot) {
+    vec4 row[8];
+    for (int i = 0; i < 8; ++i) row[i] = texelFetch(atlasLightData, ivec2(i, slot), 0);
+    return AtlasLight(mat4(row[0], row[1], row[2], row[3]), row[4], row[5], row[6], row[7]);
+}
 layout(binding = ATLAS_UNIT) uniform sampler2DShadow shadowAtlas;
 layout(binding = ATLAS_DEPTH_UNIT) uniform sampler2D shadowAtlasDepth;
 
@@ -42,7 +45,10 @@ vec2 atlasPoint(AtlasLight light, vec2 mapPoint) {
 }
 
 float lightVisibility(int lightSlot, vec3 eyePosition, vec3 eyeNormal) {
-    AtlasLight light = atlasLights[lightSlot];
+    // A light without a map: its one shade, before fetching the rest of its row.
+    if (texelFetch(atlasLightData, ivec2(7, lightSlot), 0).w < 0.5)
+        return texelFetch(atlasLightData, ivec2(5, lightSlot), 0).w;
+    AtlasLight light = atlasLightAt(lightSlot);
     vec4 coord = atlasShadowCoord(light, eyePosition, eyeNormal);
     vec3 p = coord.xyz / coord.w;
     bool reversed = light.params.x > 0.5;
@@ -51,12 +57,11 @@ float lightVisibility(int lightSlot, vec3 eyePosition, vec3 eyeNormal) {
     bool outside = any(lessThan(p.xy, vec2(0.0))) || any(greaterThan(p.xy, vec2(1.0)));
     shade = outside ? light.params.w : shade;
     shade = (reversed ? p.z > 1.0 : p.z < 0.0) ? 1.0 : shade;
-    shade = coord.w <= 0.0 ? 0.0 : shade;
-    return light.texel.w > 0.5 ? shade : light.params.w;
+    return coord.w <= 0.0 ? 0.0 : shade;
 }
 
 vec4 lightDebugColor(int lightSlot, vec3 eyePosition, vec3 eyeNormal) {
-    AtlasLight light = atlasLights[lightSlot];
+    AtlasLight light = atlasLightAt(lightSlot);
     vec4 coord = atlasShadowCoord(light, eyePosition, eyeNormal);
     vec3 p = coord.xyz / coord.w;
     if (light.texel.w < 0.5 || coord.w <= 0.0 || any(lessThan(p, vec3(0.0))) || any(greaterThan(p, vec3(1.0))))

@@ -489,6 +489,9 @@ int run(const RenderOptions& options, std::unique_ptr<engine::GlContext>& contex
     nlohmann::json stats = statsJson(options, frameMs, order, passes, mapTimes, last);
     stats["shade_cache"] = shadeCacheFrames;
     stats["programs_linked"] = programsLinked;
+    // The clustered lit pass's last tile lists (engine/render/LightTiles.h).
+    if (last.clusteredLights)
+        stats["light_tiles"] = {{"entries", last.tileListEntries}, {"longest", last.longestTileList}};
     const engine::RendererSwitches& switches = renderer.switches();
     stats["renderer_switches"] = {{"shade_cache", switches.shadeCache},
                                   {"light_footprints", switches.lightFootprints},

@@ -40,16 +40,18 @@ LightData eyeSpaceLight(const Scene& scene, const LightInstance& placed, const g
     return data;
 }
 
-// Uploads `bytes` into `buffer`, first replacing it by one of the next power of two of bytes
-// when it is smaller (a buffer's storage is immutable). An empty upload keeps a 16-byte
-// buffer, so every binding has storage.
-void uploadGrowing(gl::Buffer& buffer, const void* data, std::size_t bytes) {
-    if (buffer.size() < std::max<std::size_t>(bytes, 16)) {
-        std::size_t size = 16;
-        while (size < bytes) size *= 2;
-        buffer = gl::Buffer::create(size, nullptr, GL_DYNAMIC_STORAGE_BIT);
+// Makes `texture` a width x height (at least) texture of `format`, keeping it when it is
+// large enough, and uploads `rows` rows of `data` (width texels each) into its bottom.
+void uploadGrowing(gl::Texture& texture, GLenum internalFormat, GLenum format, GLenum type, int width, int height,
+                   const void* data, int rows) {
+    if (!texture.id() || texture.width() < width || texture.height() < height) {
+        int grownHeight = 1;
+        while (grownHeight < height) grownHeight *= 2;
+        texture = gl::Texture::create2D(internalFormat, std::max(width, 1), grownHeight);
+        texture.setParameter(GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        texture.setParameter(GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     }
-    if (bytes) buffer.update(0, bytes, data);
+    if (rows > 0 && width > 0) glTextureSubImage2D(texture.id(), 0, 0, 0, width, rows, format, type, data);
 }
 
 } // namespace
@@ -80,22 +82,30 @@ void ClusteredLights::upload(const Scene& scene, const FrameCamera& camera, cons
         data.cone.z = slot < dimming.size() ? dimming[slot] : 0.0f;
         lights.push_back(data);
     }
-    uploadGrowing(lights_, lights.data(), lights.size() * sizeof(LightData));
-    uploadGrowing(ranges_, tiles.ranges.data(), tiles.ranges.size() * sizeof(std::uint32_t));
-    uploadGrowing(lists_, tiles.lights.data(), tiles.lights.size() * sizeof(std::uint32_t));
+    const int lightCount = static_cast<int>(lights.size());
+    uploadGrowing(lights_, GL_RGBA32F, GL_RGBA, GL_FLOAT, 4, std::max(lightCount, 1), lights.data(), lightCount);
+    uploadGrowing(ranges_, GL_RG32UI, GL_RG_INTEGER, GL_UNSIGNED_INT, tiles.columns, tiles.rows, tiles.ranges.data(),
+                  tiles.rows);
+    // The lists fill whole rows: the last one is padded.
+    std::vector<std::uint32_t> lists = tiles.lights;
+    const int rows = static_cast<int>((lists.size() + kTileListsWidth - 1) / kTileListsWidth);
+    lists.resize(static_cast<std::size_t>(rows) * kTileListsWidth, 0);
+    uploadGrowing(lists_, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, kTileListsWidth, std::max(rows, 1), lists.data(),
+                  rows);
 }
 
 void ClusteredLights::bind() const {
-    lights_.bindBase(GL_SHADER_STORAGE_BUFFER, kClusteredLightsBinding);
-    ranges_.bindBase(GL_SHADER_STORAGE_BUFFER, kLightTileRangesBinding);
-    lists_.bindBase(GL_SHADER_STORAGE_BUFFER, kTileLightsBinding);
+    lights_.bind(kLightDataUnit);
+    ranges_.bind(kTileRangesUnit);
+    lists_.bind(kTileLightsUnit);
+    for (const int unit : {kLightDataUnit, kTileRangesUnit, kTileLightsUnit}) glBindSampler(unit, 0);
 }
 
 std::string clusteredLightDefines() {
-    return "#define LIGHT_COUNT 0\n#define CLUSTERED_LIGHTS\n#define CLUSTERED_LIGHTS_BINDING " +
-           std::to_string(kClusteredLightsBinding) + "\n#define LIGHT_TILE_RANGES_BINDING " +
-           std::to_string(kLightTileRangesBinding) + "\n#define TILE_LIGHTS_BINDING " +
-           std::to_string(kTileLightsBinding) + "\n#define LIGHT_TILE_SIZE " + std::to_string(kLightTileSize) + "\n";
+    return "#define LIGHT_COUNT 0\n#define CLUSTERED_LIGHTS\n#define LIGHT_DATA_UNIT " + std::to_string(kLightDataUnit) +
+           "\n#define TILE_RANGES_UNIT " + std::to_string(kTileRangesUnit) + "\n#define TILE_LIGHTS_UNIT " +
+           std::to_string(kTileLightsUnit) + "\n#define LIGHT_TILE_SIZE " + std::to_string(kLightTileSize) +
+           "\n#define TILE_LISTS_WIDTH " + std::to_string(kTileListsWidth) + "\n";
 }
 
 std::string lightDefines(const Scene& scene, int lightCount, bool unrolled) {

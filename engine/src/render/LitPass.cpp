@@ -402,7 +402,7 @@ void LitPass::addPass(Frame& frame, const std::string& name, ResourceHandle targ
             builder.setState(state);
         },
         [this, &frame, regions, output, maskSlot, shading, shadePlan, dimming, clustered](PassContext& context) {
-            if (clustered) uploadClusteredLights(frame, dimming, regions);
+            if (clustered) uploadClusteredLights(frame, dimming);
             else if (output == LitOutput::Color) lights_.upload(frame.scene(), frame.camera());
             if (shadePlan && shadePlan->readArray) glBindTextureUnit(ShadeCache::kTextureUnit, shadePlan->readArray);
             for (const Region& region : regions)
@@ -421,8 +421,7 @@ void LitPass::addPass(Frame& frame, const std::string& name, ResourceHandle targ
     if (samples > 1) addResolvePass(frame, name + "_resolve", handles->target, target);
 }
 
-void LitPass::uploadClusteredLights(const Frame& frame, const std::vector<float>& dimming,
-                                    const std::vector<Region>& regions) {
+void LitPass::uploadClusteredLights(const Frame& frame, const std::vector<float>& dimming) {
     const FrameCamera& camera = frame.camera();
     const LightTiles tiles =
         buildLightTiles(lightFootprints(frame.scene(), camera), camera.width, camera.height, kLightTileSize);
@@ -432,9 +431,6 @@ void LitPass::uploadClusteredLights(const Frame& frame, const std::vector<float>
         longestTileList_ = std::max<int>(longestTileList_, static_cast<int>(tiles.ranges[tile + 1]));
     clusteredLights_.upload(frame.scene(), camera, dimming, tiles);
     clusteredLights_.bind();
-    for (const Region& region : regions)
-        for (const gl::Program* program : region.programs)
-            if (program) program->set("uTileColumns", tiles.columns);
 }
 
 void LitPass::addResolvePass(Frame& frame, const std::string& name, ResourceHandle drawn, ResourceHandle target) {

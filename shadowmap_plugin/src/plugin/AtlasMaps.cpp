@@ -30,16 +30,16 @@ extern const char atlas_visibility_glsl[];
 
 namespace {
 
-// The atlas is read on the plugin's first texture unit (compared) and the next (raw depth,
-// for the comparison view); its lights' parameters on the plugin's first storage binding.
-constexpr int kAtlasUnit = engine::kFirstPluginTextureUnit;
-constexpr int kAtlasDepthUnit = engine::kFirstPluginTextureUnit + 1;
-constexpr unsigned kAtlasLightsBinding = engine::kFirstPluginStorageBinding;
+// The atlas is read on the clustered hook's first texture unit (compared) and the next (raw
+// depth, for the comparison view); its lights' parameters on the third.
+constexpr int kAtlasUnit = engine::kFirstClusteredPluginTextureUnit;
+constexpr int kAtlasDepthUnit = engine::kFirstClusteredPluginTextureUnit + 1;
+constexpr int kAtlasLightsUnit = engine::kFirstClusteredPluginTextureUnit + 2;
 // The atlas hook's code never changes: one version for it, far from the per-layout versions
 // the unrolled hook counts up from 1 (HookGlsl.h).
 constexpr std::uint64_t kAtlasGlslVersion = std::numeric_limits<std::uint64_t>::max();
 
-// atlas_visibility.glsl's AtlasLight, std430.
+// atlas_visibility.glsl's AtlasLight, as its row of eight RGBA32F texels.
 struct AtlasLight {
     glm::mat4 eyePlanes{0.0f};
     glm::vec4 rect{0.0f};
@@ -265,19 +265,24 @@ engine::LightVisibilityHook AtlasMaps::hook(const engine::Frame& frame, const st
                                 texelWidthPerDepthSquared(view, light.settings.resolution), 0.5f / size, 1.0f);
         hook.dimming[light.slot] = light.settings.dimming;
     }
-    if (lightsBuffer_.size() < std::max<std::size_t>(data.size() * sizeof(AtlasLight), 16)) {
-        std::size_t bytes = 16;
-        while (bytes < data.size() * sizeof(AtlasLight)) bytes *= 2;
-        lightsBuffer_ = engine::gl::Buffer::create(bytes, nullptr, GL_DYNAMIC_STORAGE_BIT);
+    const int rows = std::max(static_cast<int>(data.size()), 1);
+    if (!lightData_.id() || lightData_.height() < rows) {
+        int height = 1;
+        while (height < rows) height *= 2;
+        lightData_ = engine::gl::Texture::create2D(GL_RGBA32F, sizeof(AtlasLight) / sizeof(glm::vec4), height);
+        lightData_.setParameter(GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        lightData_.setParameter(GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     }
-    if (!data.empty()) lightsBuffer_.update(0, data.size() * sizeof(AtlasLight), data.data());
+    if (!data.empty())
+        glTextureSubImage2D(lightData_.id(), 0, 0, 0, sizeof(AtlasLight) / sizeof(glm::vec4),
+                            static_cast<int>(data.size()), GL_RGBA, GL_FLOAT, data.data());
     if (texture_.id()) {
         texture_.setParameter(GL_TEXTURE_COMPARE_FUNC, reversedZ_ ? GL_GEQUAL : GL_LEQUAL);
         const GLint filter = bilinear_ ? GL_LINEAR : GL_NEAREST;
         texture_.setParameter(GL_TEXTURE_MIN_FILTER, filter);
         texture_.setParameter(GL_TEXTURE_MAG_FILTER, filter);
     }
-    hook.glsl = shadowBlockGlslDefines() + "#define ATLAS_LIGHTS_BINDING " + std::to_string(kAtlasLightsBinding) +
+    hook.glsl = shadowBlockGlslDefines() + "#define ATLAS_LIGHTS_UNIT " + std::to_string(kAtlasLightsUnit) +
                 "\n#define ATLAS_UNIT " + std::to_string(kAtlasUnit) + "\n#define ATLAS_DEPTH_UNIT " +
                 std::to_string(kAtlasDepthUnit) + "\n" + shaders::shadow_data_glsl + shaders::moments_glsl +
                 shaders::map_shapes_glsl + shaders::atlas_visibility_glsl;
@@ -289,9 +294,10 @@ engine::LightVisibilityHook AtlasMaps::hook(const engine::Frame& frame, const st
         rawDepthSampler_.set(GL_TEXTURE_MIN_FILTER, GL_NEAREST);
         rawDepthSampler_.set(GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     }
-    const unsigned buffer = lightsBuffer_.id(), texture = texture_.id(), rawSampler = rawDepthSampler_.id();
-    hook.bind = [buffer, texture, rawSampler](const engine::gl::Program&, const engine::PassContext&) {
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kAtlasLightsBinding, buffer);
+    const unsigned lightData = lightData_.id(), texture = texture_.id(), rawSampler = rawDepthSampler_.id();
+    hook.bind = [lightData, texture, rawSampler](const engine::gl::Program&, const engine::PassContext&) {
+        glBindTextureUnit(kAtlasLightsUnit, lightData);
+        glBindSampler(kAtlasLightsUnit, 0);
         glBindTextureUnit(kAtlasUnit, texture);
         glBindSampler(kAtlasUnit, 0);
         glBindTextureUnit(kAtlasDepthUnit, texture);

@@ -2,7 +2,7 @@
 // The shadow maps of a frame shaded by the clustered lit pass (engine/render/Frame.h): its
 // visibility hook indexes lights by a slot that is not a constant, so every map lives in one
 // depth texture, the atlas (math/ShadowAtlas.h lays it out), read through one texture unit,
-// and every light's lookup parameters in one storage buffer (shaders/atlas_visibility.glsl).
+// and every light's lookup parameters in another (shaders/atlas_visibility.glsl).
 //
 // What the atlas holds today: spot lights' single 2D maps, drawn by the standard or backface
 // technique and read with the hardware comparison (nearest or 2x2 pcf), in one depth format
@@ -92,7 +92,7 @@ private:
 
     std::optional<ShadowAtlas> allocator_;
     engine::gl::Texture texture_;
-    engine::gl::Buffer lightsBuffer_;
+    engine::gl::Texture lightData_;  // atlas_visibility.glsl's AtlasLight rows
     engine::gl::Sampler rawDepthSampler_;
     std::vector<int> requestedResolution_;  // by slot: what the light's settings asked for
     std::vector<std::int64_t> previousBlock_;  // by slot: last frame's block (0: none)

@@ -31,13 +31,13 @@ namespace gl { class Program; }
 constexpr int kMaxLights = 32;
 // A scene with more lights than kMaxLights (or a renderer told to: RendererConfig::
 // clusteredLights) is shaded by the clustered lit pass instead (LightTiles.h): every light in
-// storage buffers, the target cut into tiles of kLightTileSize pixels, each listing the lights
+// a texture, the target cut into tiles of kLightTileSize pixels, each listing the lights
 // whose screen footprint touches it, and one loop per pixel over its tile's list; a visibility
 // hook then shades lights by a slot that is not a constant (Frame::clusteredLights). Why 4096:
 // the CPU builds the tile lists each frame, lights x covered tiles, and 4096 lights with
 // footprints of a few tiles stay under a millisecond of it; the shadow plugin's atlas holds
-// 4096 of its smallest maps (ShadowAtlas.h). Nothing on the GPU side is sized by it: the
-// buffers take the scene's count.
+// 4096 of its smallest maps (ShadowAtlas.h); and the light texture's height (a row per
+// light) stays within the 16384 texels GL 4.5 guarantees.
 constexpr int kMaxClusteredLights = 4096;
 constexpr int kLightTileSize = 16;
 // Whether a renderer whose RendererConfig::clusteredLights is `configured` shades a scene of
@@ -50,15 +50,21 @@ inline int renderedLightCount(std::optional<bool> configured, std::size_t lightC
     const int limit = usesClusteredLights(configured, lightCount) ? kMaxClusteredLights : kMaxLights;
     return static_cast<int>(std::min<std::size_t>(lightCount, static_cast<std::size_t>(limit)));
 }
-// The clustered lit pass's storage buffers (lit.frag reads them by these bindings); a
-// visibility hook's storage buffers start after them.
-constexpr unsigned kClusteredLightsBinding = 0;
-constexpr unsigned kLightTileRangesBinding = 1;
-constexpr unsigned kTileLightsBinding = 2;
-constexpr unsigned kFirstPluginStorageBinding = 3;
 // Texture units 0..kFirstPluginTextureUnit-1 belong to the engine: the five material
 // textures (MaterialTextures.h) and the shade cache (ShadeCache.h).
 constexpr int kFirstPluginTextureUnit = 6;
+// The clustered lit pass's textures (lit.frag reads them on these units): the lights, the
+// tiles' ranges and their lists. They are textures, not storage buffers, because llvmpipe
+// fetches a texel per lane far faster than it loads a storage buffer at a per-lane address
+// (measured on a 32-lamp street, 1280x720: the loop's bound alone read from a storage buffer
+// cost 17 ms of frame, from a texture none measurable). A clustered hook's textures start
+// at kFirstClusteredPluginTextureUnit.
+constexpr int kLightDataUnit = kFirstPluginTextureUnit;
+constexpr int kTileRangesUnit = kFirstPluginTextureUnit + 1;
+constexpr int kTileLightsUnit = kFirstPluginTextureUnit + 2;
+constexpr int kFirstClusteredPluginTextureUnit = kFirstPluginTextureUnit + 3;
+// The tile lists' texture is this wide (entries per row).
+constexpr int kTileListsWidth = 4096;
 // The lit pass's lights block (lit.frag reads it as LIGHTS_BLOCK_BINDING, defined from this);
 // a visibility hook's blocks start after it.
 constexpr unsigned kLightsUniformBinding = 0;

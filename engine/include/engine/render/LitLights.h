@@ -2,8 +2,9 @@
 // The lit pass's lights as lit.frag reads them: the uniform block of eye-space light data
 // (binding kLightsUniformBinding, std140) and the defines naming how many lights the pass
 // shades and of which type; for the clustered lit pass (Frame.h), the same data for every
-// light in a storage buffer, with each light's type and dimming, and the tile lists.
+// light in a texture, with each light's type and dimming, and the tile lists.
 #include "engine/gl/Buffer.h"
+#include "engine/gl/Texture.h"
 #include "engine/render/Frame.h"
 #include "engine/render/LightTiles.h"
 #include "engine/scene/Scene.h"
@@ -25,10 +26,11 @@ private:
     gl::Buffer buffer_;
 };
 
-// The clustered lit pass's storage buffers: every light instance (lit.frag's LightData, its
-// type code in direction.w and its dimming in cone.z) on kClusteredLightsBinding, the tiles'
-// ranges on kLightTileRangesBinding and their lists on kTileLightsBinding. Each buffer grows
-// (to the next power of two) when a frame needs more, and is never shrunk.
+// The clustered lit pass's textures: every light instance as four RGBA32F texels of a row
+// (lit.frag's LightData, its type code in direction.w and its dimming in cone.z) on
+// kLightDataUnit, each tile's (first, count) as an RG32UI texel at the tile's place on
+// kTileRangesUnit, and the lists on kTileLightsUnit (R32UI, kTileListsWidth per row). Each
+// texture grows when a frame needs more and is never shrunk.
 class ClusteredLights {
 public:
     void upload(const Scene& scene, const FrameCamera& camera, const std::vector<float>& dimming,
@@ -36,11 +38,11 @@ public:
     void bind() const;
 
 private:
-    gl::Buffer lights_, ranges_, lists_;
+    gl::Texture lights_, ranges_, lists_;
 };
 
-// lit.frag's defines for the clustered lit pass: CLUSTERED_LIGHTS, its buffers' bindings and
-// LIGHT_TILE_SIZE, and LIGHT_COUNT 0 (nothing is unrolled).
+// lit.frag's defines for the clustered lit pass: CLUSTERED_LIGHTS, its textures' units,
+// LIGHT_TILE_SIZE and TILE_LISTS_WIDTH, and LIGHT_COUNT 0 (nothing is unrolled).
 std::string clusteredLightDefines();
 
 // lit.frag's light defines: LIGHT_COUNT, and FOR_EACH_LIGHT(F) expanding to F(slot, type

@@ -110,10 +110,8 @@ private:
     // moves. One pass per number of written layers.
     void addWarmUpPasses(Frame& frame, const std::vector<WarmUpDraw>& draws);
     void addWarmUpPass(Frame& frame, int writtenLayers, std::vector<WarmUpDraw> draws);
-    // The clustered pass's lights and tile lists for this frame, bound, with each region's
-    // programs told the tile columns.
-    void uploadClusteredLights(const Frame& frame, const std::vector<float>& dimming,
-                               const std::vector<Region>& regions);
+    // The clustered pass's lights and tile lists for this frame, bound.
+    void uploadClusteredLights(const Frame& frame, const std::vector<float>& dimming);
     // One mesh instance's primitives with `programs`; `current` is the program in use.
     void drawInstance(const Frame& frame, int index, const glm::dmat4& view, const Variants& programs,
                       const gl::Program*& current, PassContext& context);
