@@ -16,7 +16,7 @@
 # the last frame, and the shadow atlas's occupancy where the plugin reports an "atlas".
 # Then the error of the still street against ray-traced truth at 640x360, off truth's shadow
 # edges (percent of the lamp's evaluated pixels): still frames of the walk, each 8 to 13 m before
-# the scored lamps (every lamp; every 4th beyond 64 lamps), each lamp scored in the frame that
+# the scored lamps (every lamp; every 4th beyond 64 lamps, both sides), each lamp scored in the frame that
 # sees most of its pool; the mean and max over the lamps and the worst lamp.
 # Usage: tools/bench-many-lights.sh [FRAMES] [LAMP COUNTS...]   (defaults 60; 64 128 256)
 # (build first: tools/build.sh). CONFIG=ENGINE.json runs every render with that engine config
@@ -99,8 +99,11 @@ def time_at(z):  # the walk is linear between keys and goes toward -z
     return keys[-1][0]
 lamps = sorted((i for i, n in enumerate(nodes) if "KHR_lights_punctual" in n.get("extensions", {})),
                key=lambda i: -world_z(i))
+# Every STRIDE-th lamp, shifted by one every other time: both sides of the street (lamps
+# alternate sides) are scored whatever the stride.
+scored = [lamps[min(i + (i // stride) % 2 * (stride > 1), len(lamps) - 1)] for i in range(0, len(lamps), stride)]
 camera_z = None
-for lamp in lamps[::stride]:
+for lamp in scored:
     # A lamp 8 to 13 m ahead fills a good part of the view: one frame serves the lamps in that band.
     if camera_z is None or camera_z - world_z(lamp) > 13.0:
         camera_z = world_z(lamp) + 8.0
