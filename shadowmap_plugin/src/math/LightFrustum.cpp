@@ -60,6 +60,15 @@ bool pyramidDepthRange(const std::array<glm::dvec3, 8>& c, double k, bool apexIn
                                          {2, 3, 7, 6}, {0, 1, 3, 2}, {4, 5, 7, 6}};
     // Inside when dot(n, p) >= 0.
     const glm::dvec3 planes[4] = {{-1, 0, -k}, {1, 0, -k}, {0, -1, -k}, {0, 1, -k}};
+    // A box wholly outside one plane has nothing inside (the common case for a narrow light
+    // among many boxes): no clipping needed.
+    if (!apexInside)
+        for (const glm::dvec3& plane : planes)
+            if (std::all_of(c.begin(), c.end(), [&](const glm::dvec3& p) { return glm::dot(plane, p) < 0.0; })) {
+                dmin = kInf;
+                dmax = -kInf;
+                return false;
+            }
     bool any = apexInside;
     dmin = apexInside ? 0.0 : kInf;
     dmax = apexInside ? 0.0 : -kInf;

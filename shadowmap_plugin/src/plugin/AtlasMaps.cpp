@@ -11,6 +11,7 @@
 #include "technique/Techniques.h"
 #include "technique/UnseenShadows.h"
 
+#include "engine/scene/FrustumCull.h"
 #include "engine/scene/Scene.h"
 
 #include <epoxy/gl.h>
@@ -58,6 +59,16 @@ std::int64_t powerOfTwoBelow(std::int64_t n) {
     std::int64_t p = 1;
     while (p * 2 <= n) p *= 2;
     return p;
+}
+
+// Whether a ranged light's sphere of reach lies wholly outside the camera's frustum: then no
+// pixel shows anything it lights (the tiles list it nowhere) and its map is not needed.
+bool reachIsOffScreen(const LightShadow& light, const engine::Scene& scene, const glm::dmat4& cameraViewProjection) {
+    const engine::LightInstance& placed = scene.lightInstances[light.slot];
+    const double range = scene.lights[placed.light].range;
+    if (light.type == engine::Light::Type::Directional || !(range > 0.0) || !std::isfinite(range)) return false;
+    const glm::dvec3 centre = placed.position();
+    return !engine::boxIntersectsFrustum(cameraViewProjection, {centre - glm::dvec3(range), centre + glm::dvec3(range)});
 }
 
 } // namespace
@@ -127,10 +138,14 @@ std::int64_t AtlasMaps::screenMatchedBlock(const LightShadow& light, const PlanC
     return block;
 }
 
-std::vector<AtlasRequest> AtlasMaps::requests(const std::vector<const LightShadow*>& held, const PlanContext& context) {
+std::vector<AtlasRequest> AtlasMaps::requests(const std::vector<const LightShadow*>& held,
+                                              const std::vector<const LightShadow*>& kept, const PlanContext& context) {
     const int border = kAtlasLookupBorderTexels;
     std::vector<std::int64_t> blocks;
     for (const LightShadow* light : held) blocks.push_back(screenMatchedBlock(*light, context));
+    for (const LightShadow* light : kept) blocks.push_back(previousBlock_[light->slot]);
+    std::vector<const LightShadow*> all = held;
+    all.insert(all.end(), kept.begin(), kept.end());
     const std::int64_t capacity = std::int64_t(kMaxAtlasSize) * kMaxAtlasSize;
     auto area = [&] {
         std::int64_t sum = 0;
@@ -146,9 +161,9 @@ std::vector<AtlasRequest> AtlasMaps::requests(const std::vector<const LightShado
     }
     std::vector<AtlasRequest> out;
     previousBlock_.assign(requestedResolution_.size(), 0);
-    for (std::size_t i = 0; i < held.size(); ++i) {
-        out.push_back({{held[i]->slot, 0}, static_cast<int>(blocks[i]) - 2 * border});
-        previousBlock_[held[i]->slot] = blocks[i];
+    for (std::size_t i = 0; i < all.size(); ++i) {
+        out.push_back({{all[i]->slot, 0}, static_cast<int>(blocks[i]) - 2 * border});
+        previousBlock_[all[i]->slot] = blocks[i];
     }
     return out;
 }
@@ -173,8 +188,19 @@ engine::ResourceHandle AtlasMaps::addPasses(engine::Frame& frame, std::vector<Li
         requestedResolution_.resize(lights.size(), 0);
         for (const LightShadow& light : lights) requestedResolution_[light.slot] = light.settings.resolution;
     }
-    std::vector<const LightShadow*> held;
+    std::vector<const LightShadow*> held, kept;
+    const glm::dmat4 cameraViewProjection = context.camera.projection * glm::inverse(context.camera.eyeToWorld);
     for (LightShadow& light : lights) {
+        if (reachIsOffScreen(light, context.scene, cameraViewProjection)) {
+            // Nothing it lights is seen: no planning (its fit alone costs tens of
+            // microseconds among many boxes), and a map it has keeps its block and contents
+            // for when it comes back into view.
+            light.frame = {};
+            light.frame.skipReason = "its range is off screen";
+            if (light.slot < static_cast<int>(previousBlock_.size()) && previousBlock_[light.slot] > 0)
+                kept.push_back(&light);
+            continue;
+        }
         // Texture units are not the limit here: one unit serves every map.
         if (!planLight(light, context, kAtlasUnit, std::numeric_limits<int>::max())) continue;
         if (!heldByAtlas(light)) {
@@ -186,7 +212,7 @@ engine::ResourceHandle AtlasMaps::addPasses(engine::Frame& frame, std::vector<Li
         if (conform(light, warn)) held.push_back(&light);
     }
     if (held.empty()) return {};
-    const std::vector<AtlasRequest> wanted = requests(held, context);
+    const std::vector<AtlasRequest> wanted = requests(held, kept, context);
     std::int64_t blockArea = 0;
     for (const AtlasRequest& request : wanted) {
         const std::int64_t block = request.size + 2 * kAtlasLookupBorderTexels;

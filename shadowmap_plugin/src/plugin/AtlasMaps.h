@@ -85,9 +85,11 @@ private:
     // (math/ScreenMatchedResolution.h), at most the block of the resolution it asked for, and
     // kept when it would shrink by less than kShrinkMargin.
     std::int64_t screenMatchedBlock(const LightShadow& light, const PlanContext& context) const;
-    // The side of each held light's map (screenMatchedBlock's), halving the largest until
-    // their blocks fit kMaxAtlasSize; remembers the blocks for the next frame's hysteresis.
-    std::vector<AtlasRequest> requests(const std::vector<const LightShadow*>& held, const PlanContext& context);
+    // The side of each held light's map (screenMatchedBlock's) and of each kept one (a light
+    // off screen: its last block), halving the largest until their blocks fit kMaxAtlasSize;
+    // remembers the blocks for the next frame's hysteresis.
+    std::vector<AtlasRequest> requests(const std::vector<const LightShadow*>& held,
+                                       const std::vector<const LightShadow*>& kept, const PlanContext& context);
     void ensureTexture(int size);
 
     std::optional<ShadowAtlas> allocator_;

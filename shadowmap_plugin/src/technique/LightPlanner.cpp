@@ -1,4 +1,5 @@
 #include "technique/LightPlanner.h"
+#include "technique/UnseenShadows.h"
 
 #include "technique/Techniques.h"
 #include "technique/projection/CascadedMapProjection.h"
@@ -76,7 +77,9 @@ engine::Aabb sceneBounds(const engine::Scene& scene) {
 }
 
 PlanContext planContext(const engine::Scene& scene, const engine::FrameCamera& camera) {
-    return {scene, camera, frameBounds(scene, camera), sceneBounds(scene)};
+    PlanContext context{scene, camera, frameBounds(scene, camera), sceneBounds(scene)};
+    context.visibleReceiverParts = visibleReceiverParts(context.bounds.receivers, camera);
+    return context;
 }
 
 bool planLight(LightState& light, const PlanContext& context, int textureUnit, int maxTextureUnits) {

@@ -17,6 +17,7 @@
 #include <nlohmann/json.hpp>
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -28,6 +29,10 @@ struct PlanContext {
     engine::FrameCamera camera;
     ShadowBounds bounds;     // receivers the camera can see, every caster
     engine::Aabb everything; // every receiver and caster, seen or not (directional lights only)
+    // bounds.receivers cut to the camera's frustum (UnseenShadows.h's visibleReceiverParts),
+    // made once per frame by planContext for every light's unseen-caster culling; unset:
+    // made by each light that needs it.
+    std::optional<std::vector<engine::Aabb>> visibleReceiverParts{};
 };
 
 struct ProjectionFit {

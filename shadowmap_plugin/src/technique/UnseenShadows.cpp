@@ -256,7 +256,9 @@ void planUnseenShadows(LightState& light, const PlanContext& context) {
     const DepthTechnique* technique = depthTechnique(light.settings.variant);
     const bool withReceivers = technique && technique->drawsNonCastingReceivers();
     const double reachNdc = 2.0 * reachTexels(light.settings) / light.settings.resolution;
-    const std::vector<engine::Aabb> receivers = visibleReceiverParts(context.bounds.receivers, context.camera);
+    const std::vector<engine::Aabb> receivers = context.visibleReceiverParts
+                                                    ? *context.visibleReceiverParts
+                                                    : visibleReceiverParts(context.bounds.receivers, context.camera);
     for (const MapLayer& layer : projection.layers(light)) {
         const std::size_t index = layerIndex(layer.layer);
         if (plan.unseenCasters.size() <= index) plan.unseenCasters.resize(index + 1);

@@ -150,3 +150,34 @@ TEST_F(ClusteredLightsTest, ANearLampGetsALargerMapThanAFarOneAndNoneMoreThanItA
     for (int slot = 0; slot < 40; ++slot) EXPECT_LE(sizeOf(slot), 1022) << "lamp_" << slot + 1;
     EXPECT_GT(sizeOf(0), 2 * sizeOf(39)) << "the near lamp's map is not larger";
 }
+
+TEST_F(ClusteredLightsTest, ALampOutOfViewKeepsItsMapForWhenItComesBack) {
+    Street street = lampGrid(40, {{"resolution", 256}});
+    for (engine::Light& light : street.scene.lights) light.range = 6.0;  // a lamp lights its pool only
+    engine::Renderer renderer({}, plugins());
+    renderer.setScene(street.scene);
+    engine::FrameRequest whole;
+    whole.camera = topCamera();
+    // x from -17 to -8: a lamp whose reach (6 around it) starts past -8, foot x 2 and more
+    // (columns 4 to 7, 20 lamps), lights nothing seen. The lamps in view may draw their maps
+    // again: their fit and size follow what the camera sees.
+    engine::FrameRequest left = whole;
+    left.camera.projection = glm::ortho(-17.0, -8.0, -17.0, 17.0, 0.1, 100.0);
+    const auto outOfView = [](int slot) { return footOf(slot).x > -2.0; };
+    const auto pluginStats = [&](const engine::FrameRequest& request) {
+        return renderer.renderFrame(request).pluginStats.at("shadowmap_plugin");
+    };
+    EXPECT_EQ(pluginStats(whole).at("atlas").at("rendered"), 40);
+    const nlohmann::json away = pluginStats(left);
+    EXPECT_EQ(away.at("atlas").at("maps"), 40) << "the lamps out of view lost their place in the atlas";
+    int skipped = 0;
+    for (int slot = 0; slot < 40; ++slot)
+        if (outOfView(slot)) {
+            EXPECT_EQ(away.at("lights").at(slot).at("map"), "none") << "lamp_" << slot + 1 << " was planned";
+            ++skipped;
+        }
+    EXPECT_EQ(skipped, 20);
+    const nlohmann::json back = pluginStats(whole);
+    for (int slot = 0; slot < 40; ++slot)
+        if (outOfView(slot)) EXPECT_EQ(back.at("lights").at(slot).at("cache"), "hit") << "lamp_" << slot + 1;
+}
