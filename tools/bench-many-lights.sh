@@ -15,9 +15,10 @@
 # cache_misses, which also count the warm-up frames, beside it), the lights with a shadow in
 # the last frame, and the shadow atlas's occupancy where the plugin reports an "atlas".
 # Then the error of the still street against ray-traced truth at 640x360, off truth's shadow
-# edges (percent of the lamp's evaluated pixels): still frames of the walk, each 8 to 13 m before
-# the scored lamps (every lamp; every 4th beyond 64 lamps, both sides), each lamp scored in the frame that
-# sees most of its pool; the mean and max over the lamps and the worst lamp.
+# edges (percent of the lamp's evaluated pixels): still frames of the walk, each 8 to 13 m
+# before the lamps it scores (every lamp; every 4th beyond 64 lamps, both sides), each lamp
+# scored in the frame that sees most of its pool; the mean and max over the lamps and the
+# worst lamp.
 # Usage: tools/bench-many-lights.sh [FRAMES] [LAMP COUNTS...]   (defaults 60; 64 128 256)
 # (build first: tools/build.sh). CONFIG=ENGINE.json runs every render with that engine config
 # (e.g. one with "renderer": {"clustered_lights": true} to time the clustered pass below 33 lamps).
