@@ -22,6 +22,8 @@ const char* const kRenderUsage =
     "  [--light NAME=VARIANT]...        (--light-set NAME.variant=VARIANT)\n"
     "  [--shadow-mask NAME=MASK.png]... [--shadow-map NAME=MAP.png]...\n"
     "  [--shadow-compare NAME=VIEW.png]...  (green: r agrees with the map, red: shadowed)\n"
+    "  [--light-tiles HEAT.png]  (the clustered lit pass's tiles coloured by the lights each lists:\n"
+    "               black 0, blue 1, green 4, yellow 16, red 64 or more; docs/many-lights.md)\n"
     "  [--frames N] [--stats STATS.json] [--graph-dot GRAPH.dot]\n"
     "  [--key-light spot|point|directional] [--ground]  (add a light placed from the bounds, printed;\n"
     "                                    a ground under the model to receive its shadow)\n"
@@ -108,6 +110,7 @@ RenderOptions parseRenderOptions(int argc, char** argv) {
         else if (flag == "--shadow-compare") options.comparisons.push_back(parsePngAssignment(flag, value));
         else if (flag == "--truth-mask") options.truthMasks.push_back(parsePngAssignment(flag, value));
         else if (flag == "--texel-density") options.texelDensities.push_back(parsePngAssignment(flag, value));
+        else if (flag == "--light-tiles") options.lightTiles = pngPath(flag, value);
         else if (flag == "--frames") options.frames = tools::parseInteger(flag, value, 1, kMaxFrames);
         else if (flag == "--warmup") options.warmup = tools::parseInteger(flag, value, 0, kMaxWarmup);
         else if (flag == "--set") tools::addSettingOverride(options.pluginSettings, flag, value);

@@ -27,6 +27,8 @@ struct RenderOptions {
     std::vector<std::pair<std::string, std::string>> truthMasks;
     // --texel-density NAME=FILE: the heat map of a map texel's size on screen (truth/TexelDensityImage.h)
     std::vector<std::pair<std::string, std::string>> texelDensities;
+    // --light-tiles FILE: the clustered lit pass's tile lists as a heat map (LightTileImage.h)
+    std::string lightTiles;
     int frames = 1;
     int warmup = 1;  // at least this many untimed frames first (Renderer::warmUp): llvmpipe compiles at first draw
     std::vector<tools::SettingOverride> pluginSettings;  // --set PLUGIN.KEY=JSON, each key once

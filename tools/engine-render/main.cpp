@@ -4,6 +4,7 @@
 #include "Median.h"
 #include "ToolMain.h"
 #include "DepthImage.h"
+#include "LightTileImage.h"
 #include "LightOverrides.h"
 #include "RenderOptions.h"
 #include "SceneLighting.h"
@@ -453,6 +454,16 @@ int run(const RenderOptions& options, std::unique_ptr<engine::GlContext>& contex
         engine::writePngAtomically(file, width, height, 1, gray);
     }
 
+    if (!options.lightTiles.empty()) {
+        if (!last.clusteredLights)
+            throw engine::InputError("--light-tiles " + options.lightTiles +
+                                     ": the frame was not shaded by the clustered lit pass (32 lights or fewer; "
+                                     "\"renderer\": {\"clustered_lights\": true} in the engine config forces it)");
+        engine::writePngAtomically(options.lightTiles, options.width, options.height, 4,
+                                   tools::lightTileImage(last.tileLightCounts, last.tileColumns, engine::kLightTileSize,
+                                                         options.width, options.height));
+        std::printf("  light tiles: %s (%s)\n", options.lightTiles.c_str(), tools::lightTileLegend().c_str());
+    }
     const tools::TimeSummary frameTimes = tools::summarizeTimes(frameMs);
     std::printf("%s: %dx%d, %d frame(s), median frame %.2f ms, p99 %.2f ms, max %.2f ms (%s)\n",
                 options.scene.c_str(), options.width, options.height, options.frames, frameTimes.median,

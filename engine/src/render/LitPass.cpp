@@ -423,8 +423,8 @@ void LitPass::addPass(Frame& frame, const std::string& name, ResourceHandle targ
 
 void LitPass::uploadClusteredLights(const Frame& frame, const std::vector<float>& dimming) {
     const FrameCamera& camera = frame.camera();
-    const LightTiles tiles =
-        buildLightTiles(lightFootprints(frame.scene(), camera), camera.width, camera.height, kLightTileSize);
+    lightTiles_ = buildLightTiles(lightFootprints(frame.scene(), camera), camera.width, camera.height, kLightTileSize);
+    const LightTiles& tiles = lightTiles_;
     tileListEntries_ = static_cast<std::int64_t>(tiles.lights.size());
     longestTileList_ = 0;
     for (std::size_t tile = 0; tile + 1 < tiles.ranges.size(); tile += 2)

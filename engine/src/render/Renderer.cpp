@@ -216,6 +216,13 @@ FrameResult Renderer::renderFrame(const FrameRequest& request) {
     result.clusteredLights = frame.clusteredLights();
     result.tileListEntries = litPass_->tileListEntries();
     result.longestTileList = litPass_->longestTileList();
+    if (result.clusteredLights) {
+        const LightTiles& tiles = litPass_->lightTiles();
+        result.tileColumns = tiles.columns;
+        result.tileRows = tiles.rows;
+        for (std::size_t tile = 0; tile + 1 < tiles.ranges.size(); tile += 2)
+            result.tileLightCounts.push_back(tiles.ranges[tile + 1]);
+    }
     for (RenderPlugin* plugin : plugins_) result.pluginStats[plugin->name()] = plugin->frameStats();
     result.programsLinked = static_cast<int>(gl::Program::linkedCount() - linkedBefore);
     result.frameMs =

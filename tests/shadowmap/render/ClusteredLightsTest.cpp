@@ -181,3 +181,20 @@ TEST_F(ClusteredLightsTest, ALampOutOfViewKeepsItsMapForWhenItComesBack) {
     for (int slot = 0; slot < 40; ++slot)
         if (outOfView(slot)) EXPECT_EQ(back.at("lights").at(slot).at("cache"), "hit") << "lamp_" << slot + 1;
 }
+
+TEST_F(ClusteredLightsTest, AWalkingCameraCompilesNothingAfterTheFirstFrame) {
+    // The clustered pass's program does not depend on which lights a frame sees: after the
+    // first frame, a camera walking across the grid (new lamps in and out of view every
+    // step) links no program.
+    const Street street = lampGrid(40, {{"resolution", 256}});
+    engine::Renderer renderer({}, plugins());
+    renderer.setScene(street.scene);
+    engine::FrameRequest request;
+    request.camera = engine::test::cameraLooking({-16, 3, -16}, {0, 0, 0}, 320, 180);
+    (void)renderer.renderFrame(request);
+    for (int step = 1; step <= 8; ++step) {
+        const glm::dvec3 eye(-16.0 + 4.0 * step, 3.0, -16.0 + 3.0 * step);
+        request.camera = engine::test::cameraLooking(eye, eye + glm::dvec3(1.0, -0.3, 0.4 * (step % 3 - 1)), 320, 180);
+        EXPECT_EQ(renderer.renderFrame(request).programsLinked, 0) << "step " << step;
+    }
+}

@@ -134,7 +134,8 @@ public:
     // lightVisibility and lightDebugColor are then called with slots that are not constants,
     // in a loop over a tile's lights (so the hook must index its data and textures
     // uniformly: one texture for every light), the hook's vertex part is not used, and
-    // shadeKeys and constantShades are ignored (nothing is cached per pixel).
+    // shadeKeys and constantShades are ignored (nothing is cached per pixel); its `bind`
+    // must leave units below kFirstClusteredPluginTextureUnit to the engine.
     bool clusteredLights() const { return clusteredLights_; }
 
     // Only one plugin may shade lights; a second hook is a configuration error.

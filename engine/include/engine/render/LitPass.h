@@ -57,6 +57,7 @@ public:
     // and the longest list (0 when the pass was not clustered).
     std::int64_t tileListEntries() const { return tileListEntries_; }
     int longestTileList() const { return longestTileList_; }
+    const LightTiles& lightTiles() const { return lightTiles_; }
     // A new scene: nothing cached is still right.
     void sceneChanged();
 
@@ -121,6 +122,7 @@ private:
     LitPrograms programs_;
     LitLights lights_;
     ClusteredLights clusteredLights_;
+    LightTiles lightTiles_;  // the clustered pass's last
     std::int64_t tileListEntries_ = 0;
     int longestTileList_ = 0;
     int culledInstances_ = 0;

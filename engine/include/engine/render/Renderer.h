@@ -76,6 +76,10 @@ struct FrameResult {
     bool clusteredLights = false;
     std::int64_t tileListEntries = 0;
     int longestTileList = 0;
+    // And each tile's list length, row by row from the bottom (window coordinates), in
+    // tileColumns x tileRows tiles of kLightTileSize pixels.
+    std::vector<std::uint32_t> tileLightCounts;
+    int tileColumns = 0, tileRows = 0;
     // GL programs linked while rendering this frame (the lit pass's and the plugins'):
     // after warm-up, each is a frame that waited for the shader compiler.
     int programsLinked = 0;
