@@ -126,7 +126,7 @@ std::int64_t AtlasMaps::screenMatchedBlock(const LightShadow& light, const PlanC
     const engine::FrameCamera& camera = context.camera;
     const double needed = screenMatchedResolution(lightViewProjection,
                                                   camera.projection * glm::inverse(camera.eyeToWorld), camera.width,
-                                                  camera.height, receiverSamples(reach, context.bounds.receivers));
+                                                  camera.height, receiverSamples(lightViewProjection, context.bounds.receivers));
     std::int64_t block = kMinAtlasBlock;
     while (block < cap && block - 2 * border < needed) block *= 2;
     // Hysteresis: a map shrinks only when the smaller block holds what it needs with
