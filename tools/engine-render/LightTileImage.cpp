@@ -1,7 +1,6 @@
 #include "LightTileImage.h"
 
 #include <algorithm>
-#include <cmath>
 
 namespace tools {
 
@@ -9,18 +8,7 @@ namespace {
 
 std::array<std::uint8_t, 3> colorOf(std::uint32_t count) {
     if (count == 0) return {0, 0, 0};
-    const double x = std::log2(static_cast<double>(count));
-    for (std::size_t i = 0; i + 1 < kLightTileScale.size(); ++i) {
-        const double low = std::log2(kLightTileScale[i].count), high = std::log2(kLightTileScale[i + 1].count);
-        if (x > high) continue;
-        const double t = std::clamp((x - low) / (high - low), 0.0, 1.0);
-        std::array<std::uint8_t, 3> rgb{};
-        for (int c = 0; c < 3; ++c)
-            rgb[c] = static_cast<std::uint8_t>(std::lround(kLightTileScale[i].rgb[c] * (1.0 - t) +
-                                                           kLightTileScale[i + 1].rgb[c] * t));
-        return rgb;
-    }
-    return kLightTileScale.back().rgb;
+    return truth::heatColor(static_cast<double>(count), kLightTileScale);
 }
 
 } // namespace
@@ -43,8 +31,8 @@ std::vector<std::uint8_t> lightTileImage(std::span<const std::uint32_t> counts, 
 
 std::string lightTileLegend() {
     std::string legend = "black 0 lights";
-    for (const LightTileStop& stop : kLightTileScale)
-        legend += std::string(", ") + stop.name + " " + std::to_string(static_cast<int>(stop.count));
+    for (const truth::HeatStop& stop : kLightTileScale)
+        legend += std::string(", ") + stop.name + " " + std::to_string(static_cast<int>(stop.value));
     return legend + " or more";
 }
 

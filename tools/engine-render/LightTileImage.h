@@ -2,6 +2,8 @@
 // engine-render --light-tiles: the clustered lit pass's tile lists as a heat map, each pixel
 // coloured by how many lights its tile's list holds (engine/render/LightTiles.h): what the
 // pixel's loop visits. Pure CPU.
+#include "truth/HeatScale.h"
+
 #include <array>
 #include <cstdint>
 #include <span>
@@ -10,14 +12,8 @@
 
 namespace tools {
 
-// The scale: colours interpolated linearly in log2(count) between these stops, clamped past
-// the last; no light at all is black.
-struct LightTileStop {
-    double count;
-    std::array<std::uint8_t, 3> rgb;
-    const char* name;  // for the legend
-};
-inline constexpr std::array<LightTileStop, 4> kLightTileScale = {{
+// The scale (truth/HeatScale.h: log2 interpolation); no light at all is black.
+inline constexpr std::array<truth::HeatStop, 4> kLightTileScale = {{
     {1.0, {0, 0, 255}, "blue"},
     {4.0, {0, 255, 0}, "green"},
     {16.0, {255, 255, 0}, "yellow"},

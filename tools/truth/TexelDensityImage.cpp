@@ -14,18 +14,7 @@ std::array<std::uint8_t, 4> texelDensityColor(double m) {
     };
     // m <= 0 cannot come from the metric (a length); it has no log either.
     if (!std::isfinite(m) || !(m > 0.0)) return opaque(kTexelDensityNoValue);
-    if (m <= kTexelDensityScale.front().m) return opaque(kTexelDensityScale.front().rgb);
-    for (std::size_t i = 1; i < kTexelDensityScale.size(); ++i) {
-        const TexelDensityStop &low = kTexelDensityScale[i - 1], &high = kTexelDensityScale[i];
-        if (m > high.m) continue;
-        // Log scale: a texel twice as large moves the colour as far at any size.
-        const double t = std::log2(m / low.m) / std::log2(high.m / low.m);
-        std::array<std::uint8_t, 4> out{0, 0, 0, 255};
-        for (int c = 0; c < 3; ++c)
-            out[c] = static_cast<std::uint8_t>(std::lround(low.rgb[c] + t * (high.rgb[c] - low.rgb[c])));
-        return out;
-    }
-    return opaque(kTexelDensityScale.back().rgb);
+    return opaque(heatColor(m, kTexelDensityScale));
 }
 
 std::vector<std::uint8_t> texelDensityImage(std::span<const double> m) {
@@ -60,7 +49,7 @@ std::string texelDensityLegend() {
     for (std::size_t i = 0; i < kTexelDensityScale.size(); ++i) {
         char stop[48];
         const char* bound = i == 0 ? "<=" : i + 1 == kTexelDensityScale.size() ? ">=" : "";
-        std::snprintf(stop, sizeof stop, "%s %s%g %s", i == 0 ? "" : ",", bound, kTexelDensityScale[i].m,
+        std::snprintf(stop, sizeof stop, "%s %s%g %s", i == 0 ? "" : ",", bound, kTexelDensityScale[i].value,
                       kTexelDensityScale[i].name);
         legend += stop;
     }

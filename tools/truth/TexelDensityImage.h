@@ -2,6 +2,7 @@
 // The texel-density picture (docs/metrics.md, "Texel on screen"): LogPSM's m at every pixel
 // (TexelMetric.h) and its heat map, shared by engine-render --texel-density and engine-view's
 // density view. Pure CPU, no GL.
+#include "truth/HeatScale.h"
 #include "truth/SurfaceCapture.h"
 
 #include "engine/render/ShadowView.h"
@@ -14,16 +15,10 @@
 
 namespace truth {
 
-// The heat map's scale, the one place it is defined: colours interpolated linearly in
-// log2(m) between these stops, clamped beyond the first and last. Blue: a texel smaller than
-// half a pixel (resolution to spare); green: one texel per pixel (the goal); yellow: a texel
-// spans 4 pixels (its steps show); red: 16 pixels or more (blocky).
-struct TexelDensityStop {
-    double m;
-    std::array<std::uint8_t, 3> rgb;
-    const char* name;  // for the legend
-};
-inline constexpr std::array<TexelDensityStop, 4> kTexelDensityScale = {{
+// The heat map's scale (HeatScale.h: log2 interpolation), the one place it is defined.
+// Blue: a texel smaller than half a pixel (resolution to spare); green: one texel per pixel
+// (the goal); yellow: a texel spans 4 pixels (its steps show); red: 16 pixels or more (blocky).
+inline constexpr std::array<HeatStop, 4> kTexelDensityScale = {{
     {0.5, {0, 0, 255}, "blue"},
     {1.0, {0, 255, 0}, "green"},
     {4.0, {255, 255, 0}, "yellow"},
